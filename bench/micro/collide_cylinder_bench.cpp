@@ -1,0 +1,112 @@
+#include "edyn/collision/collide.hpp"
+#include <benchmark/benchmark.h>
+#include <random>
+#include <vector>
+
+// collide() for the pairs with a cylinder: a resting contact (the common steady state) and a
+// cycle over random placements around touching (from overlapping to just apart), which is what
+// the narrowphase sees for pairs whose AABBs overlap.
+namespace {
+
+using namespace edyn;
+
+struct placement {
+    collision_context ctx;
+};
+
+std::vector<placement> random_placements(scalar reach, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<scalar> g(0, 1);
+    std::uniform_real_distribution<scalar> offset(scalar(0.5), scalar(0.95));
+    std::vector<placement> out;
+    for (int i = 0; i < 64; ++i) {
+        auto orn_a = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
+        auto orn_b = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
+        auto dir = normalize(vector3{g(rng), g(rng), g(rng)});
+        out.push_back({{dir * (offset(rng) * reach), orn_a, vector3_zero, orn_b, scalar(0.02)}});
+    }
+    return out;
+}
+
+template<typename A, typename B>
+void run_resting(benchmark::State &state, const A &a, const B &b, const collision_context &ctx) {
+    for (auto _ : state) {
+        collision_result result;
+        collide(a, b, ctx, result);
+        benchmark::DoNotOptimize(result);
+    }
+}
+
+template<typename A, typename B>
+void run_random(benchmark::State &state, const A &a, const B &b, scalar reach) {
+    auto placements = random_placements(reach, 5);
+    std::size_t i = 0, points = 0;
+    for (auto _ : state) {
+        collision_result result;
+        collide(a, b, placements[i].ctx, result);
+        points += result.num_points;
+        benchmark::DoNotOptimize(result);
+        i = (i + 1) % placements.size();
+    }
+    state.counters["points"] = benchmark::Counter(double(points), benchmark::Counter::kAvgIterations);
+}
+
+const cylinder_shape cylinder{scalar(0.3), scalar(0.5), coordinate_axis::y};
+const auto upright = quaternion_identity;
+const auto lying = quaternion_axis_angle(vector3_z, half_pi);
+
+void cylinder_cylinder_stacked(benchmark::State &state) {
+    run_resting(state, cylinder, cylinder, {{0.1f, 0.995f, 0}, upright, vector3_zero, upright, 0.02f});
+}
+void cylinder_cylinder_crossed(benchmark::State &state) {
+    run_resting(state, cylinder, cylinder,
+                {{0, 0.595f, 0}, lying, vector3_zero, quaternion_axis_angle(vector3_x, half_pi), 0.02f});
+}
+void cylinder_cylinder_random(benchmark::State &state) { run_random(state, cylinder, cylinder, scalar(1.2)); }
+
+const box_shape box{{0.5f, 0.3f, 0.4f}};
+void cylinder_box_standing(benchmark::State &state) {
+    run_resting(state, cylinder, box, {{0.1f, 0.795f, 0}, upright, vector3_zero, upright, 0.02f});
+}
+void cylinder_box_lying(benchmark::State &state) {
+    run_resting(state, cylinder, box, {{0.1f, 0.595f, 0}, lying, vector3_zero, upright, 0.02f});
+}
+void cylinder_box_random(benchmark::State &state) { run_random(state, cylinder, box, scalar(1.3)); }
+void box_cylinder_random(benchmark::State &state) { run_random(state, box, cylinder, scalar(1.3)); }
+
+const capsule_shape capsule{scalar(0.2), scalar(0.4), coordinate_axis::x};
+void capsule_cylinder_lying(benchmark::State &state) {
+    run_resting(state, capsule, cylinder, {{0.1f, 0.695f, 0}, upright, vector3_zero, upright, 0.02f});
+}
+void cylinder_capsule_random(benchmark::State &state) { run_random(state, cylinder, capsule, scalar(1.2)); }
+
+const sphere_shape sphere{scalar(0.3)};
+void sphere_cylinder_resting(benchmark::State &state) {
+    run_resting(state, sphere, cylinder, {{0.1f, 0.795f, 0}, upright, vector3_zero, upright, 0.02f});
+}
+void cylinder_sphere_random(benchmark::State &state) { run_random(state, cylinder, sphere, scalar(0.9)); }
+
+const plane_shape plane{vector3_y, 0};
+void cylinder_plane_standing(benchmark::State &state) {
+    run_resting(state, cylinder, plane, {{0, 0.495f, 0}, upright, vector3_zero, upright, 0.02f});
+}
+void cylinder_plane_tilted(benchmark::State &state) {
+    run_resting(state, cylinder, plane,
+                {{0, 0.5f, 0}, quaternion_axis_angle(vector3_x, 0.3f), vector3_zero, upright, 0.02f});
+}
+
+} // namespace
+
+BENCHMARK(cylinder_cylinder_stacked);
+BENCHMARK(cylinder_cylinder_crossed);
+BENCHMARK(cylinder_cylinder_random);
+BENCHMARK(cylinder_box_standing);
+BENCHMARK(cylinder_box_lying);
+BENCHMARK(cylinder_box_random);
+BENCHMARK(box_cylinder_random);
+BENCHMARK(capsule_cylinder_lying);
+BENCHMARK(cylinder_capsule_random);
+BENCHMARK(sphere_cylinder_resting);
+BENCHMARK(cylinder_sphere_random);
+BENCHMARK(cylinder_plane_standing);
+BENCHMARK(cylinder_plane_tilted);

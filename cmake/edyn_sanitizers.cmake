@@ -1,0 +1,10 @@
+# Sanitizers apply to every target of the build tree, so the library and the tests agree.
+if(EDYN_SANITIZE STREQUAL "address")
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+elseif(EDYN_SANITIZE STREQUAL "thread")
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+elseif(NOT EDYN_SANITIZE STREQUAL "")
+  message(FATAL_ERROR "EDYN_SANITIZE must be empty, 'address' or 'thread', not '${EDYN_SANITIZE}'")
+endif()

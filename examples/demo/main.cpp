@@ -1,0 +1,119 @@
+// edyn-demo: a pyramid, a pile of mixed shapes and bouncing balls on a floor, simulated for a
+// while in fixed steps, with a progress line and a summary of what happened.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <edyn/edyn.hpp>
+#include <edyn_scenes/scenes.hpp>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct options {
+    std::string scene{"all"};
+    unsigned pyramid_base{20};
+    unsigned pile_count{512};
+    unsigned balls{8};
+    double seconds{10};
+    bool quiet{false};
+};
+
+struct summary {
+    std::size_t bodies{0};
+    std::size_t manifolds{0};
+    std::size_t contact_points{0};
+    std::size_t islands{0};
+    std::size_t sleeping_islands{0};
+};
+
+summary summarize(edyn::registry &registry) {
+    summary s;
+    s.bodies = registry.storage<edyn::rigidbody_tag>().size();
+    registry.view<edyn::contact_manifold>().each([&](const edyn::contact_manifold &m) {
+        ++s.manifolds;
+        s.contact_points += m.num_points;
+    });
+    s.islands = registry.storage<edyn::island>().size();
+    for (auto e : registry.view<edyn::island, edyn::sleeping_tag>()) {
+        (void)e;
+        ++s.sleeping_islands;
+    }
+    return s;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    options opt;
+    CLI::App app{"edyn-demo: rigid bodies falling, stacking, bouncing and sleeping"};
+    app.add_option("--scene", opt.scene, "all, pyramid, pile or balls")
+        ->check(CLI::IsMember({"all", "pyramid", "pile", "balls"}));
+    app.add_option("--pyramid-base", opt.pyramid_base, "boxes in the pyramid's bottom row")->check(CLI::Range(1u, 200u));
+    app.add_option("--pile-count", opt.pile_count, "bodies in the pile")->check(CLI::Range(1u, 100000u));
+    app.add_option("--balls", opt.balls, "bouncing balls")->check(CLI::Range(1u, 1000u));
+    app.add_option("--seconds", opt.seconds, "simulated time")->check(CLI::Range(0.0, 3600.0));
+    app.add_flag("--quiet", opt.quiet, "no progress line");
+    CLI11_PARSE(app, argc, argv);
+
+    edyn::registry registry;
+    edyn::attach(registry);
+    edyn::scenes::make_ground(registry);
+
+    bool all = opt.scene == "all";
+    edyn::entity top = edyn::null;
+    edyn::vector3 top_start{};
+    if (all || opt.scene == "pyramid") {
+        auto boxes = edyn::scenes::make_pyramid(registry, opt.pyramid_base);
+        top = boxes.back();
+        top_start = registry.get<edyn::position>(top);
+    }
+    if (all || opt.scene == "pile") {
+        edyn::scenes::make_pile(registry, opt.pile_count, 16, 2, edyn::scenes::pile_shapes::with_polyhedra,
+                                1);
+    }
+    if (all || opt.scene == "balls") {
+        // Beside the pyramid, on the far side of the pile.
+        edyn::scenes::make_bouncing_balls(registry, opt.balls, 4, {-8, 0, 30});
+    }
+
+    auto dt = double(edyn::get_fixed_dt(registry));
+    auto steps = static_cast<std::size_t>(opt.seconds / dt + 0.5);
+    std::vector<double> step_ms;
+    step_ms.reserve(steps);
+    std::printf("edyn-demo: %zu bodies, %zu steps of %.4f s\n", registry.storage<edyn::rigidbody_tag>().size(),
+                steps, dt);
+
+    for (std::size_t i = 0; i < steps; ++i) {
+        auto start = std::chrono::steady_clock::now();
+        edyn::step_simulation(registry);
+        auto end = std::chrono::steady_clock::now();
+        step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        if (!opt.quiet && (i % 30 == 29 || i + 1 == steps)) {
+            auto s = summarize(registry);
+            std::printf("\r  t = %6.2f s  contacts %6zu  islands %5zu (%5zu asleep)  last step %7.3f ms", (i + 1) * dt,
+                        s.contact_points, s.islands, s.sleeping_islands, step_ms.back());
+            std::fflush(stdout);
+        }
+    }
+    if (!opt.quiet) std::printf("\n");
+
+    auto s = summarize(registry);
+    std::vector<double> sorted = step_ms;
+    std::sort(sorted.begin(), sorted.end());
+    auto median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+    std::printf("summary\n");
+    std::printf("  bodies            %zu\n", s.bodies);
+    std::printf("  manifolds         %zu\n", s.manifolds);
+    std::printf("  contact points    %zu\n", s.contact_points);
+    std::printf("  islands           %zu (%zu sleeping)\n", s.islands, s.sleeping_islands);
+    std::printf("  median step       %.3f ms\n", median);
+    if (top != edyn::null) {
+        auto moved = edyn::length(registry.get<edyn::position>(top) - top_start);
+        std::printf("  pyramid           %s (top box moved %.2f cm in %.1f s)\n", moved < 0.01 ? "stood" : "did not stand",
+                    moved * 100, opt.seconds);
+    }
+    edyn::detach(registry);
+    return 0;
+}

@@ -1,0 +1,169 @@
+#ifndef EDYN_COLLISION_BROADPHASE_HPP
+#define EDYN_COLLISION_BROADPHASE_HPP
+
+#include "edyn/collision/dynamic_tree.hpp"
+#include "edyn/collision/should_collide.hpp"
+#include "edyn/ecs/fwd.hpp"
+#include <array>
+#include <cstdint>
+#include <type_traits>
+#include <unordered_map>
+#include <vector>
+
+namespace edyn {
+
+// Finds the pairs of bodies whose fattened AABBs overlap and keeps one manifold entity (with a
+// contact_manifold component) per pair. Static proxies live in their own tree and never pair
+// with each other. Every pair found is offered to the registry's should_collide function
+// (get_should_collide) once, when it starts overlapping.
+//
+// Ordering is reproducible: proxies are visited in the order of their insertion (a removal moves
+// the last proxy into the hole), new manifolds are created sorted by their bodies' entity values,
+// and nothing depends on hash-table or pointer order. A manifold's body[0] is the body with the
+// lower entity value.
+class broadphase {
+public:
+    explicit broadphase(scalar margin = dynamic_tree::default_margin);
+
+    // Adds a proxy for `e` with its current AABB. Static proxies are never moved by update().
+    // Pairs for it are looked for in the next update(). Throws std::invalid_argument when `e`
+    // is null or already has a proxy, or when the AABB is inverted or not finite.
+    void insert(entity e, const AABB &aabb, bool is_static);
+
+    // Removes the proxy of `e` and destroys the manifold entities of its pairs. Throws
+    // std::invalid_argument when `e` has no proxy. Not to be called from within update() (e.g.
+    // from a contact_manifold construction listener).
+    void remove(registry &registry, entity e);
+
+    bool contains(entity e) const noexcept;
+
+    // The fattened AABB pairs are found with. Throws std::invalid_argument when `e` has no
+    // proxy.
+    const AABB &get_fat_aabb(entity e) const;
+
+    // Asks again whether the pairs of `e` should collide (after its collision_filter or
+    // collision_exclusion changed): destroys its manifolds that the filter now rejects and
+    // looks for new pairs in the next update(). Throws std::invalid_argument when `e` has no
+    // proxy.
+    void refilter(registry &registry, entity e);
+
+    // Moves every dynamic proxy to the AABB component of its entity, destroys the manifolds
+    // whose bodies' fat AABBs no longer overlap and creates manifolds for new overlapping pairs
+    // that should collide.
+    void update(registry &registry);
+
+    // The manifold entity of the pair, or null.
+    entity get_manifold(entity first, entity second) const noexcept;
+    std::size_t num_manifolds() const noexcept { return records.size(); }
+    std::size_t num_proxies() const noexcept { return dynamic_proxies.size() + static_proxies.size(); }
+
+    // Calls fn(entity) for each body whose fat AABB intersects `aabb`, dynamic ones first.
+    // fn may return bool: false stops the query.
+    template<typename Fn>
+    void query(const AABB &aabb, Fn &&fn) const;
+
+    // Calls fn(entity) for each body whose fat AABB the segment p0-p1 touches. fn may return a
+    // scalar: the new maximum fraction of the segment (as dynamic_tree::raycast), shared by
+    // both trees.
+    template<typename Fn>
+    void raycast(const vector3 &p0, const vector3 &p1, Fn &&fn) const;
+
+    const dynamic_tree &get_dynamic_tree() const noexcept { return trees[0]; }
+    const dynamic_tree &get_static_tree() const noexcept { return trees[1]; }
+
+private:
+    struct proxy {
+        entity body;
+        dynamic_tree::node_id node;
+        vector3 center; // of the tight AABB last seen, to predict motion
+        bool queued;    // in `queue`, waiting for its pair search
+    };
+
+    struct locator {
+        std::int32_t index{-1};
+        bool is_static{false};
+    };
+
+    struct manifold_record {
+        entity body[2];
+        entity manifold;
+        dynamic_tree::node_id node[2];
+        bool is_static[2];
+    };
+
+    struct new_pair {
+        entity body[2];
+        dynamic_tree::node_id node[2];
+        bool is_static[2];
+    };
+
+    static std::uint64_t pair_key(entity a, entity b) noexcept;
+    const locator *find(entity e) const noexcept;
+    proxy &get_proxy(const locator &loc) noexcept;
+    dynamic_tree &tree_of(bool is_static) noexcept { return trees[is_static ? 1 : 0]; }
+    const dynamic_tree &tree_of(bool is_static) const noexcept { return trees[is_static ? 1 : 0]; }
+    void destroy_record(registry &registry, std::size_t index);
+    void destroy_separated(registry &registry);
+    void destroy_pairs_of(registry &registry, entity e, bool is_static, AABB fat,
+                          should_collide_func_t keep_if);
+    void collect_new_pairs(entity e);
+    void create_manifolds(registry &registry);
+
+    // Dynamic proxies, then static ones.
+    std::array<dynamic_tree, 2> trees;
+    std::vector<proxy> dynamic_proxies;
+    std::vector<proxy> static_proxies;
+    // By entity index.
+    std::vector<locator> locators;
+    // Proxies inserted, reinserted or refiltered since their last pair search.
+    std::vector<entity> queue;
+    std::vector<manifold_record> records;
+    // Pair key -> position in `records`; only looked up, never iterated.
+    std::unordered_map<std::uint64_t, std::uint32_t> record_of_pair;
+    std::vector<new_pair> pairs_scratch;
+    // Dynamic tree nodes reinserted in the current update, also flagged by node id: only their
+    // pairs can have separated.
+    std::vector<dynamic_tree::node_id> moved_nodes;
+    std::vector<std::uint8_t> reinserted;
+    bool updating{false};
+};
+
+template<typename Fn>
+void broadphase::query(const AABB &aabb, Fn &&fn) const {
+    constexpr bool can_stop = std::is_convertible_v<std::invoke_result_t<Fn &, entity>, bool>;
+    bool stopped = false;
+
+    for (auto &tree : trees) {
+        tree.query(aabb, [&](dynamic_tree::node_id id) {
+            if constexpr (can_stop) {
+                stopped = !fn(tree.get_payload(id));
+                return !stopped;
+            } else {
+                fn(tree.get_payload(id));
+            }
+        });
+        if (stopped) return;
+    }
+}
+
+template<typename Fn>
+void broadphase::raycast(const vector3 &p0, const vector3 &p1, Fn &&fn) const {
+    if constexpr (std::is_void_v<std::invoke_result_t<Fn &, entity>>) {
+        for (auto &tree : trees) {
+            tree.raycast(p0, p1, [&](dynamic_tree::node_id id) { fn(tree.get_payload(id)); });
+        }
+    } else {
+        // The second tree is searched only up to the fraction the first one left.
+        auto max_fraction = scalar(1);
+        for (auto &tree : trees) {
+            tree.raycast_bounded(p0, p1, max_fraction, [&](dynamic_tree::node_id id) {
+                return static_cast<scalar>(fn(tree.get_payload(id)));
+            });
+            if (max_fraction <= scalar(0)) return;
+        }
+    }
+}
+
+} // namespace edyn
+
+#endif // EDYN_COLLISION_BROADPHASE_HPP

@@ -1,0 +1,54 @@
+#ifndef EDYN_COLLISION_CONTACT_MANIFOLD_HPP
+#define EDYN_COLLISION_CONTACT_MANIFOLD_HPP
+
+#include "edyn/collision/contact_point.hpp"
+#include "edyn/ecs/entity.hpp"
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace edyn {
+
+// Distance along the normal beyond which a contact point is dropped (metres). Also the
+// default for contact_manifold::separation_threshold.
+inline constexpr scalar contact_breaking_threshold = scalar(0.02);
+// Tangential distance between the two pivots of a point, in world space, beyond which the point
+// is dropped: the surfaces slid so far that the point no longer describes the contact (metres).
+inline constexpr scalar contact_drift_threshold = scalar(0.02);
+// A new point without matching features is the same as an existing one when its pivot on
+// either body lies within this distance of the existing pivot on that body (metres).
+inline constexpr scalar contact_caching_threshold = scalar(0.04);
+
+// The contact between two bodies whose AABBs overlap: an entity with this component is created
+// by the broadphase and destroyed when the AABBs separate. It holds up to `max_contacts`
+// points. A point keeps its slot in `point` for its whole life and `ids` lists the live slots:
+// `point[ids[i]]` for i < num_points is the i-th live point. Removing a point swaps its id
+// with the last live id, so ids of other points never change.
+struct contact_manifold {
+    static constexpr std::size_t max_contacts = 4;
+    using id_type = std::uint8_t;
+
+    std::array<entity, 2> body{null, null};
+    // Points farther apart than this along their normal are removed.
+    scalar separation_threshold{contact_breaking_threshold};
+    std::uint32_t num_points{0};
+    std::array<contact_point, max_contacts> point{};
+    std::array<id_type, max_contacts> ids{0, 1, 2, 3};
+
+    // Calls fn(contact_point &) for each live point, in `ids` order.
+    template<typename Fn>
+    void each_point(Fn &&fn) {
+        for (std::uint32_t i = 0; i < num_points; ++i)
+            fn(point[ids[i]]);
+    }
+
+    template<typename Fn>
+    void each_point(Fn &&fn) const {
+        for (std::uint32_t i = 0; i < num_points; ++i)
+            fn(point[ids[i]]);
+    }
+};
+
+} // namespace edyn
+
+#endif // EDYN_COLLISION_CONTACT_MANIFOLD_HPP

@@ -1,0 +1,299 @@
+#ifndef EDYN_COLLISION_DYNAMIC_TREE_HPP
+#define EDYN_COLLISION_DYNAMIC_TREE_HPP
+
+#include "edyn/config/assert.hpp"
+#include "edyn/ecs/entity.hpp"
+#include "edyn/shapes/aabb.hpp"
+#include <array>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace edyn {
+
+namespace detail {
+
+// LIFO stack for tree traversals that lives on the call stack: a balanced tree of a million
+// leaves is about 30 levels deep, so the inline buffer covers every practical traversal and
+// the heap is touched only by pathologically deep trees.
+template<typename T, std::size_t N>
+class traversal_stack {
+public:
+    void push(const T &value) {
+        if (count < N) {
+            buffer[count] = value;
+        } else {
+            overflow.push_back(value);
+        }
+        ++count;
+    }
+
+    T pop() noexcept {
+        EDYN_ASSERT(count > 0);
+        --count;
+        if (count < N) return buffer[count];
+        auto value = overflow.back();
+        overflow.pop_back();
+        return value;
+    }
+
+    bool empty() const noexcept { return count == 0; }
+
+private:
+    std::array<T, N> buffer;
+    std::vector<T> overflow;
+    std::size_t count{0};
+};
+
+// Whether the segment p0 + t * d, t in [0, max_fraction], touches the box (slab test).
+bool segment_intersects_aabb(const AABB &aabb, const vector3 &p0, const vector3 &d,
+                             scalar max_fraction) noexcept;
+
+} // namespace detail
+
+// Dynamic bounding volume hierarchy over fattened AABBs. Leaves carry an entity payload; nodes
+// live in one contiguous vector with a free list (no allocation per node), and ids are indices
+// into it, stable for a leaf's whole life. Insertion picks the sibling by the surface-area
+// heuristic, and every node on the path up is improved by a surface-area-reducing rotation,
+// which also keeps the height O(log n) for sorted insertion orders (see rotate()).
+//
+// A leaf stores its AABB grown by `margin` on every side (and stretched along the predicted
+// displacement, see move()), so that small motions need no tree update. Queries test the fat
+// AABBs: they may report leaves whose tight AABB does not touch the query box.
+class dynamic_tree {
+public:
+    using node_id = std::int32_t;
+    static constexpr node_id null_node = -1;
+    // Growth of every side of a leaf's AABB, in metres.
+    static constexpr scalar default_margin = scalar(0.1);
+    // A leaf's AABB is also stretched by this many times the displacement given to move(),
+    // so that a body at constant velocity is reinserted about every other step at most.
+    static constexpr scalar displacement_multiplier = scalar(2);
+
+    // Throws std::invalid_argument when margin is negative or not finite.
+    explicit dynamic_tree(scalar margin = default_margin);
+
+    // Inserts a leaf for `aabb` (stored fattened) and returns its id.
+    node_id create(const AABB &aabb, entity payload);
+    void destroy(node_id id);
+
+    // Updates a leaf whose tight AABB is now `aabb`, moving by about `displacement` per step.
+    // The leaf is reinserted only when `aabb` leaves its fat AABB or the fat AABB became much
+    // larger than needed; returns whether it was reinserted (its fat AABB changed).
+    bool move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero);
+
+    // Calls fn(node_id) for each leaf whose fat AABB intersects `aabb`. fn may return bool:
+    // false stops the query.
+    template<typename Fn>
+    void query(const AABB &aabb, Fn &&fn) const;
+
+    // Calls fn(node_id) for each leaf whose fat AABB is touched by the segment p0-p1, closest
+    // subtrees not guaranteed first. fn may return a scalar: the new maximum fraction of the
+    // segment to consider (e.g. the fraction of a hit on the exact shape); values at or above
+    // the current maximum leave it unchanged and zero or less stops the query.
+    template<typename Fn>
+    void raycast(const vector3 &p0, const vector3 &p1, Fn &&fn) const;
+
+    // As raycast, with fn returning the new maximum fraction, starting from and leaving in
+    // `max_fraction` the fraction the segment is searched up to (0 when fn stopped it); lets
+    // several trees share one shrinking segment.
+    template<typename Fn>
+    void raycast_bounded(const vector3 &p0, const vector3 &p1, scalar &max_fraction, Fn &&fn) const;
+
+    // Calls fn(node_id a, node_id b) once for each pair of distinct leaves of this tree whose
+    // fat AABBs intersect, in an order that depends only on the tree's structure.
+    template<typename Fn>
+    void query_pairs(Fn &&fn) const;
+
+    // Calls fn(node_id this_leaf, node_id other_leaf) for each pair of a leaf of this tree and
+    // a leaf of `other` whose fat AABBs intersect.
+    template<typename Fn>
+    void query_pairs(const dynamic_tree &other, Fn &&fn) const;
+
+    const AABB &get_fat_aabb(node_id id) const noexcept {
+        EDYN_ASSERT(is_leaf_id(id), "dynamic_tree: not a leaf");
+        return nodes[id].aabb;
+    }
+
+    entity get_payload(node_id id) const noexcept {
+        EDYN_ASSERT(is_leaf_id(id), "dynamic_tree: not a leaf");
+        return nodes[id].payload;
+    }
+
+    // Height of the root (0 for a single leaf, -1 when empty).
+    int height() const noexcept { return root == null_node ? -1 : nodes[root].height; }
+    std::size_t size() const noexcept { return leaf_count; }
+    // Every node id, leaf or not, is below this bound.
+    std::size_t capacity() const noexcept { return nodes.size(); }
+    bool empty() const noexcept { return leaf_count == 0; }
+    scalar margin() const noexcept { return fat_margin; }
+    void clear() noexcept;
+
+    // Checks the whole structure: parent links, heights, every internal AABB containing its
+    // children's, leaf count and free list. Returns an empty string when valid, otherwise a
+    // description of the first problem found. Linear time; meant for tests.
+    std::string validate() const;
+
+private:
+    struct node {
+        AABB aabb;
+        entity payload;
+        // Parent, or next free node while the node is in the free list.
+        node_id parent;
+        node_id child1;
+        node_id child2;
+        // 0 for leaves, -1 for free nodes.
+        std::int32_t height;
+
+        bool is_leaf() const noexcept { return child1 == null_node; }
+    };
+
+    bool is_leaf_id(node_id id) const noexcept {
+        return id >= 0 && static_cast<std::size_t>(id) < nodes.size() && nodes[id].height == 0;
+    }
+
+    node_id allocate_node();
+    void free_node(node_id id) noexcept;
+    void insert_leaf(node_id leaf);
+    void remove_leaf(node_id leaf);
+    node_id find_best_sibling(const AABB &box) const noexcept;
+    void refit_ancestors(node_id index);
+    void refit_node(node_id id) noexcept;
+    void exchange(node_id x, node_id y) noexcept;
+    void rotate(node_id a) noexcept;
+    AABB fatten(const AABB &aabb, const vector3 &displacement) const noexcept;
+
+    std::vector<node> nodes;
+    node_id root{null_node};
+    node_id free_list{null_node};
+    std::size_t leaf_count{0};
+    scalar fat_margin;
+};
+
+template<typename Fn>
+void dynamic_tree::query(const AABB &aabb, Fn &&fn) const {
+    if (root == null_node) return;
+    detail::traversal_stack<node_id, 64> stack;
+    stack.push(root);
+
+    while (!stack.empty()) {
+        auto id = stack.pop();
+        auto &n = nodes[id];
+        if (!intersect(n.aabb, aabb)) continue;
+
+        if (n.is_leaf()) {
+            if constexpr (std::is_convertible_v<std::invoke_result_t<Fn &, node_id>, bool>) {
+                if (!fn(id)) return;
+            } else {
+                fn(id);
+            }
+        } else {
+            stack.push(n.child2);
+            stack.push(n.child1);
+        }
+    }
+}
+
+template<typename Fn>
+void dynamic_tree::raycast(const vector3 &p0, const vector3 &p1, Fn &&fn) const {
+    auto max_fraction = scalar(1);
+    if constexpr (std::is_void_v<std::invoke_result_t<Fn &, node_id>>) {
+        raycast_bounded(p0, p1, max_fraction, [&](node_id id) {
+            fn(id);
+            return scalar(1);
+        });
+    } else {
+        raycast_bounded(p0, p1, max_fraction, [&](node_id id) { return static_cast<scalar>(fn(id)); });
+    }
+}
+
+template<typename Fn>
+void dynamic_tree::raycast_bounded(const vector3 &p0, const vector3 &p1, scalar &max_fraction,
+                                   Fn &&fn) const {
+    if (root == null_node || max_fraction <= scalar(0)) return;
+    auto d = p1 - p0;
+    detail::traversal_stack<node_id, 64> stack;
+    stack.push(root);
+
+    while (!stack.empty()) {
+        auto id = stack.pop();
+        auto &n = nodes[id];
+        if (!detail::segment_intersects_aabb(n.aabb, p0, d, max_fraction)) continue;
+
+        if (n.is_leaf()) {
+            auto fraction = static_cast<scalar>(fn(id));
+            if (fraction <= scalar(0)) {
+                max_fraction = 0;
+                return;
+            }
+            if (fraction < max_fraction) max_fraction = fraction;
+        } else {
+            stack.push(n.child2);
+            stack.push(n.child1);
+        }
+    }
+}
+
+template<typename Fn>
+void dynamic_tree::query_pairs(Fn &&fn) const {
+    if (root == null_node) return;
+    detail::traversal_stack<std::pair<node_id, node_id>, 128> stack;
+    stack.push({root, root});
+
+    while (!stack.empty()) {
+        auto [a, b] = stack.pop();
+        auto &na = nodes[a];
+
+        if (a == b) {
+            // Pairs inside one subtree: both halves on their own, then across them.
+            if (na.is_leaf()) continue;
+            stack.push({na.child1, na.child2});
+            stack.push({na.child2, na.child2});
+            stack.push({na.child1, na.child1});
+            continue;
+        }
+
+        auto &nb = nodes[b];
+        if (!intersect(na.aabb, nb.aabb)) continue;
+
+        if (na.is_leaf() && nb.is_leaf()) {
+            fn(a, b);
+        } else if (nb.is_leaf() || (!na.is_leaf() && aabb_area(na.aabb) >= aabb_area(nb.aabb))) {
+            stack.push({na.child2, b});
+            stack.push({na.child1, b});
+        } else {
+            stack.push({a, nb.child2});
+            stack.push({a, nb.child1});
+        }
+    }
+}
+
+template<typename Fn>
+void dynamic_tree::query_pairs(const dynamic_tree &other, Fn &&fn) const {
+    if (root == null_node || other.root == null_node) return;
+    detail::traversal_stack<std::pair<node_id, node_id>, 128> stack;
+    stack.push({root, other.root});
+
+    while (!stack.empty()) {
+        auto [a, b] = stack.pop();
+        auto &na = nodes[a];
+        auto &nb = other.nodes[b];
+        if (!intersect(na.aabb, nb.aabb)) continue;
+
+        if (na.is_leaf() && nb.is_leaf()) {
+            fn(a, b);
+        } else if (nb.is_leaf() || (!na.is_leaf() && aabb_area(na.aabb) >= aabb_area(nb.aabb))) {
+            stack.push({na.child2, b});
+            stack.push({na.child1, b});
+        } else {
+            stack.push({a, nb.child2});
+            stack.push({a, nb.child1});
+        }
+    }
+}
+
+} // namespace edyn
+
+#endif // EDYN_COLLISION_DYNAMIC_TREE_HPP

@@ -1,0 +1,66 @@
+#ifndef EDYN_COLLISION_MANIFOLD_UPDATE_HPP
+#define EDYN_COLLISION_MANIFOLD_UPDATE_HPP
+
+#include "edyn/collision/collision_result.hpp"
+#include "edyn/collision/contact_manifold.hpp"
+#include "edyn/math/quaternion.hpp"
+#include <array>
+#include <cstdint>
+
+namespace edyn {
+
+// What one manifold update did, so that the caller can fire on_contact_point_destroyed /
+// on_contact_point_created (destroyed first: a created point may reuse a destroyed point's
+// slot) and on_contact_started / on_contact_ended.
+struct contact_point_changes {
+    using id_type = contact_manifold::id_type;
+
+    std::uint32_t num_points_before{0};
+    std::uint32_t num_points_after{0};
+    std::uint32_t num_destroyed{0};
+    std::uint32_t num_created{0};
+    std::array<id_type, contact_manifold::max_contacts> destroyed{};
+    std::array<id_type, contact_manifold::max_contacts> created{};
+
+    bool contact_started() const noexcept { return num_points_before == 0 && num_points_after > 0; }
+    bool contact_ended() const noexcept { return num_points_before > 0 && num_points_after == 0; }
+};
+
+// Transforms of the bodies' origins (pivots are relative to the origin, not the centre of mass).
+struct manifold_transforms {
+    vector3 posA{vector3_zero};
+    quaternion ornA{quaternion_identity};
+    vector3 posB{vector3_zero};
+    quaternion ornB{quaternion_identity};
+};
+
+// Ages every point by one step and recomputes its distance from its pivots at the current
+// transforms, along its stored normal. Removes points that separated beyond
+// manifold.separation_threshold or whose pivots slid apart tangentially beyond
+// contact_drift_threshold.
+contact_point_changes refresh_contact_manifold(contact_manifold &manifold, const manifold_transforms &tf);
+
+// refresh_contact_manifold, then merges a fresh collision result (computed at the same
+// transforms):
+// - A result point matches a live point, preferring in this order: equal features (featureA
+//   and/or featureB, present on the same sides) and a pivot on A or on B within
+//   contact_caching_threshold; a pivot that near with other or no features (a clipped point may
+//   change its feature label while staying in place); equal features farther away. The nearest
+//   point wins within a preference. Each live point matches
+//   at most once. A match takes the new geometry (pivots, normal, distance, features) and keeps
+//   impulses, materials and lifetime, so that warm starting works.
+// - Result points farther than the separation threshold are ignored; a matched point that is
+//   now beyond it is removed.
+// - Unmatched result points fill free slots. When live and new points exceed max_contacts, the
+//   set kept is the one that contains the deepest point and spans the largest area (measured
+//   on body A), existing points winning ties; the points left out are destroyed (or never
+//   created).
+contact_point_changes update_contact_manifold(contact_manifold &manifold, const manifold_transforms &tf,
+                                              const collision_result &result);
+
+// Removes every point (e.g. when a body turns into a sensor or its shape changes).
+contact_point_changes clear_contact_manifold(contact_manifold &manifold);
+
+} // namespace edyn
+
+#endif // EDYN_COLLISION_MANIFOLD_UPDATE_HPP

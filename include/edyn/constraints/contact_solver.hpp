@@ -1,0 +1,93 @@
+#ifndef EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
+#define EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include "edyn/dynamics/solver_body.hpp"
+
+namespace edyn {
+
+// One point of a contact as the solver sees it. Geometry is captured at the start of the step
+// (narrowphase output); the current separation is recovered from the bodies' accumulated motion.
+struct contact_solver_point {
+    vector3 rA, rB;                // contact points relative to each centre of mass, world space
+    vector3 normal;                // from B towards A
+    vector3 tangent[2];
+    scalar adjusted_separation{0}; // separation minus dot(normal, rA - rB)
+    scalar normal_mass{0};
+    scalar tangent_mass[2]{0, 0};
+    scalar normal_impulse{0};
+    scalar tangent_impulse[2]{0, 0};
+    scalar restitution_impulse{0};
+    scalar tangent_restitution_impulse[2]{0, 0};
+    scalar relative_velocity{0}; // normal relative velocity when the step began
+};
+
+// A manifold's contact ready to be solved: up to four points (each with its own normal, as
+// compound shapes may give several), their friction, and torsional (spin) and rolling friction
+// about the manifold's main normal.
+struct contact_solver_constraint {
+    static constexpr std::size_t max_points = 4;
+
+    solver_body_index body[2]{0, 0};
+    vector3 normal{vector3_zero}; // main normal, for spinning and rolling friction
+    scalar friction{0};
+    scalar restitution{0};
+    scalar roll_friction{0};
+    scalar spin_friction{0};
+    std::uint32_t num_points{0};
+    std::array<contact_solver_point, max_points> points{};
+
+    // Spinning friction about the normal.
+    scalar spin_mass{0};
+    scalar spin_impulse{0};
+    // Rolling friction about up to two axes orthogonal to the normal (one for cylinders).
+    std::uint32_t num_roll_axes{0};
+    vector3 roll_axis[2]{vector3_zero, vector3_zero};
+    scalar roll_mass[2]{0, 0};
+    scalar roll_impulse[2]{0, 0};
+
+    // Where the impulses go back when the step ends (index into the caller's manifold list).
+    std::uint32_t source{0};
+};
+
+// Tuning of the soft-step contact solver, shared by all contacts of a step.
+struct contact_solver_settings {
+    // Stiffness of contacts as a spring frequency. A loaded contact sinks by load / (m w^2),
+    // so stacks stand taller the stiffer it is; it is capped below for stability.
+    scalar contact_hertz{120};
+    scalar contact_damping_ratio{10};
+    // Contact frequency is capped at this fraction of the sub-step rate.
+    scalar max_hertz_ratio{scalar(0.25)};
+    // Cap on the speed at which overlap is pushed out, m/s.
+    scalar max_push_out_velocity{3};
+    // Approach speed below which restitution is ignored, so resting bodies do not jitter.
+    scalar restitution_threshold{scalar(0.5)};
+};
+
+// Computes tangent frames, effective masses and starting normal velocities; call after the
+// points' rA, rB, normal and adjusted separation are set, and before any solve.
+void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<const solver_body> bodies);
+
+// Re-applies last step's impulses (scaled) as the initial guess.
+void warm_start_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies);
+
+// One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
+// without it (relax pass) only the velocity constraints are enforced, removing the push-out
+// velocity so that it does not turn into bounce.
+void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies, scalar h,
+                    const contact_solver_settings &settings, bool use_bias);
+
+// Restitution, run at the start of each sub-step before the contact solve: a point approaching
+// faster than the threshold that touches, or will within the sub-step h, gets an impulse making
+// it separate at restitution times its approach speed. Manifolds are solved one at a time for
+// `individual_iterations`, the whole set up to `iterations` times, until no point is hit, so
+// that a shock travels along a chain of bodies. Returns the number of passes that found a hit.
+unsigned solve_restitution(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies,
+                           const contact_solver_settings &settings, scalar h, unsigned iterations,
+                           unsigned individual_iterations);
+
+} // namespace edyn
+
+#endif // EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP

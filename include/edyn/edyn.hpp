@@ -1,0 +1,49 @@
+#ifndef EDYN_EDYN_HPP
+#define EDYN_EDYN_HPP
+
+// The whole public API, layer by layer (see DESIGN.md).
+#include "edyn/config/assert.hpp"
+#include "edyn/config/version.hpp"
+
+#include "edyn/ecs/ecs.hpp"
+
+#include "edyn/math/math.hpp"
+#include "edyn/math/matrix3x3.hpp"
+#include "edyn/math/quaternion.hpp"
+#include "edyn/math/scalar.hpp"
+#include "edyn/math/transform.hpp"
+#include "edyn/math/vector2.hpp"
+#include "edyn/math/vector3.hpp"
+
+#include "edyn/shapes/aabb.hpp"
+#include "edyn/shapes/convex_hull.hpp"
+#include "edyn/shapes/moment_of_inertia.hpp"
+#include "edyn/shapes/shape_aabb.hpp"
+#include "edyn/shapes/shapes.hpp"
+#include "edyn/shapes/validate_shape.hpp"
+
+#include "edyn/collision/broadphase.hpp"
+#include "edyn/collision/collide.hpp"
+#include "edyn/collision/collision_filter.hpp"
+#include "edyn/collision/contact_manifold.hpp"
+#include "edyn/collision/shape_raycast.hpp"
+#include "edyn/collision/should_collide.hpp"
+
+#include "edyn/dynamics/mass.hpp"
+#include "edyn/dynamics/material.hpp"
+#include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/rigidbody_def.hpp"
+#include "edyn/dynamics/shape_index.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+
+#include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/execution_mode.hpp"
+#include "edyn/simulation/island.hpp"
+#include "edyn/simulation/settings.hpp"
+#include "edyn/simulation/world.hpp"
+
+#endif // EDYN_EDYN_HPP

@@ -1,0 +1,124 @@
+#ifndef EDYN_MATH_MATRIX3X3_HPP
+#define EDYN_MATH_MATRIX3X3_HPP
+
+#include "edyn/math/quaternion.hpp"
+#include "edyn/math/vector3.hpp"
+
+namespace edyn {
+
+// 3x3 matrix stored as three rows. Frames (a hinge's, a body's basis) are read by column.
+struct matrix3x3 {
+    vector3 row[3];
+
+    constexpr vector3 &operator[](int i) noexcept { return row[i]; }
+    constexpr const vector3 &operator[](int i) const noexcept { return row[i]; }
+    constexpr vector3 column(int i) const noexcept { return {row[0][i], row[1][i], row[2][i]}; }
+    constexpr bool operator==(const matrix3x3 &) const noexcept = default;
+};
+
+inline constexpr matrix3x3 matrix3x3_identity{{vector3_x, vector3_y, vector3_z}};
+inline constexpr matrix3x3 matrix3x3_zero{{vector3_zero, vector3_zero, vector3_zero}};
+
+constexpr matrix3x3 matrix3x3_rows(const vector3 &r0, const vector3 &r1, const vector3 &r2) noexcept {
+    return {{r0, r1, r2}};
+}
+
+constexpr matrix3x3 matrix3x3_columns(const vector3 &c0, const vector3 &c1, const vector3 &c2) noexcept {
+    return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
+}
+
+constexpr matrix3x3 diagonal_matrix(const vector3 &d) noexcept {
+    return {{{d.x, 0, 0}, {0, d.y, 0}, {0, 0, d.z}}};
+}
+
+constexpr vector3 get_diagonal(const matrix3x3 &m) noexcept { return {m[0][0], m[1][1], m[2][2]}; }
+
+// Matrix form of the cross product: skew_matrix(a) * b == cross(a, b).
+constexpr matrix3x3 skew_matrix(const vector3 &v) noexcept {
+    return {{{0, -v.z, v.y}, {v.z, 0, -v.x}, {-v.y, v.x, 0}}};
+}
+
+constexpr matrix3x3 transpose(const matrix3x3 &m) noexcept { return matrix3x3_columns(m[0], m[1], m[2]); }
+
+constexpr matrix3x3 operator+(const matrix3x3 &a, const matrix3x3 &b) noexcept {
+    return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}};
+}
+constexpr matrix3x3 operator-(const matrix3x3 &a, const matrix3x3 &b) noexcept {
+    return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+}
+constexpr matrix3x3 operator*(const matrix3x3 &m, scalar s) noexcept {
+    return {{m[0] * s, m[1] * s, m[2] * s}};
+}
+constexpr matrix3x3 operator*(scalar s, const matrix3x3 &m) noexcept { return m * s; }
+
+constexpr vector3 operator*(const matrix3x3 &m, const vector3 &v) noexcept {
+    return {dot(m[0], v), dot(m[1], v), dot(m[2], v)};
+}
+
+// Row vector times matrix, i.e. transpose(m) * v without building the transpose.
+constexpr vector3 operator*(const vector3 &v, const matrix3x3 &m) noexcept {
+    return m[0] * v.x + m[1] * v.y + m[2] * v.z;
+}
+
+constexpr matrix3x3 operator*(const matrix3x3 &a, const matrix3x3 &b) noexcept {
+    return {{a[0] * b, a[1] * b, a[2] * b}};
+}
+
+constexpr matrix3x3 &operator+=(matrix3x3 &a, const matrix3x3 &b) noexcept { return a = a + b; }
+constexpr matrix3x3 &operator*=(matrix3x3 &a, const matrix3x3 &b) noexcept { return a = a * b; }
+
+constexpr scalar determinant(const matrix3x3 &m) noexcept { return dot(m[0], cross(m[1], m[2])); }
+
+// Inverse through the adjugate. Precondition: determinant(m) != 0.
+constexpr matrix3x3 inverse(const matrix3x3 &m) noexcept {
+    auto c0 = cross(m[1], m[2]);
+    auto c1 = cross(m[2], m[0]);
+    auto c2 = cross(m[0], m[1]);
+    auto det = dot(m[0], c0);
+    EDYN_ASSERT(det != scalar(0), "inverse of a singular matrix");
+    return matrix3x3_columns(c0, c1, c2) * (scalar(1) / det);
+}
+
+// Rotation matrix equal to the unit quaternion q.
+constexpr matrix3x3 to_matrix3x3(const quaternion &q) noexcept {
+    auto xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
+    auto xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
+    auto wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+    return {{{1 - 2 * (yy + zz), 2 * (xy - wz), 2 * (xz + wy)},
+             {2 * (xy + wz), 1 - 2 * (xx + zz), 2 * (yz - wx)},
+             {2 * (xz - wy), 2 * (yz + wx), 1 - 2 * (xx + yy)}}};
+}
+
+// Unit quaternion of the rotation matrix m (orthonormal, determinant 1).
+inline quaternion to_quaternion(const matrix3x3 &m) noexcept {
+    auto trace = m[0][0] + m[1][1] + m[2][2];
+    quaternion q;
+    // Pick the largest of w, x, y, z to divide by, for accuracy.
+    if (trace > 0) {
+        auto s = std::sqrt(trace + scalar(1)) * 2;
+        q = {(m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s, s / 4};
+    } else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
+        auto s = std::sqrt(scalar(1) + m[0][0] - m[1][1] - m[2][2]) * 2;
+        q = {s / 4, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s, (m[2][1] - m[1][2]) / s};
+    } else if (m[1][1] > m[2][2]) {
+        auto s = std::sqrt(scalar(1) + m[1][1] - m[0][0] - m[2][2]) * 2;
+        q = {(m[0][1] + m[1][0]) / s, s / 4, (m[1][2] + m[2][1]) / s, (m[0][2] - m[2][0]) / s};
+    } else {
+        auto s = std::sqrt(scalar(1) + m[2][2] - m[0][0] - m[1][1]) * 2;
+        q = {(m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, s / 4, (m[1][0] - m[0][1]) / s};
+    }
+    return normalize(q);
+}
+
+// R diag(d) R^T for a rotation R: a diagonal tensor (inertia) expressed in another frame.
+constexpr matrix3x3 rotate_diagonal(const matrix3x3 &r, const vector3 &d) noexcept {
+    return r * diagonal_matrix(d) * transpose(r);
+}
+
+inline bool isfinite(const matrix3x3 &m) noexcept {
+    return isfinite(m[0]) && isfinite(m[1]) && isfinite(m[2]);
+}
+
+} // namespace edyn
+
+#endif // EDYN_MATH_MATRIX3X3_HPP

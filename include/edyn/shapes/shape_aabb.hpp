@@ -1,0 +1,37 @@
+#ifndef EDYN_SHAPES_SHAPE_AABB_HPP
+#define EDYN_SHAPES_SHAPE_AABB_HPP
+
+#include "edyn/shapes/aabb.hpp"
+#include "edyn/shapes/shapes.hpp"
+
+namespace edyn {
+
+// Half size of the box given to a plane: finite, so that box arithmetic (areas in the
+// broadphase) stays finite, and far beyond any simulated world.
+inline constexpr scalar plane_aabb_half_size = scalar(1e15);
+
+// World-space AABB of a shape at position `pos` and orientation `orn` (unit). Tight for every
+// shape: boxes and polyhedra bound their rotated vertices; cylinders use, per world axis i,
+// |a_i| half_length + radius sqrt(1 - a_i^2) with a the world-space main axis; capsules
+// |a_i| half_length + radius; compounds are the union of their children's tight AABBs.
+//
+// A plane ignores pos and orn (as planes do everywhere) and gets the cube of half size
+// plane_aabb_half_size around the origin, cut at the plane where its normal is exactly a
+// coordinate axis: the ground plane {normal (0, 1, 0), constant 0} gives max.y == 0.
+AABB shape_aabb(const plane_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const sphere_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const box_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const cylinder_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const capsule_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const polyhedron_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const compound_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const compound_child_shape_t &shape, const vector3 &pos, const quaternion &orn);
+
+template<shapes_variant Variant>
+AABB shape_aabb(const Variant &shape, const vector3 &pos, const quaternion &orn) {
+    return std::visit([&](const auto &s) { return shape_aabb(s, pos, orn); }, shape);
+}
+
+} // namespace edyn
+
+#endif // EDYN_SHAPES_SHAPE_AABB_HPP

@@ -1,0 +1,41 @@
+#ifndef EDYN_SIMULATION_ISLAND_HPP
+#define EDYN_SIMULATION_ISLAND_HPP
+
+#include <cstdint>
+#include <vector>
+#include "edyn/ecs/entity.hpp"
+#include "edyn/math/scalar.hpp"
+
+namespace edyn {
+
+// A connected component of the entity graph: dynamic bodies (nodes) joined by manifolds in
+// contact and constraints (edges). Static and kinematic bodies are not nodes, so they never join
+// two islands. Each island is an entity with this component; when it sleeps, it and every
+// entity in it carry sleeping_tag.
+struct island {
+    std::vector<entity> nodes;
+    std::vector<entity> edges;
+    // An edge left since the island was last split: it may have come apart.
+    bool may_split{false};
+};
+
+// On every node and linked edge: the island it belongs to, and its position in that island's
+// `nodes` or `edges` (for removal in constant time).
+struct island_resident {
+    entity island_entity;
+    std::uint32_t index;
+};
+
+// On every linked edge: the two bodies it joins.
+struct island_edge {
+    entity body[2];
+};
+
+// How long a dynamic body has been slow enough to sleep, in simulated seconds.
+struct sleep_timer {
+    scalar time{0};
+};
+
+} // namespace edyn
+
+#endif // EDYN_SIMULATION_ISLAND_HPP

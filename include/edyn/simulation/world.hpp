@@ -1,0 +1,63 @@
+#ifndef EDYN_SIMULATION_WORLD_HPP
+#define EDYN_SIMULATION_WORLD_HPP
+
+#include "edyn/ecs/registry.hpp"
+#include "edyn/simulation/settings.hpp"
+
+namespace edyn {
+
+// Makes `registry` ready for physics: settings, the broadphase and the listeners that keep the
+// simulation in step with the registry. Bodies made before attach() join the simulation too.
+// Throws std::invalid_argument for an execution mode that is not available, or if the
+// registry is already attached.
+void attach(registry &registry, const init_config &config = {});
+
+// Removes every edyn component, context variable and internal entity (manifolds, islands);
+// the program's own entities and components stay. attach() may be called again afterwards.
+void detach(registry &registry);
+
+bool is_attached(const registry &registry) noexcept;
+
+// Advances the simulation to `time` (seconds, from the caller's clock; the first call only
+// sets the start) in fixed steps, then interpolates present_position / present_orientation
+// between the last two steps. update(registry) uses the steady clock.
+void update(registry &registry, double time);
+void update(registry &registry);
+
+// Runs exactly one fixed step now, paused or not, and sets the present transforms to it.
+void step_simulation(registry &registry);
+
+void set_paused(registry &registry, bool paused);
+bool is_paused(const registry &registry);
+
+void set_fixed_dt(registry &registry, scalar dt);
+scalar get_fixed_dt(const registry &registry);
+
+void set_gravity(registry &registry, const vector3 &gravity);
+vector3 get_gravity(const registry &registry);
+
+// Sub-steps per step of the soft-step solver (see settings::num_substeps).
+void set_solver_velocity_iterations(registry &registry, unsigned iterations);
+unsigned get_solver_velocity_iterations(const registry &registry);
+// Relax iterations per sub-step (see settings::num_relax_iterations).
+void set_solver_position_iterations(registry &registry, unsigned iterations);
+unsigned get_solver_position_iterations(const registry &registry);
+void set_solver_restitution_iterations(registry &registry, unsigned iterations);
+unsigned get_solver_restitution_iterations(const registry &registry);
+void set_solver_individual_restitution_iterations(registry &registry, unsigned iterations);
+unsigned get_solver_individual_restitution_iterations(const registry &registry);
+void set_max_steps_per_update(registry &registry, unsigned steps);
+
+void set_pre_step_callback(registry &registry, step_callback_t callback);
+void set_post_step_callback(registry &registry, step_callback_t callback);
+
+const settings &get_settings(const registry &registry);
+
+// Simulated time of the last step, in seconds since attach().
+double get_simulation_time(const registry &registry);
+// Steps run since attach().
+std::uint64_t get_step_count(const registry &registry);
+
+} // namespace edyn
+
+#endif // EDYN_SIMULATION_WORLD_HPP

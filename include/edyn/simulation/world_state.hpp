@@ -1,0 +1,43 @@
+#ifndef EDYN_SIMULATION_WORLD_STATE_HPP
+#define EDYN_SIMULATION_WORLD_STATE_HPP
+
+#include <cstdint>
+#include <vector>
+#include "edyn/collision/broadphase.hpp"
+#include "edyn/collision/collision_result.hpp"
+#include "edyn/constraints/contact_solver.hpp"
+#include "edyn/dynamics/solver_body.hpp"
+#include "edyn/simulation/island_manager.hpp"
+
+namespace edyn {
+
+// The simulation's own state, in the registry's context: the broadphase, the islands, the
+// clock and the scratch arrays the solver reuses from step to step (so that a step allocates
+// nothing once the world stops growing).
+struct world_state {
+    edyn::broadphase broadphase;
+    island_manager islands;
+
+    // Clock.
+    bool started{false};
+    double last_time{0};
+    double accumulator{0};
+    double simulation_time{0};
+    std::uint64_t step_count{0};
+    bool paused{false};
+
+    // Solver scratch: bodies[0] is the shared static body; body_entities[i] is bodies[i]'s
+    // entity; body_index maps an entity's index to its solver body (0 when it has none).
+    std::vector<solver_body> bodies;
+    std::vector<entity> body_entities;
+    std::vector<std::uint32_t> body_index;
+    std::vector<contact_solver_constraint> contacts;
+    std::vector<entity> contact_manifolds;
+
+    // Manifold entities in the order the narrowphase visits them.
+    std::vector<entity> manifolds;
+};
+
+} // namespace edyn
+
+#endif // EDYN_SIMULATION_WORLD_STATE_HPP

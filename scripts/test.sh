@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs dependencies, builds edyn with its tests and runs them through CTest.
+#   scripts/test.sh            normal build (RelWithDebInfo, assertions on) in build/
+#   scripts/test.sh --asan     AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
+#   scripts/test.sh --tsan     ThreadSanitizer in build-tsan/
+#   scripts/test.sh --double   edyn::scalar = double in build-double/
+# Other arguments are passed to ctest (e.g. -R registry, -L edyn-test-math).
+# Warnings are errors when CI is set or with --werror.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+build_dir=build
+cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
+ctest_args=()
+werror=${CI:+ON}
+for arg in "$@"; do
+  case "$arg" in
+    --asan) build_dir=build-asan; cmake_args+=(-DEDYN_SANITIZE=address) ;;
+    --tsan) build_dir=build-tsan; cmake_args+=(-DEDYN_SANITIZE=thread) ;;
+    --double) build_dir=build-double; cmake_args+=(-DEDYN_DOUBLE_PRECISION=ON) ;;
+    --werror) werror=ON ;;
+    *) ctest_args+=("$arg") ;;
+  esac
+done
+cmake_args+=(-DEDYN_WERROR=${werror:-OFF})
+
+bash scripts/deps.sh
+jobs=$(nproc)
+cmake -S . -B "$build_dir" "${cmake_args[@]}" >/dev/null
+cmake --build "$build_dir" -j "$jobs"
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
+ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" "${ctest_args[@]}"

@@ -1,0 +1,214 @@
+#include "edyn/constraints/contact_solver.hpp"
+#include <algorithm>
+
+namespace edyn {
+
+void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<const solver_body> bodies) {
+    for (auto &c : contacts) {
+        auto &a = bodies[c.body[0]];
+        auto &b = bodies[c.body[1]];
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            plane_space(p.normal, p.tangent[0], p.tangent[1]);
+            p.normal_mass = effective_mass(a, b, p.normal, p.rA, p.rB);
+            p.tangent_mass[0] = effective_mass(a, b, p.tangent[0], p.rA, p.rB);
+            p.tangent_mass[1] = effective_mass(a, b, p.tangent[1], p.rA, p.rB);
+            p.relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
+            p.restitution_impulse = 0;
+            p.tangent_restitution_impulse[0] = p.tangent_restitution_impulse[1] = 0;
+        }
+
+        c.spin_mass = c.spin_friction > 0 ? effective_angular_mass(a, b, c.normal) : scalar(0);
+        for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
+            c.roll_mass[i] = effective_angular_mass(a, b, c.roll_axis[i]);
+        }
+    }
+}
+
+void warm_start_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies) {
+    for (auto &c : contacts) {
+        auto &a = bodies[c.body[0]];
+        auto &b = bodies[c.body[1]];
+
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            auto impulse = p.normal * p.normal_impulse + p.tangent[0] * p.tangent_impulse[0] +
+                           p.tangent[1] * p.tangent_impulse[1];
+            apply_impulse(a, b, impulse, p.rA, p.rB);
+        }
+
+        auto angular = c.normal * c.spin_impulse;
+        for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
+            angular += c.roll_axis[i] * c.roll_impulse[i];
+        }
+        apply_angular_impulse(a, b, angular);
+    }
+}
+
+namespace {
+
+// Current separation of a point from the bodies' motion since the step began.
+scalar current_separation(const contact_solver_point &p, const solver_body &a, const solver_body &b) {
+    auto d = (a.delta_position - b.delta_position) + (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
+    return dot(p.normal, d) + p.adjusted_separation;
+}
+
+// Coulomb friction on both tangents of every point, limited by that point's normal impulse.
+void solve_friction(contact_solver_constraint &c, solver_body &a, solver_body &b) {
+    for (std::uint32_t i = 0; i < c.num_points; ++i) {
+        auto &p = c.points[i];
+        auto max_impulse = c.friction * p.normal_impulse;
+        auto vrel = relative_velocity(a, b, p.rA, p.rB);
+
+        for (int t = 0; t < 2; ++t) {
+            auto vt = dot(p.tangent[t], vrel);
+            auto impulse = -p.tangent_mass[t] * vt;
+            auto new_impulse = std::clamp(p.tangent_impulse[t] + impulse, -max_impulse, max_impulse);
+            impulse = new_impulse - p.tangent_impulse[t];
+            p.tangent_impulse[t] = new_impulse;
+            apply_impulse(a, b, p.tangent[t] * impulse, p.rA, p.rB);
+            vrel = relative_velocity(a, b, p.rA, p.rB);
+        }
+    }
+}
+
+// Torsional friction about the normal and rolling resistance, both proportional to the total
+// normal impulse of the manifold (torque per unit weight).
+void solve_spin_and_roll(contact_solver_constraint &c, solver_body &a, solver_body &b, scalar total_normal) {
+    if (c.spin_friction > 0) {
+        auto max_impulse = c.spin_friction * total_normal;
+        auto w = dot(c.normal, a.angvel - b.angvel);
+        auto new_impulse = std::clamp(c.spin_impulse - c.spin_mass * w, -max_impulse, max_impulse);
+        apply_angular_impulse(a, b, c.normal * (new_impulse - c.spin_impulse));
+        c.spin_impulse = new_impulse;
+    }
+
+    auto max_roll = c.roll_friction * total_normal;
+    for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
+        auto w = dot(c.roll_axis[i], a.angvel - b.angvel);
+        auto new_impulse = std::clamp(c.roll_impulse[i] - c.roll_mass[i] * w, -max_roll, max_roll);
+        apply_angular_impulse(a, b, c.roll_axis[i] * (new_impulse - c.roll_impulse[i]));
+        c.roll_impulse[i] = new_impulse;
+    }
+}
+
+} // namespace
+
+void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies, scalar h,
+                    const contact_solver_settings &settings, bool use_bias) {
+    // A spring stiffer than a quarter of the sub-step rate cannot be integrated stably.
+    auto hertz = std::min(settings.contact_hertz, settings.max_hertz_ratio / h);
+    auto soft = make_softness(hertz, settings.contact_damping_ratio, h);
+    auto inv_h = scalar(1) / h;
+
+    for (auto &c : contacts) {
+        auto &a = bodies[c.body[0]];
+        auto &b = bodies[c.body[1]];
+        scalar total_normal = 0;
+
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            auto s = current_separation(p, a, b);
+            scalar bias = 0, mass_scale = 1, impulse_scale = 0;
+
+            if (s > 0) {
+                // Speculative: allow closing the gap within this sub-step, no more.
+                bias = s * inv_h;
+            } else if (use_bias) {
+                // Overlap is pushed out by a stiff, heavily damped spring.
+                bias = std::max(soft.bias_rate * s, -settings.max_push_out_velocity);
+                mass_scale = soft.mass_scale;
+                impulse_scale = soft.impulse_scale;
+            }
+
+            auto vn = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
+            auto impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+            auto new_impulse = std::max(p.normal_impulse + impulse, scalar(0));
+            impulse = new_impulse - p.normal_impulse;
+            p.normal_impulse = new_impulse;
+            apply_impulse(a, b, p.normal * impulse, p.rA, p.rB);
+            total_normal += new_impulse;
+        }
+
+        solve_friction(c, a, b);
+        solve_spin_and_roll(c, a, b, total_normal);
+    }
+}
+
+namespace {
+
+// Solves one manifold's bounce as an isolated collision: each call is a new collision event,
+// so its impulses start from zero. Returns whether any point was hit.
+bool solve_restitution_individually(contact_solver_constraint &c, solver_body &a, solver_body &b,
+                                    scalar threshold, scalar h, unsigned iterations) {
+    scalar target[contact_solver_constraint::max_points];
+    scalar normal[contact_solver_constraint::max_points]{};
+    scalar tangent[contact_solver_constraint::max_points][2]{};
+    bool any = false;
+
+    for (std::uint32_t i = 0; i < c.num_points; ++i) {
+        auto &p = c.points[i];
+        // The approach speed is the larger of now and when the step began: in between, the
+        // speculative contact may have braked the point so that it lands exactly on the surface.
+        auto approach = std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), p.relative_velocity);
+        // A point still apart bounces only when the gap closes within this sub-step, so that
+        // the bounce starts at most one sub-step of travel early.
+        auto hits = approach < -threshold && current_separation(p, a, b) + approach * h <= 0;
+        target[i] = hits ? -c.restitution * approach : scalar(0);
+        // The step's approach has been answered; later hits in this step are new collisions.
+        if (hits) p.relative_velocity = 0;
+        any |= hits;
+    }
+    if (!any) return false;
+
+    for (unsigned k = 0; k < iterations; ++k) {
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            auto vn = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
+            auto impulse = p.normal_mass * (target[i] - vn);
+            auto new_impulse = std::max(normal[i] + impulse, scalar(0));
+            apply_impulse(a, b, p.normal * (new_impulse - normal[i]), p.rA, p.rB);
+            normal[i] = new_impulse;
+        }
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            auto max_impulse = c.friction * normal[i];
+            for (int t = 0; t < 2; ++t) {
+                auto vt = dot(p.tangent[t], relative_velocity(a, b, p.rA, p.rB));
+                auto new_impulse = std::clamp(tangent[i][t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
+                apply_impulse(a, b, p.tangent[t] * (new_impulse - tangent[i][t]), p.rA, p.rB);
+                tangent[i][t] = new_impulse;
+            }
+        }
+    }
+
+    for (std::uint32_t i = 0; i < c.num_points; ++i) {
+        auto &p = c.points[i];
+        p.restitution_impulse += normal[i];
+        p.tangent_restitution_impulse[0] += tangent[i][0];
+        p.tangent_restitution_impulse[1] += tangent[i][1];
+    }
+    return true;
+}
+
+} // namespace
+
+unsigned solve_restitution(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies,
+                           const contact_solver_settings &settings, scalar h, unsigned iterations,
+                           unsigned individual_iterations) {
+    if (iterations == 0 || individual_iterations == 0) return 0;
+
+    unsigned passes = 0;
+    for (; passes < iterations; ++passes) {
+        bool any = false;
+        for (auto &c : contacts) {
+            if (c.restitution <= 0) continue;
+            any |= solve_restitution_individually(c, bodies[c.body[0]], bodies[c.body[1]],
+                                                  settings.restitution_threshold, h, individual_iterations);
+        }
+        if (!any) break;
+    }
+    return passes;
+}
+
+} // namespace edyn

@@ -1,0 +1,98 @@
+#include "edyn/shapes/validate_shape.hpp"
+#include "invalid_argument.hpp"
+#include <cmath>
+#include <string>
+
+namespace edyn {
+
+namespace {
+
+using detail::positive_finite;
+using detail::throw_invalid_argument;
+
+void check_positive(const char *shape, const char *field, scalar value) {
+    if (!positive_finite(value)) {
+        throw_invalid_argument(shape, ": ", field, " must be positive and finite, got ", value);
+    }
+}
+
+void check_axis(const char *shape, coordinate_axis axis) {
+    auto value = static_cast<unsigned>(axis);
+    if (value > static_cast<unsigned>(coordinate_axis::z)) {
+        throw_invalid_argument(shape, ": axis must be coordinate_axis::x, y or z, got ", value);
+    }
+}
+
+} // namespace
+
+void validate_shape(const plane_shape &shape) {
+    if (!isfinite(shape.normal)) {
+        throw_invalid_argument("plane_shape: normal must be finite, got ", shape.normal);
+    }
+    auto len_sqr = length_sqr(shape.normal);
+    if (!(std::abs(len_sqr - 1) <= scalar(1e-3))) {
+        throw_invalid_argument("plane_shape: normal must be a unit vector, got ", shape.normal, " of length ",
+                               std::sqrt(len_sqr));
+    }
+    if (!std::isfinite(shape.constant)) {
+        throw_invalid_argument("plane_shape: constant must be finite, got ", shape.constant);
+    }
+}
+
+void validate_shape(const sphere_shape &shape) { check_positive("sphere_shape", "radius", shape.radius); }
+
+void validate_shape(const box_shape &shape) {
+    check_positive("box_shape", "half_extents.x", shape.half_extents.x);
+    check_positive("box_shape", "half_extents.y", shape.half_extents.y);
+    check_positive("box_shape", "half_extents.z", shape.half_extents.z);
+}
+
+void validate_shape(const cylinder_shape &shape) {
+    check_positive("cylinder_shape", "radius", shape.radius);
+    check_positive("cylinder_shape", "half_length", shape.half_length);
+    check_axis("cylinder_shape", shape.axis);
+}
+
+void validate_shape(const capsule_shape &shape) {
+    check_positive("capsule_shape", "radius", shape.radius);
+    check_positive("capsule_shape", "half_length", shape.half_length);
+    check_axis("capsule_shape", shape.axis);
+}
+
+void validate_shape(const polyhedron_shape &shape) {
+    if (!shape.mesh) {
+        throw_invalid_argument("polyhedron_shape: mesh is null (default-constructed shape)");
+    }
+    validate_convex_mesh(*shape.mesh);
+}
+
+void validate_shape(const compound_child_shape_t &shape) {
+    std::visit([](const auto &s) { validate_shape(s); }, shape);
+}
+
+void validate_shape(const compound_shape &shape) {
+    if (shape.children.empty()) {
+        throw_invalid_argument("compound_shape: children is empty; add shapes with add_shape()");
+    }
+    if (!shape.finished) {
+        throw_invalid_argument("compound_shape: finish() was not called after the last add_shape()");
+    }
+    for (std::size_t i = 0; i < shape.children.size(); ++i) {
+        const auto &child = shape.children[i];
+        try {
+            validate_shape(child.shape);
+        } catch (const std::invalid_argument &e) {
+            throw_invalid_argument("compound_shape: children[", i, "].shape: ", e.what());
+        }
+        if (!isfinite(child.position)) {
+            throw_invalid_argument("compound_shape: children[", i, "].position must be finite, got ",
+                                   child.position);
+        }
+        if (!isfinite(child.orientation) || !is_unit(child.orientation)) {
+            throw_invalid_argument("compound_shape: children[", i,
+                                   "].orientation must be a unit quaternion, got ", child.orientation);
+        }
+    }
+}
+
+} // namespace edyn

@@ -1,0 +1,248 @@
+#include "edyn/simulation/island_manager.hpp"
+#include <algorithm>
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/simulation/settings.hpp"
+
+namespace edyn {
+
+namespace {
+
+bool is_node(const registry &registry, entity e) {
+    return registry.valid(e) && registry.all_of<island_resident, dynamic_tag>(e);
+}
+
+// Appends `e` to `list` and records where, on its island_resident.
+void push_resident(registry &registry, std::vector<entity> &list, entity e, entity island_entity) {
+    registry.emplace_or_replace<island_resident>(e, island_entity, std::uint32_t(list.size()));
+    list.push_back(e);
+}
+
+// Removes `e` from `list` by moving the last element into its place.
+void erase_resident(registry &registry, std::vector<entity> &list, entity e) {
+    auto index = registry.get<island_resident>(e).index;
+    EDYN_ASSERT(index < list.size() && list[index] == e);
+    auto last = list.back();
+    list[index] = last;
+    registry.get<island_resident>(last).index = index;
+    list.pop_back();
+}
+
+} // namespace
+
+entity island_manager::create_island(registry &registry) {
+    auto e = registry.create();
+    registry.emplace<island>(e);
+    return e;
+}
+
+void island_manager::destroy_island(registry &registry, entity island_entity) {
+    registry.destroy(island_entity);
+}
+
+void island_manager::add_node(registry &registry, entity node) {
+    EDYN_ASSERT(!registry.all_of<island_resident>(node));
+    auto island_entity = create_island(registry);
+    push_resident(registry, registry.get<island>(island_entity).nodes, node, island_entity);
+    registry.emplace_or_replace<sleep_timer>(node);
+}
+
+void island_manager::remove_node(registry &registry, entity node) {
+    auto *resident = registry.try_get<island_resident>(node);
+    if (!resident) return;
+    auto island_entity = resident->island_entity;
+    wake_island(registry, island_entity);
+    auto &isle = registry.get<island>(island_entity);
+    erase_resident(registry, isle.nodes, node);
+    registry.remove<island_resident, sleep_timer>(node);
+
+    // Edges of this node now join at most one island node; the split decides where they go.
+    isle.may_split = true;
+    if (isle.nodes.empty()) {
+        for (auto edge : isle.edges) registry.remove<island_resident, island_edge>(edge);
+        destroy_island(registry, island_entity);
+    }
+}
+
+void island_manager::link_edge(registry &registry, entity edge, entity body0, entity body1) {
+    if (registry.all_of<island_resident>(edge)) return;
+    bool node0 = is_node(registry, body0);
+    bool node1 = is_node(registry, body1);
+    if (!node0 && !node1) return;
+
+    auto island0 = node0 ? registry.get<island_resident>(body0).island_entity : null;
+    auto island1 = node1 ? registry.get<island_resident>(body1).island_entity : null;
+    auto target = node0 ? island0 : island1;
+    if (node0) wake_island(registry, island0);
+    if (node1) wake_island(registry, island1);
+
+    if (node0 && node1 && island0 != island1) {
+        // Merge the smaller island into the larger: the fewest residents change.
+        auto size0 = registry.get<island>(island0).nodes.size() + registry.get<island>(island0).edges.size();
+        auto size1 = registry.get<island>(island1).nodes.size() + registry.get<island>(island1).edges.size();
+        if (size0 >= size1) {
+            merge(registry, island0, island1);
+            target = island0;
+        } else {
+            merge(registry, island1, island0);
+            target = island1;
+        }
+    }
+
+    registry.emplace_or_replace<island_edge>(edge, island_edge{{body0, body1}});
+    push_resident(registry, registry.get<island>(target).edges, edge, target);
+}
+
+void island_manager::unlink_edge(registry &registry, entity edge) {
+    auto *resident = registry.try_get<island_resident>(edge);
+    if (!resident) return;
+    auto island_entity = resident->island_entity;
+    auto &isle = registry.get<island>(island_entity);
+    erase_resident(registry, isle.edges, edge);
+    registry.remove<island_resident, island_edge>(edge);
+    isle.may_split = true;
+}
+
+void island_manager::merge(registry &registry, entity into, entity from) {
+    auto &target = registry.get<island>(into);
+    auto &source = registry.get<island>(from);
+    for (auto node : source.nodes) push_resident(registry, target.nodes, node, into);
+    for (auto edge : source.edges) push_resident(registry, target.edges, edge, into);
+    target.may_split |= source.may_split;
+    source.nodes.clear();
+    source.edges.clear();
+    destroy_island(registry, from);
+}
+
+void island_manager::wake_island(registry &registry, entity island_entity) {
+    if (!registry.all_of<sleeping_tag>(island_entity)) return;
+    auto &isle = registry.get<island>(island_entity);
+    registry.remove<sleeping_tag>(island_entity);
+    for (auto node : isle.nodes) {
+        registry.remove<sleeping_tag>(node);
+        registry.get<sleep_timer>(node).time = 0;
+    }
+    for (auto edge : isle.edges) registry.remove<sleeping_tag>(edge);
+}
+
+void island_manager::wake_entity(registry &registry, entity e) {
+    if (!registry.valid(e)) return;
+    if (auto *resident = registry.try_get<island_resident>(e)) {
+        wake_island(registry, resident->island_entity);
+    } else if (auto *timer = registry.try_get<sleep_timer>(e)) {
+        timer->time = 0;
+    }
+}
+
+void island_manager::put_to_sleep(registry &registry, entity island_entity) {
+    auto &isle = registry.get<island>(island_entity);
+    registry.emplace_or_replace<sleeping_tag>(island_entity);
+    for (auto node : isle.nodes) {
+        registry.emplace_or_replace<sleeping_tag>(node);
+        // A sleeping body is at rest: what is left of its motion would make it pop on waking.
+        registry.get<linvel>(node) = vector3_zero;
+        registry.get<angvel>(node) = vector3_zero;
+    }
+    for (auto edge : isle.edges) registry.emplace_or_replace<sleeping_tag>(edge);
+}
+
+void island_manager::split(registry &registry, entity island_entity) {
+    auto &isle = registry.get<island>(island_entity);
+    isle.may_split = false;
+    auto nodes = std::move(isle.nodes);
+    auto edges = std::move(isle.edges);
+    isle.nodes.clear();
+    isle.edges.clear();
+
+    // Union-find over the island's nodes, indexed through their entity index.
+    std::size_t max_index = 0;
+    for (auto node : nodes) max_index = std::max<std::size_t>(max_index, to_index(node));
+    if (local_index.size() <= max_index) local_index.resize(max_index + 1);
+    parent.resize(nodes.size());
+    for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+        local_index[to_index(nodes[i])] = i;
+        parent[i] = i;
+    }
+    auto find = [&](std::uint32_t i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    auto node_of = [&](entity body) -> std::int64_t {
+        if (!registry.valid(body) || !registry.all_of<island_resident, dynamic_tag>(body)) return -1;
+        auto &res = registry.get<island_resident>(body);
+        if (res.island_entity != island_entity) return -1;
+        return local_index[to_index(body)];
+    };
+    for (auto edge : edges) {
+        auto &ends = registry.get<island_edge>(edge);
+        auto a = node_of(ends.body[0]), b = node_of(ends.body[1]);
+        if (a >= 0 && b >= 0) parent[find(std::uint32_t(a))] = find(std::uint32_t(b));
+    }
+
+    // The component of the first node keeps the island entity; others get new islands, in the
+    // order their first node appears, so that the result does not depend on entity values.
+    std::vector<entity> island_of(nodes.size(), null);
+    for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+        auto root = find(i);
+        if (island_of[root] == null) island_of[root] = i == 0 ? island_entity : create_island(registry);
+        auto target = island_of[root];
+        push_resident(registry, registry.get<island>(target).nodes, nodes[i], target);
+    }
+    for (auto edge : edges) {
+        auto &ends = registry.get<island_edge>(edge);
+        auto a = node_of(ends.body[0]);
+        auto b = a >= 0 ? a : node_of(ends.body[1]);
+        if (b < 0) {
+            registry.remove<island_resident, island_edge>(edge);
+            continue;
+        }
+        auto target = island_of[find(std::uint32_t(b))];
+        push_resident(registry, registry.get<island>(target).edges, edge, target);
+    }
+    if (nodes.empty()) destroy_island(registry, island_entity);
+}
+
+void island_manager::update_sleeping(registry &registry, const settings &settings, scalar dt) {
+    auto lin_sqr = settings.sleep_linear_velocity * settings.sleep_linear_velocity;
+    auto ang_sqr = settings.sleep_angular_velocity * settings.sleep_angular_velocity;
+    registry.view<sleep_timer, linvel, angvel>(exclude<sleeping_tag>)
+        .each([&](sleep_timer &timer, const linvel &v, const angvel &w) {
+            if (length_sqr(v) > lin_sqr || length_sqr(w) > ang_sqr) {
+                timer.time = 0;
+            } else {
+                timer.time += dt;
+            }
+        });
+
+    // A copy, since splitting creates islands.
+    candidates.clear();
+    for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) candidates.push_back(island_entity);
+    for (auto island_entity : candidates) {
+        if (!registry.valid(island_entity) || registry.all_of<sleeping_tag>(island_entity)) continue;
+        auto &isle = registry.get<island>(island_entity);
+        bool can_sleep = !isle.nodes.empty();
+        for (auto node : isle.nodes) {
+            if (registry.get<sleep_timer>(node).time < settings.time_to_sleep ||
+                registry.all_of<sleeping_disabled_tag>(node)) {
+                can_sleep = false;
+                break;
+            }
+        }
+        if (!can_sleep) continue;
+        if (isle.may_split) {
+            // The pieces are checked again next step, each on its own.
+            split(registry, island_entity);
+            continue;
+        }
+        put_to_sleep(registry, island_entity);
+    }
+}
+
+void island_manager::clear(registry &registry) {
+    candidates.clear();
+    for (auto island_entity : registry.view<island>()) candidates.push_back(island_entity);
+    for (auto island_entity : candidates) registry.destroy(island_entity);
+    registry.clear<island_resident, island_edge, sleep_timer>();
+}
+
+} // namespace edyn

@@ -1,0 +1,119 @@
+#include "edyn/simulation/narrowphase.hpp"
+#include "edyn/collision/collide.hpp"
+#include "edyn/collision/manifold_update.hpp"
+#include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/settings.hpp"
+
+namespace edyn {
+
+namespace {
+
+// Records a manifold's events in the order documented in contact_events.hpp.
+void record_events(contact_events &events, entity manifold, const contact_point_changes &changes) {
+    using kind = contact_events::kind;
+    if (changes.contact_started()) events.pending.push_back({kind::started, manifold, 0});
+    for (std::uint32_t i = 0; i < changes.num_created; ++i) {
+        events.pending.push_back({kind::point_created, manifold, changes.created[i]});
+    }
+    for (std::uint32_t i = 0; i < changes.num_destroyed; ++i) {
+        events.pending.push_back({kind::point_destroyed, manifold, changes.destroyed[i]});
+    }
+    if (changes.contact_ended()) events.pending.push_back({kind::ended, manifold, 0});
+}
+
+// Mixed material values are stored on new points for the program to read; the solver mixes
+// again every step so that material changes apply at once.
+void fill_materials(const registry &registry, contact_manifold &manifold, const contact_point_changes &changes) {
+    auto *matA = registry.try_get<material>(manifold.body[0]);
+    auto *matB = registry.try_get<material>(manifold.body[1]);
+    if (!matA || !matB || changes.num_created == 0) return;
+    auto mixed = get_mixed_material(registry, *matA, *matB);
+    for (std::uint32_t i = 0; i < changes.num_created; ++i) {
+        auto &cp = manifold.point[changes.created[i]];
+        cp.friction = mixed.friction;
+        cp.restitution = mixed.restitution;
+        cp.roll_friction = mixed.roll_friction;
+        cp.spin_friction = mixed.spin_friction;
+        cp.stiffness = mixed.stiffness;
+        cp.damping = mixed.damping;
+    }
+}
+
+bool is_resting(const registry &registry, entity body) {
+    return registry.any_of<static_tag, sleeping_tag>(body);
+}
+
+// Upper bound of how fast any two points of the bodies approach each other.
+scalar approach_speed(const registry &registry, entity a, entity b) {
+    auto motion = [&](entity e, vector3 &v) {
+        auto *lv = registry.try_get<linvel>(e);
+        auto *av = registry.try_get<angvel>(e);
+        auto *aabb = registry.try_get<AABB>(e);
+        if (!lv || !av) return scalar(0);
+        v = *lv;
+        return aabb ? length(*av) * length(aabb_half_extents(*aabb)) : scalar(0);
+    };
+    vector3 vA = vector3_zero, vB = vector3_zero;
+    auto spinA = motion(a, vA), spinB = motion(b, vB);
+    return length(vA - vB) + spinA + spinB;
+}
+
+} // namespace
+
+void run_narrowphase(registry &registry, world_state &world) {
+    auto &events = registry.ctx().emplace<contact_events>();
+    bool record = events.has_listeners();
+
+    world.manifolds.clear();
+    for (auto e : registry.view<contact_manifold>(exclude<sleeping_tag>)) world.manifolds.push_back(e);
+    // The view yields the newest manifold first; solving in creation order is the natural and
+    // reproducible order.
+    std::reverse(world.manifolds.begin(), world.manifolds.end());
+
+    auto dt = registry.ctx().get<settings>().fixed_dt;
+    collision_result result;
+    for (auto manifold_entity : world.manifolds) {
+        auto &manifold = registry.get<contact_manifold>(manifold_entity);
+        auto a = manifold.body[0], b = manifold.body[1];
+        // Only pairs with a dynamic body interact, and two resting bodies stay as they are.
+        if (!registry.any_of<dynamic_tag>(a) && !registry.any_of<dynamic_tag>(b)) continue;
+        if (is_resting(registry, a) && is_resting(registry, b)) continue;
+        if (!registry.all_of<shape_index>(a) || !registry.all_of<shape_index>(b)) continue;
+
+        auto &ornA = registry.get<orientation>(a);
+        auto &ornB = registry.get<orientation>(b);
+        manifold_transforms tf{get_rigidbody_origin(registry, a), ornA, get_rigidbody_origin(registry, b), ornB};
+        // Points are looked for as far as the bodies can travel towards each other in a step,
+        // so that the solver can stop them at the surface instead of inside it.
+        manifold.separation_threshold = contact_breaking_threshold + approach_speed(registry, a, b) * dt;
+        collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
+        result.num_points = 0;
+        visit_shape(registry, a, [&](const auto &shapeA) {
+            visit_shape(registry, b, [&](const auto &shapeB) {
+                using A = std::decay_t<decltype(shapeA)>;
+                using B = std::decay_t<decltype(shapeB)>;
+                if constexpr (!(std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>)) {
+                    collide(shapeA, shapeB, ctx, result);
+                }
+            });
+        });
+
+        auto changes = update_contact_manifold(manifold, tf, result);
+        fill_materials(registry, manifold, changes);
+        if (record) record_events(events, manifold_entity, changes);
+
+        if (changes.contact_started()) {
+            world.islands.link_edge(registry, manifold_entity, a, b);
+        } else if (changes.contact_ended()) {
+            world.islands.unlink_edge(registry, manifold_entity);
+        }
+    }
+}
+
+} // namespace edyn

@@ -1,0 +1,188 @@
+#include "edyn/simulation/registry_listeners.hpp"
+#include "edyn/collision/collision_filter.hpp"
+#include "edyn/collision/contact_manifold.hpp"
+#include "edyn/dynamics/mass.hpp"
+#include "edyn/dynamics/material.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/shape_index.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/shapes/aabb.hpp"
+#include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/interpolation.hpp"
+#include "edyn/simulation/island.hpp"
+#include "edyn/simulation/world_state.hpp"
+
+namespace edyn {
+
+namespace {
+
+world_state &world(registry &registry) { return registry.ctx().get<world_state>(); }
+
+void on_construct_rigidbody(registry &registry, entity e) {
+    if (!registry.all_of<static_tag>(e)) registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e), registry.get<orientation>(e));
+    if (registry.all_of<dynamic_tag>(e)) world(registry).islands.add_node(registry, e);
+}
+
+void on_destroy_rigidbody(registry &registry, entity e) {
+    world(registry).islands.remove_node(registry, e);
+    registry.remove<previous_transform>(e);
+}
+
+void on_construct_dynamic(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<island_resident>(e)) {
+        world(registry).islands.add_node(registry, e);
+    }
+}
+
+void on_destroy_dynamic(registry &registry, entity e) { world(registry).islands.remove_node(registry, e); }
+
+void on_construct_static(registry &registry, entity e) { registry.remove<previous_transform>(e); }
+
+void on_destroy_static(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag, position, orientation>(e)) {
+        registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e), registry.get<orientation>(e));
+    }
+}
+
+void on_construct_aabb(registry &registry, entity e) {
+    world(registry).broadphase.insert(e, registry.get<AABB>(e), registry.all_of<static_tag>(e));
+}
+
+void on_destroy_aabb(registry &registry, entity e) {
+    auto &bp = world(registry).broadphase;
+    if (bp.contains(e)) bp.remove(registry, e);
+}
+
+void on_destroy_manifold(registry &registry, entity e) {
+    auto &w = world(registry);
+    w.islands.unlink_edge(registry, e);
+    auto &manifold = registry.get<contact_manifold>(e);
+    if (manifold.num_points == 0) return;
+    // Contact is lost with the manifold: say so while the entity still exists.
+    auto &events = registry.ctx().get<contact_events>();
+    using kind = contact_events::kind;
+    for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
+        events.publish({kind::point_destroyed, e, manifold.ids[i]});
+    }
+    events.publish({kind::ended, e, 0});
+}
+
+// The program moved a body: refresh what depends on its transform and wake it.
+void on_update_transform(registry &registry, entity e) {
+    if (!registry.all_of<rigidbody_tag>(e)) return;
+    auto &w = world(registry);
+    if (registry.all_of<dynamic_tag>(e)) update_inertia_world(registry, e);
+    if (registry.all_of<AABB>(e)) {
+        update_rigidbody_aabb(registry, e);
+        if (registry.all_of<static_tag>(e) && w.broadphase.contains(e)) {
+            // Static proxies are never moved by the broadphase: put it back where it is now.
+            w.broadphase.remove(registry, e);
+            w.broadphase.insert(e, registry.get<AABB>(e), true);
+        }
+    }
+    if (auto *prev = registry.try_get<previous_transform>(e)) {
+        // A teleport is not interpolated.
+        *prev = {registry.get<position>(e), registry.get<orientation>(e)};
+    }
+    w.islands.wake_entity(registry, e);
+}
+
+void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
+
+void on_change_filter(registry &registry, entity e) {
+    auto &bp = world(registry).broadphase;
+    if (bp.contains(e)) bp.refilter(registry, e);
+}
+
+template<typename... Components>
+struct component_list {};
+
+// Every component edyn puts on the program's entities.
+using edyn_components = component_list<
+    rigidbody_tag, dynamic_tag, static_tag, kinematic_tag, sleeping_tag, sleeping_disabled_tag, sensor_tag,
+    position, orientation, present_position, present_orientation, linvel, angvel, gravity, mass, mass_inv,
+    inertia, inertia_inv, inertia_world_inv, center_of_mass, rigidbody_dynamic_mass, material, shape_index, AABB,
+    collision_filter, collision_exclusion, previous_transform, island_resident, island_edge, sleep_timer,
+    plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
+
+template<typename... Components>
+void clear_all(registry &registry, component_list<Components...>) {
+    (registry.clear<Components>(), ...);
+}
+
+template<auto Fn, typename... Components>
+void connect_update(registry &registry, component_list<Components...>) {
+    (registry.on_update<Components>().template connect<Fn>(), ...);
+}
+
+template<auto Fn, typename... Components>
+void disconnect_update(registry &registry, component_list<Components...>) {
+    (registry.on_update<Components>().template disconnect<Fn>(), ...);
+}
+
+// Changes that must wake a sleeping body (besides its transform).
+using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
+                                          plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
+                                          polyhedron_shape, compound_shape>;
+
+} // namespace
+
+void connect_registry_listeners(registry &registry) {
+    registry.on_construct<rigidbody_tag>().connect<&on_construct_rigidbody>();
+    registry.on_destroy<rigidbody_tag>().connect<&on_destroy_rigidbody>();
+    registry.on_construct<dynamic_tag>().connect<&on_construct_dynamic>();
+    registry.on_destroy<dynamic_tag>().connect<&on_destroy_dynamic>();
+    registry.on_construct<static_tag>().connect<&on_construct_static>();
+    registry.on_destroy<static_tag>().connect<&on_destroy_static>();
+    registry.on_construct<AABB>().connect<&on_construct_aabb>();
+    registry.on_destroy<AABB>().connect<&on_destroy_aabb>();
+    registry.on_destroy<contact_manifold>().connect<&on_destroy_manifold>();
+    registry.on_update<position>().connect<&on_update_transform>();
+    registry.on_update<orientation>().connect<&on_update_transform>();
+    connect_update<&on_update_wake>(registry, waking_components{});
+    registry.on_update<collision_filter>().connect<&on_change_filter>();
+    registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
+    registry.on_update<collision_exclusion>().connect<&on_change_filter>();
+}
+
+void disconnect_registry_listeners(registry &registry) {
+    registry.on_construct<rigidbody_tag>().disconnect<&on_construct_rigidbody>();
+    registry.on_destroy<rigidbody_tag>().disconnect<&on_destroy_rigidbody>();
+    registry.on_construct<dynamic_tag>().disconnect<&on_construct_dynamic>();
+    registry.on_destroy<dynamic_tag>().disconnect<&on_destroy_dynamic>();
+    registry.on_construct<static_tag>().disconnect<&on_construct_static>();
+    registry.on_destroy<static_tag>().disconnect<&on_destroy_static>();
+    registry.on_construct<AABB>().disconnect<&on_construct_aabb>();
+    registry.on_destroy<AABB>().disconnect<&on_destroy_aabb>();
+    registry.on_destroy<contact_manifold>().disconnect<&on_destroy_manifold>();
+    registry.on_update<position>().disconnect<&on_update_transform>();
+    registry.on_update<orientation>().disconnect<&on_update_transform>();
+    disconnect_update<&on_update_wake>(registry, waking_components{});
+    registry.on_update<collision_filter>().disconnect<&on_change_filter>();
+    registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
+    registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();
+}
+
+void adopt_existing_bodies(registry &registry) {
+    std::vector<entity> bodies;
+    for (auto e : registry.view<rigidbody_tag>()) bodies.push_back(e);
+    // Oldest first, as if they had been made after attach().
+    std::reverse(bodies.begin(), bodies.end());
+    for (auto e : bodies) {
+        on_construct_rigidbody(registry, e);
+        if (registry.all_of<AABB>(e)) on_construct_aabb(registry, e);
+    }
+}
+
+void remove_edyn_components(registry &registry) {
+    std::vector<entity> internal;
+    for (auto e : registry.view<contact_manifold>()) internal.push_back(e);
+    for (auto e : registry.view<island>()) internal.push_back(e);
+    for (auto e : internal) registry.destroy(e);
+    clear_all(registry, edyn_components{});
+}
+
+} // namespace edyn

@@ -1,0 +1,203 @@
+#include "edyn/simulation/solve_step.hpp"
+#include "edyn/collision/contact_manifold.hpp"
+#include "edyn/dynamics/integration.hpp"
+#include "edyn/dynamics/mass.hpp"
+#include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
+#include "edyn/math/transform.hpp"
+#include "edyn/shapes/shape_aabb.hpp"
+#include "edyn/simulation/island.hpp"
+
+namespace edyn {
+
+namespace {
+
+std::uint32_t body_index_of(const world_state &world, entity e) {
+    auto i = to_index(e);
+    return i < world.body_index.size() ? world.body_index[i] : 0;
+}
+
+// Axes about which a contact resists rolling: both tangents for spheres and capsules, only the
+// main axis for cylinders, none for shapes that do not roll.
+std::uint32_t roll_axes(const registry &registry, entity body, const vector3 &normal, vector3 (&axes)[2]) {
+    if (!registry.all_of<shape_index>(body)) return 0;
+    return visit_shape(registry, body, [&](const auto &shape) -> std::uint32_t {
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, sphere_shape> || std::is_same_v<S, capsule_shape>) {
+            plane_space(normal, axes[0], axes[1]);
+            return 2;
+        } else if constexpr (std::is_same_v<S, cylinder_shape>) {
+            auto axis = project_plane(coordinate_axis_vector(shape.axis, registry.get<orientation>(body)), normal);
+            if (!try_normalize(axis)) return 0;
+            axes[0] = axis;
+            return 1;
+        } else {
+            return 0;
+        }
+    });
+}
+
+} // namespace
+
+void gather_bodies(registry &registry, world_state &world, const settings &settings) {
+    world.bodies.clear();
+    world.body_entities.clear();
+    world.bodies.emplace_back();
+    world.body_entities.push_back(null);
+
+    auto view = registry.view<rigidbody_tag, linvel, angvel, mass_inv, inertia_world_inv>(exclude<sleeping_tag, static_tag>);
+    for (auto e : view) {
+        auto index = to_index(e);
+        if (world.body_index.size() <= index) world.body_index.resize(index + 1, 0);
+        world.body_index[index] = std::uint32_t(world.bodies.size());
+        world.body_entities.push_back(e);
+
+        solver_body body;
+        body.linvel = view.get<linvel>(e);
+        body.angvel = view.get<angvel>(e);
+        body.inv_mass = view.get<mass_inv>(e).s;
+        body.inv_inertia = view.get<inertia_world_inv>(e);
+        if (registry.all_of<dynamic_tag>(e)) {
+            auto *g = registry.try_get<gravity>(e);
+            body.acceleration = g ? static_cast<vector3>(*g) : settings.gravity;
+        }
+        world.bodies.push_back(body);
+    }
+}
+
+void gather_contacts(registry &registry, world_state &world) {
+    world.contacts.clear();
+    world.contact_manifolds.clear();
+
+    for (auto manifold_entity : world.manifolds) {
+        auto &manifold = registry.get<contact_manifold>(manifold_entity);
+        if (manifold.num_points == 0) continue;
+        auto a = manifold.body[0], b = manifold.body[1];
+        auto *matA = registry.try_get<material>(a);
+        auto *matB = registry.try_get<material>(b);
+        if (!matA || !matB) continue; // a sensor
+        auto ia = body_index_of(world, a), ib = body_index_of(world, b);
+        if (ia == 0 && ib == 0) continue;
+
+        // Bodies resting against a moving kinematic body must not fall asleep.
+        for (auto [body, other] : {std::pair{a, b}, std::pair{b, a}}) {
+            if (registry.all_of<kinematic_tag>(other) &&
+                (registry.get<linvel>(other) != vector3_zero || registry.get<angvel>(other) != vector3_zero)) {
+                world.islands.wake_entity(registry, body);
+            }
+        }
+
+        auto mixed = get_mixed_material(registry, *matA, *matB);
+        auto originA = get_rigidbody_origin(registry, a), originB = get_rigidbody_origin(registry, b);
+        auto &ornA = registry.get<orientation>(a), &ornB = registry.get<orientation>(b);
+        auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
+
+        contact_solver_constraint c;
+        c.body[0] = ia;
+        c.body[1] = ib;
+        c.friction = mixed.friction;
+        c.restitution = mixed.restitution;
+        c.roll_friction = mixed.roll_friction;
+        c.spin_friction = mixed.spin_friction;
+        c.num_points = manifold.num_points;
+        c.normal = manifold.point[manifold.ids[0]].normal;
+        c.source = std::uint32_t(world.contact_manifolds.size());
+
+        scalar spin_impulse = 0;
+        std::array<scalar, 2> roll_impulse{0, 0};
+        for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
+            auto &cp = manifold.point[manifold.ids[i]];
+            auto &p = c.points[i];
+            p.rA = to_world_space(cp.pivotA, originA, ornA) - posA;
+            p.rB = to_world_space(cp.pivotB, originB, ornB) - posB;
+            p.normal = cp.normal;
+            p.adjusted_separation = cp.distance - dot(cp.normal, p.rA - p.rB);
+            p.normal_impulse = cp.normal_impulse;
+            p.tangent_impulse[0] = cp.friction_impulse[0];
+            p.tangent_impulse[1] = cp.friction_impulse[1];
+            spin_impulse += cp.spin_friction_impulse;
+            roll_impulse[0] += cp.roll_friction_impulse[0];
+            roll_impulse[1] += cp.roll_friction_impulse[1];
+        }
+        c.spin_impulse = spin_impulse;
+        if (c.roll_friction > 0) {
+            c.num_roll_axes = roll_axes(registry, a, c.normal, c.roll_axis);
+            if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(registry, b, c.normal, c.roll_axis);
+            c.roll_impulse[0] = roll_impulse[0];
+            c.roll_impulse[1] = roll_impulse[1];
+        }
+        world.contacts.push_back(c);
+        world.contact_manifolds.push_back(manifold_entity);
+    }
+}
+
+void solve_constraints(world_state &world, const settings &settings) {
+    auto dt = settings.fixed_dt;
+    auto substeps = std::max(settings.num_substeps, 1u);
+    auto h = dt / scalar(substeps);
+    std::span<solver_body> bodies(world.bodies);
+    std::span<contact_solver_constraint> contacts(world.contacts);
+
+    prepare_contacts(contacts, bodies);
+
+    for (unsigned i = 0; i < substeps; ++i) {
+        integrate_velocities(bodies, h);
+        solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
+                          settings.num_individual_restitution_iterations);
+        warm_start_contacts(contacts, bodies);
+        solve_contacts(contacts, bodies, h, settings.contact, true);
+        integrate_positions(bodies, h);
+        for (unsigned k = 0; k < settings.num_relax_iterations; ++k) {
+            solve_contacts(contacts, bodies, h, settings.contact, false);
+        }
+    }
+}
+
+void write_back(registry &registry, world_state &world, scalar dt) {
+    for (std::size_t i = 1; i < world.bodies.size(); ++i) {
+        auto e = world.body_entities[i];
+        auto &body = world.bodies[i];
+        auto &pos = registry.get<position>(e);
+        auto &orn = registry.get<orientation>(e);
+        pos += body.delta_position;
+        orn = normalize(body.delta_rotation * orn);
+        registry.get<linvel>(e) = body.linvel;
+        registry.get<angvel>(e) = body.angvel;
+
+        if (registry.all_of<dynamic_tag>(e)) {
+            auto r = to_matrix3x3(orn);
+            registry.get<inertia_world_inv>(e) = r * registry.get<inertia_inv>(e) * transpose(r);
+        }
+        if (auto *aabb = registry.try_get<AABB>(e)) {
+            auto origin = get_rigidbody_origin(registry, e);
+            *aabb = visit_shape(registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
+            // Swept over the next step's motion, so that pairs are found before they touch.
+            auto sweep = body.linvel * dt;
+            aabb->min += min(sweep, vector3_zero);
+            aabb->max += max(sweep, vector3_zero);
+        }
+        world.body_index[to_index(e)] = 0;
+    }
+
+    for (auto &c : world.contacts) {
+        auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[c.source]);
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            auto &cp = manifold.point[manifold.ids[i]];
+            cp.normal_impulse = p.normal_impulse;
+            cp.friction_impulse = {p.tangent_impulse[0], p.tangent_impulse[1]};
+            cp.normal_restitution_impulse = p.restitution_impulse;
+            cp.friction_restitution_impulse = {p.tangent_restitution_impulse[0], p.tangent_restitution_impulse[1]};
+            // Torsional and rolling impulses are shared evenly by the points for reporting.
+            cp.spin_friction_impulse = c.spin_impulse / scalar(c.num_points);
+            cp.roll_friction_impulse = {c.roll_impulse[0] / scalar(c.num_points), c.roll_impulse[1] / scalar(c.num_points)};
+        }
+    }
+}
+
+} // namespace edyn

@@ -1,0 +1,40 @@
+#include "edyn/simulation/step.hpp"
+#include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/narrowphase.hpp"
+#include "edyn/simulation/solve_step.hpp"
+#include "edyn/simulation/world.hpp"
+#include "edyn/simulation/world_state.hpp"
+
+namespace edyn {
+
+// The spine of the engine: one fixed step, in the manual's order.
+void run_step(registry &registry) {
+    auto &world = registry.ctx().get<world_state>();
+    // A copy: callbacks may change the settings, which then apply from the next step.
+    auto settings = get_settings(registry);
+
+    if (settings.pre_step_callback) settings.pre_step_callback(registry);
+
+    // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones.
+    world.broadphase.update(registry);
+    // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.
+    run_narrowphase(registry, world);
+    // 3. External forces: gravity becomes each body's acceleration for the sub-steps.
+    gather_bodies(registry, world, settings);
+    gather_contacts(registry, world);
+    // 4. Restitution solver, then the constraint solver's sub-steps, which apply the impulses
+    //    (5) and integrate velocities into positions and orientations (6).
+    solve_constraints(world, settings);
+    write_back(registry, world, settings.fixed_dt);
+    // Islands that came to rest go to sleep.
+    world.islands.update_sleeping(registry, settings, settings.fixed_dt);
+
+    world.simulation_time += settings.fixed_dt;
+    ++world.step_count;
+    // Collision events, with this step's impulses.
+    registry.ctx().emplace<contact_events>().deliver(registry);
+
+    if (settings.post_step_callback) settings.post_step_callback(registry);
+}
+
+} // namespace edyn

@@ -1,0 +1,181 @@
+#include "edyn/simulation/world.hpp"
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include "edyn/collision/collision_filter.hpp"
+#include "edyn/collision/contact_manifold.hpp"
+#include "edyn/collision/should_collide.hpp"
+#include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/interpolation.hpp"
+#include "edyn/simulation/registry_listeners.hpp"
+#include "edyn/simulation/step.hpp"
+#include "edyn/simulation/world_state.hpp"
+
+namespace edyn {
+
+namespace {
+
+world_state &world(registry &registry) {
+    auto *w = registry.ctx().find<world_state>();
+    if (!w) throw std::invalid_argument("edyn: the registry is not attached (call edyn::attach first)");
+    return *w;
+}
+
+settings &mutable_settings(registry &registry) {
+    world(registry);
+    return registry.ctx().get<settings>();
+}
+
+[[noreturn]] void invalid(const char *function, const std::string &what) {
+    throw std::invalid_argument(std::string(function) + ": " + what);
+}
+
+} // namespace
+
+bool is_attached(const registry &registry) noexcept { return registry.ctx().contains<world_state>(); }
+
+void attach(registry &registry, const init_config &config) {
+    if (is_attached(registry)) invalid("attach", "the registry is already attached");
+    if (config.execution_mode != execution_mode::sequential) {
+        invalid("attach", "execution_mode " +
+                              std::string(config.execution_mode == execution_mode::asynchronous ? "asynchronous"
+                                                                                              : "sequential_multithreaded") +
+                              " is not available yet; use execution_mode::sequential");
+    }
+    auto &s = registry.ctx().emplace<settings>();
+    s.execution_mode = config.execution_mode;
+    registry.ctx().emplace<world_state>();
+    registry.ctx().emplace<contact_events>();
+    connect_registry_listeners(registry);
+    adopt_existing_bodies(registry);
+}
+
+void detach(registry &registry) {
+    if (!is_attached(registry)) return;
+    disconnect_registry_listeners(registry);
+    remove_edyn_components(registry);
+    registry.ctx().erase<world_state>();
+    registry.ctx().erase<settings>();
+    registry.ctx().erase<contact_events>();
+    registry.ctx().erase<material_mix_table>();
+    set_should_collide(registry, &should_collide_default);
+}
+
+void step_simulation(registry &registry) {
+    world(registry);
+    save_previous_transforms(registry);
+    run_step(registry);
+    interpolate_present_transforms(registry, 1);
+}
+
+void update(registry &registry, double time) {
+    if (!std::isfinite(time)) invalid("update", "time must be finite, got " + std::to_string(time));
+    auto &w = world(registry);
+    if (!w.started) {
+        w.started = true;
+        w.last_time = time;
+        interpolate_present_transforms(registry, 1);
+        return;
+    }
+    auto elapsed = std::max(time - w.last_time, 0.0);
+    w.last_time = time;
+    if (w.paused) {
+        interpolate_present_transforms(registry, 1);
+        return;
+    }
+
+    auto &s = registry.ctx().get<settings>();
+    double dt = s.fixed_dt;
+    w.accumulator += elapsed;
+    auto steps = static_cast<std::uint64_t>(std::floor(w.accumulator / dt));
+    if (steps > s.max_steps_per_update) {
+        // Drop the time that cannot be caught up with.
+        w.accumulator = std::fmod(w.accumulator, dt) + dt * s.max_steps_per_update;
+        steps = s.max_steps_per_update;
+    }
+    for (std::uint64_t i = 0; i < steps; ++i) {
+        save_previous_transforms(registry);
+        run_step(registry);
+        w.accumulator -= dt;
+    }
+    auto alpha = std::clamp(w.accumulator / dt, 0.0, 1.0);
+    interpolate_present_transforms(registry, static_cast<scalar>(alpha));
+}
+
+void update(registry &registry) {
+    auto now = std::chrono::steady_clock::now().time_since_epoch();
+    update(registry, std::chrono::duration<double>(now).count());
+}
+
+void set_paused(registry &registry, bool paused) { world(registry).paused = paused; }
+bool is_paused(const registry &registry) { return registry.ctx().get<world_state>().paused; }
+
+void set_fixed_dt(registry &registry, scalar dt) {
+    if (!(dt > 0) || !std::isfinite(dt)) invalid("set_fixed_dt", "dt must be positive and finite, got " + std::to_string(dt));
+    mutable_settings(registry).fixed_dt = dt;
+}
+scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fixed_dt; }
+
+void set_gravity(registry &registry, const vector3 &gravity) {
+    if (!isfinite(gravity)) invalid("set_gravity", "gravity must be finite");
+    mutable_settings(registry).gravity = gravity;
+    // Resting bodies must notice a new gravity.
+    auto &w = world(registry);
+    for (auto e : registry.view<dynamic_tag, sleeping_tag>()) w.islands.wake_entity(registry, e);
+}
+vector3 get_gravity(const registry &registry) { return get_settings(registry).gravity; }
+
+void set_solver_velocity_iterations(registry &registry, unsigned iterations) {
+    if (iterations == 0) invalid("set_solver_velocity_iterations", "iterations must be at least 1");
+    mutable_settings(registry).num_substeps = iterations;
+}
+unsigned get_solver_velocity_iterations(const registry &registry) { return get_settings(registry).num_substeps; }
+
+void set_solver_position_iterations(registry &registry, unsigned iterations) {
+    mutable_settings(registry).num_relax_iterations = iterations;
+}
+unsigned get_solver_position_iterations(const registry &registry) { return get_settings(registry).num_relax_iterations; }
+
+void set_solver_restitution_iterations(registry &registry, unsigned iterations) {
+    mutable_settings(registry).num_restitution_iterations = iterations;
+}
+unsigned get_solver_restitution_iterations(const registry &registry) {
+    return get_settings(registry).num_restitution_iterations;
+}
+
+void set_solver_individual_restitution_iterations(registry &registry, unsigned iterations) {
+    mutable_settings(registry).num_individual_restitution_iterations = iterations;
+}
+unsigned get_solver_individual_restitution_iterations(const registry &registry) {
+    return get_settings(registry).num_individual_restitution_iterations;
+}
+
+void set_max_steps_per_update(registry &registry, unsigned steps) {
+    if (steps == 0) invalid("set_max_steps_per_update", "steps must be at least 1");
+    mutable_settings(registry).max_steps_per_update = steps;
+}
+
+void set_pre_step_callback(registry &registry, step_callback_t callback) {
+    mutable_settings(registry).pre_step_callback = callback;
+}
+void set_post_step_callback(registry &registry, step_callback_t callback) {
+    mutable_settings(registry).post_step_callback = callback;
+}
+
+const settings &get_settings(const registry &registry) {
+    auto *s = registry.ctx().find<settings>();
+    if (!s) throw std::invalid_argument("edyn: the registry is not attached (call edyn::attach first)");
+    return *s;
+}
+
+double get_simulation_time(const registry &registry) { return registry.ctx().get<world_state>().simulation_time; }
+std::uint64_t get_step_count(const registry &registry) { return registry.ctx().get<world_state>().step_count; }
+
+} // namespace edyn

@@ -1,0 +1,47 @@
+#ifndef EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
+#define EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
+
+#include <gtest/gtest.h>
+#include <cmath>
+#include <edyn/edyn.hpp>
+
+namespace edyn::test {
+
+// A sequential world with default settings, attached on construction, detached on exit.
+struct world_fixture : ::testing::Test {
+    registry reg;
+
+    void SetUp() override { attach(reg); }
+    void TearDown() override { detach(reg); }
+
+    // Runs whole fixed steps covering `seconds` of simulated time; returns the step count.
+    int run_for(double seconds) {
+        auto steps = int(std::lround(seconds / double(get_fixed_dt(reg))));
+        for (int i = 0; i < steps; ++i) step_simulation(reg);
+        return steps;
+    }
+
+    vector3 pos(entity e) const { return reg.get<position>(e); }
+    vector3 vel(entity e) const { return reg.get<linvel>(e); }
+    vector3 angular(entity e) const { return reg.get<angvel>(e); }
+};
+
+inline rigidbody_def sphere_def(scalar radius, const vector3 &position, scalar mass = 1) {
+    rigidbody_def def;
+    def.mass = mass;
+    def.shape = sphere_shape{radius};
+    def.position = position;
+    return def;
+}
+
+inline rigidbody_def box_def(const vector3 &half_extents, const vector3 &position, scalar mass = 1) {
+    rigidbody_def def;
+    def.mass = mass;
+    def.shape = box_shape{half_extents};
+    def.position = position;
+    return def;
+}
+
+} // namespace edyn::test
+
+#endif // EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP

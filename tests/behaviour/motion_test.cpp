@@ -1,0 +1,97 @@
+// Closed-form checks of single bodies: free fall, bounce, sliding, rolling.
+#include "behaviour_support.hpp"
+#include <edyn_scenes/scenes.hpp>
+
+using namespace edyn;
+using edyn::test::world_fixture;
+
+using free_fall = world_fixture;
+using contact_motion = world_fixture;
+
+TEST_F(free_fall, follows_half_g_t_squared) {
+    auto body = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, 100, 0}));
+    run_for(2);
+    // Sub-stepped semi-implicit Euler drops g h^2 n (n + 1) / 2 after n sub-steps: within
+    // 1/n of the continuous value, 0.2% here.
+    auto expected = scalar(100) - scalar(0.5) * scalar(9.8) * 4;
+    EXPECT_NEAR(pos(body).y, expected, scalar(0.004) * 19.6) << "expected y " << expected;
+    EXPECT_NEAR(vel(body).y, scalar(-9.8) * 2, scalar(1e-3));
+    EXPECT_FLOAT_EQ(pos(body).x, 0);
+}
+
+TEST_F(free_fall, per_body_gravity_overrides_the_world) {
+    auto def = edyn::test::sphere_def(scalar(0.5), {0, 10, 0});
+    def.gravity = vector3{0, 0, 0};
+    auto floating = make_rigidbody(reg, def);
+    set_gravity(reg, {scalar(1), 0, 0});
+    auto sideways = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {5, 10, 0}));
+    run_for(1);
+    EXPECT_EQ(pos(floating), (vector3{0, 10, 0}));
+    EXPECT_NEAR(vel(sideways).x, 1, 1e-4);
+    EXPECT_NEAR(vel(sideways).y, 0, 1e-6);
+}
+
+TEST_F(contact_motion, bounce_height_ratio_is_restitution_squared) {
+    for (scalar e : {scalar(0.5), scalar(0.8)}) {
+        registry r;
+        attach(r);
+        scenes::make_ground(r, scalar(0.5), 0);
+        auto def = edyn::test::sphere_def(scalar(0.25), {0, scalar(2.25), 0});
+        def.material->restitution = e;
+        auto ball = make_rigidbody(r, def);
+        // Drop from 2 m (bottom of the ball), then find the peak after the first bounce.
+        bool bounced = false;
+        scalar peak = 0;
+        for (int i = 0; i < 300; ++i) {
+            step_simulation(r);
+            auto v = r.get<linvel>(ball).y;
+            if (!bounced && v > 0) bounced = true;
+            if (bounced) {
+                peak = std::max(peak, r.get<position>(ball).y - scalar(0.25));
+                if (v < 0) break;
+            }
+        }
+        EXPECT_TRUE(bounced);
+        auto expected = 2 * e * e;
+        // A bounce starts when contact happens within the coming sub-step, so it may begin up
+        // to one sub-step of travel above the ground: the peak is that much higher at most.
+        auto impact_speed = std::sqrt(2 * scalar(9.8) * 2);
+        auto substep = get_fixed_dt(r) / scalar(get_solver_velocity_iterations(r));
+        EXPECT_NEAR(peak, expected, impact_speed * substep + scalar(0.01) * expected) << "restitution " << e;
+        detach(r);
+    }
+}
+
+TEST_F(contact_motion, sliding_box_stops_after_v_squared_over_2_mu_g) {
+    scenes::make_ground(reg, scalar(0.4), 0);
+    auto def = edyn::test::box_def({scalar(0.5), scalar(0.5), scalar(0.5)}, {0, scalar(0.5), 0});
+    def.material->friction = scalar(0.4);
+    def.linvel = {5, 0, 0};
+    auto box = make_rigidbody(reg, def);
+    run_for(3);
+    auto expected = scalar(25) / (2 * scalar(0.4) * scalar(9.8));
+    EXPECT_NEAR(pos(box).x, expected, scalar(0.03) * expected) << "expected distance " << expected;
+    EXPECT_NEAR(vel(box).x, 0, scalar(1e-3));
+    EXPECT_NEAR(pos(box).y, scalar(0.5), scalar(0.01));
+}
+
+TEST_F(contact_motion, sphere_rolls_down_incline_at_five_sevenths_g_sin_theta) {
+    auto theta = to_radians(20);
+    vector3 normal{-std::sin(theta), std::cos(theta), 0};
+    rigidbody_def ground;
+    ground.kind = rigidbody_kind::rb_static;
+    ground.material->friction = 1;
+    ground.shape = plane_shape{normal, 0};
+    make_rigidbody(reg, ground);
+
+    auto def = edyn::test::sphere_def(scalar(0.5), normal * scalar(0.5));
+    def.material->friction = 1;
+    auto ball = make_rigidbody(reg, def);
+    run_for(2);
+    auto expected = scalar(0.5) * (scalar(5) / 7) * scalar(9.8) * std::sin(theta) * 4;
+    vector3 down_slope{-std::cos(theta), -std::sin(theta), 0};
+    auto travelled = dot(pos(ball) - normal * scalar(0.5), down_slope);
+    EXPECT_NEAR(travelled, expected, scalar(0.02) * expected) << "expected distance " << expected;
+    // Rolling without slipping: v = w r.
+    EXPECT_NEAR(length(vel(ball)), length(angular(ball)) * scalar(0.5), scalar(0.02) * length(vel(ball)));
+}
