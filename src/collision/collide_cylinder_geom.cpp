@@ -203,6 +203,28 @@ std::size_t circle_segment_critical_points(const vector3 &center, const vector3 
 
 namespace {
 
+// Where the cubic Hermite interpolant of a function on [0, 1] (values f0, f1, derivatives d0, d1
+// scaled to the unit interval) changes sign twice inside: writes to `t` its extremum of sign
+// opposite to both end values, if there is one.
+bool hermite_dip(double f0, double f1, double d0, double d1, double &t) noexcept {
+    if ((f0 < 0) != (f1 < 0)) return false;
+    // H(t) = a t^3 + b t^2 + d0 t + f0.
+    auto a = 2 * f0 - 2 * f1 + d0 + d1;
+    auto b = -3 * f0 + 3 * f1 - 2 * d0 - d1;
+    double roots[2];
+    double dh[3] = {d0, 2 * b, 3 * a};
+    auto n = polynomial_roots(dh, 2, 0, 1, roots);
+    for (std::size_t i = 0; i < n; ++i) {
+        auto x = roots[i];
+        auto h = ((a * x + b) * x + d0) * x + f0;
+        if ((h < 0) != (f0 < 0)) {
+            t = x;
+            return true;
+        }
+    }
+    return false;
+}
+
 // A point of circle A parametrised by angle, and the derivatives of its squared distance to
 // circle B along that angle: D = |w|^2 + rb^2 - 2 rb |w_plane| with w = point - ob.
 struct circle_pair {
@@ -280,24 +302,42 @@ std::size_t circle_circle_local_minima(const vector3 &center_a, const vector3 &n
     constexpr double step = 6.283185307179586 / samples;
     // Sample angles by rotating (cos, sin) rather than calling the trigonometric functions.
     const double cos_step = std::cos(step), sin_step = std::sin(step);
-    double slope[samples + 1];
+    double slope[samples + 1], curvature[samples + 1];
     double c = 1, s = 0;
     for (int k = 0; k < samples; ++k) {
-        slope[k] = cp.derivative(c, s);
+        slope[k] = cp.derivative(c, s, &curvature[k]);
         auto c_next = c * cos_step - s * sin_step;
         s = s * cos_step + c * sin_step;
         c = c_next;
     }
     slope[samples] = slope[0];
+    curvature[samples] = curvature[0];
 
-    double angle[samples];
-    double dist[samples];
+    double angle[2 * samples];
+    double dist[2 * samples];
     std::size_t count = 0;
-    for (int k = 0; k < samples; ++k) {
-        if (!(slope[k] < 0 && slope[k + 1] >= 0)) continue;
-        angle[count] = cp.refine(k * step, (k + 1) * step, slope[k], slope[k + 1]);
+    auto add = [&](double a, double b, double fa, double fb) {
+        angle[count] = cp.refine(a, b, fa, fb);
         dist[count] = cp.distance_sqr(angle[count]);
         ++count;
+    };
+    for (int k = 0; k < samples; ++k) {
+        auto a = k * step, b = (k + 1) * step;
+        if (slope[k] < 0 && slope[k + 1] >= 0) {
+            add(a, b, slope[k], slope[k + 1]);
+            continue;
+        }
+        // A maximum and a minimum closer than the sampling can hide in one interval, the slope
+        // dipping below zero and back: look for the dip in the cubic Hermite model of the slope.
+        double dip;
+        if (!hermite_dip(slope[k], slope[k + 1], curvature[k] * step, curvature[k + 1] * step, dip)) continue;
+        auto x = a + dip * step;
+        auto fx = cp.derivative(std::cos(x), std::sin(x));
+        if (slope[k] >= 0 && fx < 0 && slope[k + 1] >= 0) {
+            add(x, b, fx, slope[k + 1]);
+        } else if (slope[k] < 0 && fx >= 0) {
+            add(a, x, slope[k], fx);
+        }
     }
     if (count == 0) {
         // No slope changes sign: the distance is constant (coaxial circles).

@@ -16,11 +16,11 @@ namespace {
 
 struct polyhedron_capsule {
     detail::polytope poly;
-    detail::capsule_segment seg;  // In the polyhedron's space.
+    detail::capsule_segment seg; // In the polyhedron's space.
     scalar radius;
-    quaternion orn_a;   // Polyhedron orientation, to bring normals to world space.
-    quaternion orn_ab;  // Capsule orientation in the polyhedron's space.
-    vector3 pos_ab;     // Capsule position in the polyhedron's space.
+    quaternion orn_a;  // Polyhedron orientation, to bring normals to world space.
+    quaternion orn_ab; // Capsule orientation in the polyhedron's space.
+    vector3 pos_ab;    // Capsule position in the polyhedron's space.
 };
 
 // Adds the pair (on_poly, on_segment + normal * radius) where `normal` (polyhedron space, B
@@ -38,7 +38,8 @@ void add_pair(const polyhedron_capsule &pc, const vector3 &on_poly, const vector
 
 // Points where the part of the segment over face `face` ends, at their height above the face.
 // Returns whether the segment has a part over the face.
-bool face_points(const polyhedron_capsule &pc, std::uint32_t face, scalar threshold, collision_result &result) {
+bool face_points(const polyhedron_capsule &pc, std::uint32_t face, scalar threshold,
+                 collision_result &result) {
     const auto &poly = pc.poly;
     const auto &n = poly.normals[face];
     auto dir = pc.seg.p1 - pc.seg.p0;
@@ -86,15 +87,16 @@ void parallel_edge_points(const polyhedron_capsule &pc, std::uint32_t edge, scal
 
 // The segment does not reach the polyhedron: exact closest pair, widened to the segment's
 // stretch over a face it lies along or beside a parallel edge.
-void separated(const polyhedron_capsule &pc, const detail::segment_polytope_closest &closest, scalar threshold,
-               collision_result &result) {
+void separated(const polyhedron_capsule &pc, const detail::segment_polytope_closest &closest,
+               scalar threshold, collision_result &result) {
     const auto &poly = pc.poly;
     auto normal = (closest.on_polytope - closest.on_segment) / closest.distance;
     if (closest.feature.kind == polyhedron_feature::face) {
         face_points(pc, closest.feature.index, threshold, result);
         return;
     }
-    add_pair(pc, closest.on_polytope, closest.on_segment, closest.t, normal, closest.distance - pc.radius, result);
+    add_pair(pc, closest.on_polytope, closest.on_segment, closest.t, normal, closest.distance - pc.radius,
+             result);
 
     // Lying along a face whose boundary holds the closest point: the ends over that face too.
     std::uint32_t face = 0;
@@ -177,7 +179,8 @@ void penetrating(const polyhedron_capsule &pc, scalar threshold, collision_resul
         auto t = h0 <= h1 ? scalar(0) : scalar(1);
         auto end = t == 0 ? pc.seg.p0 : pc.seg.p1;
         auto height = std::min(h0, h1);
-        if (height - pc.radius <= threshold) add_pair(pc, end - n * height, end, t, -n, height - pc.radius, result);
+        if (height - pc.radius <= threshold)
+            add_pair(pc, end - n * height, end, t, -n, height - pc.radius, result);
         return;
     }
     auto edge = support_edge(poly, edge_u, edge_dir);
@@ -197,8 +200,12 @@ void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_
     auto inv_orn_a = conjugate(ctx.ornA);
     auto pos_ab = rotate(inv_orn_a, ctx.posB - ctx.posA);
     auto orn_ab = inv_orn_a * ctx.ornB;
-    polyhedron_capsule pc{detail::make_polytope(*a.mesh), detail::make_capsule_segment(b, pos_ab, orn_ab), b.radius,
-                          ctx.ornA, orn_ab, pos_ab};
+    polyhedron_capsule pc{detail::make_polytope(*a.mesh),
+                          detail::make_capsule_segment(b, pos_ab, orn_ab),
+                          b.radius,
+                          ctx.ornA,
+                          orn_ab,
+                          pos_ab};
     if (length(pos_ab) - pc.poly.bounding_radius - b.half_length - b.radius > ctx.threshold) return;
 
     auto closest = detail::closest_points_segment_polytope(pc.poly, pc.seg.p0, pc.seg.p1);
@@ -213,8 +220,8 @@ void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_
 
 void collide(const capsule_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result) {
-    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); }, a, b,
-                            ctx, result);
+    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); },
+                            a, b, ctx, result);
 }
 
 } // namespace edyn

@@ -21,7 +21,7 @@ namespace edyn {
 namespace {
 
 struct cylinder_polytope {
-    detail::placed_cylinder cyl;  // In the polyhedron's space.
+    detail::placed_cylinder cyl; // In the polyhedron's space.
     detail::polytope poly;
     detail::sat_result sat;
 
@@ -29,7 +29,8 @@ struct cylinder_polytope {
         scalar lo, hi;
         detail::polytope_interval(poly, n, lo, hi);
         auto mid = (lo + hi) * scalar(0.5);
-        sat.test(n, dot(cyl.center, n) - mid, detail::cylinder_projection_radius(cyl, n), (hi - lo) * scalar(0.5));
+        sat.test(n, dot(cyl.center, n) - mid, detail::cylinder_projection_radius(cyl, n),
+                 (hi - lo) * scalar(0.5));
     }
 
     void test_direction(vector3 d) noexcept {
@@ -52,7 +53,8 @@ struct cylinder_polytope {
     // A face's outward side only: its plane bounds the polyhedron, so no projection is needed.
     void test_face(std::uint32_t face) noexcept {
         const auto &n = poly.normals[face];
-        auto sep = dot(cyl.center, n) - detail::cylinder_projection_radius(cyl, n) - poly.plane_constants[face];
+        auto sep =
+            dot(cyl.center, n) - detail::cylinder_projection_radius(cyl, n) - poly.plane_constants[face];
         if (sep > sat.distance + sat.bias) {
             sat.distance = sep;
             sat.normal = n;
@@ -139,9 +141,11 @@ void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision
     cp.sat.bias = scalar(1e-6) * size;
     cp.sat.witness_tolerance = scalar(1e-5) * size;
 
-    for (std::uint32_t f = 0; f < cp.poly.faces.size(); ++f) cp.test_face(f);
+    for (std::uint32_t f = 0; f < cp.poly.faces.size(); ++f)
+        cp.test_face(f);
     cp.test(cp.cyl.axis);
-    for (const auto &u : cp.poly.unique_edge_directions) cp.test_direction(cross(cp.cyl.axis, u));
+    for (const auto &u : cp.poly.unique_edge_directions)
+        cp.test_direction(cross(cp.cyl.axis, u));
     if (cp.sat.distance > ctx.threshold) return;
     test_vertices(cp);
     if (cp.sat.distance > ctx.threshold) return;
@@ -155,14 +159,15 @@ void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision
     if (feature_b.kind == polyhedron_feature::face) {
         detail::build_polygon_manifold(feature_a, cp.poly, feature_b.index, normal, local, ctx.ornB, result);
     } else {
-        detail::build_manifold(feature_a, point_or_segment(cp.poly, feature_b, normal), normal, local, ctx.ornB, result);
+        detail::build_manifold(feature_a, point_or_segment(cp.poly, feature_b, normal), normal, local,
+                               ctx.ornB, result);
     }
 }
 
 void collide(const polyhedron_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result) {
-    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); }, a, b,
-                            ctx, result);
+    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); },
+                            a, b, ctx, result);
 }
 
 } // namespace edyn

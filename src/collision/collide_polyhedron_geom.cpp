@@ -25,7 +25,8 @@ constexpr box_topology make_box_topology() noexcept {
     for (unsigned f = 0; f < 6; ++f) {
         unsigned idx[4]{};
         box_face_vertex_indices(f, idx);
-        for (unsigned k = 0; k < 4; ++k) topo.indices[f * 4 + k] = idx[k];
+        for (unsigned k = 0; k < 4; ++k)
+            topo.indices[f * 4 + k] = idx[k];
         topo.faces[f] = {f * 4, 4};
         topo.normals[f] = box_face_normal(f);
     }
@@ -69,9 +70,12 @@ polytope make_polytope(const convex_mesh &mesh) noexcept {
     return p;
 }
 
-box_polytope::box_polytope(const vector3 &he) noexcept : half_extents(he) {
-    for (unsigned i = 0; i < 8; ++i) vertices[i] = box_vertex(he, i);
-    for (unsigned f = 0; f < 6; ++f) plane_constants[f] = he[box_face_axis(f)];
+box_polytope::box_polytope(const vector3 &he) noexcept
+    : half_extents(he) {
+    for (unsigned i = 0; i < 8; ++i)
+        vertices[i] = box_vertex(he, i);
+    for (unsigned f = 0; f < 6; ++f)
+        plane_constants[f] = he[box_face_axis(f)];
 }
 
 polytope box_polytope::view() const noexcept {
@@ -101,7 +105,8 @@ void polytope_interval(const polytope &poly, const vector3 &dir, scalar &lo, sca
 
 scalar polytope_min_projection(const polytope &poly, const vector3 &dir) noexcept {
     auto lo = large_scalar;
-    for (const auto &v : poly.vertices) lo = std::min(lo, dot(v, dir));
+    for (const auto &v : poly.vertices)
+        lo = std::min(lo, dot(v, dir));
     return lo;
 }
 
@@ -136,10 +141,13 @@ bool point_over_face(const polytope &poly, std::size_t face, const vector3 &p, s
 std::optional<collision_feature> reported_feature(const polytope &poly, const polytope_feature &f) noexcept {
     if (!poly.box_half_extents) return std::nullopt;
     switch (f.kind) {
-    case polyhedron_feature::vertex: return collision_feature{box_feature::vertex, f.index};
-    case polyhedron_feature::edge: return collision_feature{box_feature::edge, f.index};
+    case polyhedron_feature::vertex:
+        return collision_feature{box_feature::vertex, f.index};
+    case polyhedron_feature::edge:
+        return collision_feature{box_feature::edge, f.index};
     case polyhedron_feature::face:
-    default: return collision_feature{box_feature::face, f.index};
+    default:
+        return collision_feature{box_feature::face, f.index};
     }
 }
 
@@ -178,7 +186,8 @@ polytope_closest_point closest_point_polytope(const polytope &poly, const vector
         const auto &faces = poly.edge_faces[e];
         if (poly.face_distance(faces[0], p) <= 0 && poly.face_distance(faces[1], p) <= 0) continue;
         scalar t;
-        auto q = closest_point_segment(poly.vertices[poly.edges[e][0]], poly.vertices[poly.edges[e][1]], p, t);
+        auto q =
+            closest_point_segment(poly.vertices[poly.edges[e][0]], poly.vertices[poly.edges[e][1]], p, t);
         auto d2 = distance_sqr(p, q);
         if (d2 < best_sqr) {
             best_sqr = d2;
@@ -228,7 +237,9 @@ segment_polytope_closest closest_points_segment_polytope(const polytope &poly, c
     }
     for (std::uint32_t e = 0; e < poly.edges.size(); ++e) {
         const auto &faces = poly.edge_faces[e];
-        auto sees = [&](std::uint32_t f) { return poly.face_distance(f, p0) > 0 || poly.face_distance(f, p1) > 0; };
+        auto sees = [&](std::uint32_t f) {
+            return poly.face_distance(f, p0) > 0 || poly.face_distance(f, p1) > 0;
+        };
         if (!sees(faces[0]) && !sees(faces[1])) continue;
         auto closest = closest_points_segment_segment(p0, p1, poly.vertices[poly.edges[e][0]],
                                                       poly.vertices[poly.edges[e][1]]);
@@ -247,8 +258,9 @@ segment_polytope_closest closest_points_segment_polytope(const polytope &poly, c
     return r;
 }
 
-polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &b, const polytope_placement &place,
-                                             const vector3 &axis, scalar reach) noexcept {
+polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &b,
+                                             const polytope_placement &place, const vector3 &axis,
+                                             scalar reach) noexcept {
     // Heights along the axis: a closest pair at most `reach` apart lies within `reach` of A's top
     // and of B's bottom, and so does every feature that holds one of its points.
     scalar a_lo, a_hi, b_lo, b_hi;
@@ -268,7 +280,10 @@ polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &
         for (std::uint32_t g = 0; g < b.faces.size(); ++g) {
             auto s = b.face_distance(g, p);
             if (s > 0 && s * s < r.distance_sqr && point_over_face(b, g, p)) {
-                r = {s * s, a.vertices[i], place.to_a(p - b.normals[g] * s), {polyhedron_feature::vertex, i},
+                r = {s * s,
+                     a.vertices[i],
+                     place.to_a(p - b.normals[g] * s),
+                     {polyhedron_feature::vertex, i},
                      {polyhedron_feature::face, g}};
             }
         }
@@ -279,7 +294,11 @@ polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &
         for (std::uint32_t f = 0; f < a.faces.size(); ++f) {
             auto s = a.face_distance(f, q);
             if (s > 0 && s * s < r.distance_sqr && point_over_face(a, f, q)) {
-                r = {s * s, q - a.normals[f] * s, q, {polyhedron_feature::face, f}, {polyhedron_feature::vertex, j}};
+                r = {s * s,
+                     q - a.normals[f] * s,
+                     q,
+                     {polyhedron_feature::face, f},
+                     {polyhedron_feature::vertex, j}};
             }
         }
     }
@@ -289,8 +308,8 @@ polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &
         for (std::uint32_t eb = 0; eb < b.edges.size(); ++eb) {
             auto ib0 = b.edges[eb][0], ib1 = b.edges[eb][1];
             if (!near_b(ib0) && !near_b(ib1)) continue;
-            auto closest = closest_points_segment_segment(a.vertices[ia0], a.vertices[ia1],
-                                                          place.to_a(b.vertices[ib0]), place.to_a(b.vertices[ib1]));
+            auto closest = closest_points_segment_segment(
+                a.vertices[ia0], a.vertices[ia1], place.to_a(b.vertices[ib0]), place.to_a(b.vertices[ib1]));
             for (std::size_t k = 0; k < closest.num_points; ++k) {
                 auto d2 = distance_sqr(closest.pointA[k], closest.pointB[k]);
                 if (d2 < r.distance_sqr) {

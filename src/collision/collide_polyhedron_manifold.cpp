@@ -22,7 +22,7 @@ struct polygon_manifold {
     const contact_feature &a;
     const polytope &poly;
     std::size_t face;
-    vector3 normal;  // Frame of ctx, from B towards A.
+    vector3 normal; // Frame of ctx, from B towards A.
     const collision_context &ctx;
     vector3 world_normal;
     collision_result &result;
@@ -72,7 +72,8 @@ struct polygon_manifold {
         for (std::uint32_t k = 0; k < count(); ++k) {
             auto v0 = at(k);
             auto e = at(k + 1) - v0;
-            if (dot(cross(e, plane_normal) * orientation, y - v0) > inside_tolerance * length_sqr(e)) return false;
+            if (dot(cross(e, plane_normal) * orientation, y - v0) > inside_tolerance * length_sqr(e))
+                return false;
         }
         return true;
     }
@@ -87,11 +88,12 @@ struct polygon_manifold {
     // y on A's lift surface lies on A's feature (as build_manifold decides).
     bool on_feature_a(const vector3 &y) const noexcept {
         if (a.kind == kind::segment) {
-            auto tolerance_sqr = square(inside_tolerance) * distance_sqr(a.vertices[0], a.vertices[1]) +
-                                 epsilon * epsilon;
+            auto tolerance_sqr =
+                square(inside_tolerance) * distance_sqr(a.vertices[0], a.vertices[1]) + epsilon * epsilon;
             return distance_sqr_point_segment(a.vertices[0], a.vertices[1], y) <= tolerance_sqr;
         }
-        if (a.kind == kind::disc) return distance_sqr(y, a.center) <= square(a.radius * (1 + inside_tolerance));
+        if (a.kind == kind::disc)
+            return distance_sqr(y, a.center) <= square(a.radius * (1 + inside_tolerance));
         return true;
     }
 
@@ -129,8 +131,8 @@ void disc_polygon(polygon_manifold &pm) {
     const auto &disc = pm.a;
     auto q = [&](std::size_t k) { return pm.lifted_a(pm.vertex(k)); };
     // Lifting along the normal keeps the face's turn, seen through the two planes' normals.
-    auto orientation = dot(pm.poly.normals[pm.face], pm.normal) * dot(disc.normal, pm.normal) < 0 ? scalar(-1)
-                                                                                                   : scalar(1);
+    auto orientation =
+        dot(pm.poly.normals[pm.face], pm.normal) * dot(disc.normal, pm.normal) < 0 ? scalar(-1) : scalar(1);
     auto r_sqr = square(disc.radius);
     for (std::uint32_t k = 0; k < pm.count(); ++k) {
         auto q0 = q(k), q1 = q(k + 1);

@@ -7,7 +7,8 @@
 // add_point keeps it and the widest four of the others.
 namespace edyn {
 
-void collide(const polyhedron_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const polyhedron_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result) {
     EDYN_ASSERT(a.mesh);
     const auto &mesh = *a.mesh;
     auto center_dist = distance_point_plane(b.normal, b.constant, ctx.posA);
@@ -35,9 +36,10 @@ void collide(const polyhedron_shape &a, const plane_shape &b, const collision_co
     }
 }
 
-void collide(const plane_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result) {
-    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); }, a, b,
-                            ctx, result);
+void collide(const plane_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); },
+                            a, b, ctx, result);
 }
 
 } // namespace edyn

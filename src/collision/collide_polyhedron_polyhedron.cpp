@@ -104,7 +104,8 @@ void test_edges(const polytope_pair &pp, sat_axis &best) noexcept {
         const auto &na1 = a.normals[a.edge_faces[i][1]];
         auto n_a = cross(na0, na1);
         if (pp.normals_b) {
-            for (std::size_t g = 0; g < b.faces.size(); ++g) sides[g] = dot(pp.normals_b[g], n_a);
+            for (std::size_t g = 0; g < b.faces.size(); ++g)
+                sides[g] = dot(pp.normals_b[g], n_a);
             for (std::uint32_t j = 0; j < num_edges_b; ++j) {
                 auto g0 = edge_faces_b[j][0], g1 = edge_faces_b[j][1];
                 auto s0 = sides[g0], s1 = sides[g1];
@@ -156,10 +157,10 @@ std::uint32_t incident_face(const polytope &inc, const vector3 &dir, std::uint32
 struct face_clip {
     const polytope &ref;
     const polytope &inc;
-    polytope_placement place;  // Incident space to reference space.
+    polytope_placement place; // Incident space to reference space.
     std::uint32_t ref_face;
     bool ref_is_a;
-    vector3 normal;  // World, from B towards A.
+    vector3 normal; // World, from B towards A.
     std::optional<collision_feature> ref_feature;
     collision_result &result;
     bool added{false};
@@ -242,15 +243,17 @@ void clip_reference_corners(face_clip &fc, std::uint32_t inc_face, scalar thresh
     }
 }
 
-void face_contact(const polytope &ref, const polytope &inc, const polytope_placement &place, std::uint32_t ref_face,
-                  bool ref_is_a, bool last_resort, const collision_context &ctx, collision_result &result) {
+void face_contact(const polytope &ref, const polytope &inc, const polytope_placement &place,
+                  std::uint32_t ref_face, bool ref_is_a, bool last_resort, const collision_context &ctx,
+                  collision_result &result) {
     const auto &n = ref.normals[ref_face];
     std::uint32_t deepest;
     auto inc_face = incident_face(inc, -n * place.r, deepest);
     auto ref_orn = ref_is_a ? ctx.ornA : ctx.ornB;
     std::optional<collision_feature> ref_feature;
     if (ref.box_half_extents) ref_feature = collision_feature{box_feature::face, ref_face};
-    face_clip fc{ref, inc, place, ref_face, ref_is_a, rotate(ref_orn, ref_is_a ? -n : n), ref_feature, result};
+    face_clip fc{ref,         inc,   place, ref_face, ref_is_a, rotate(ref_orn, ref_is_a ? -n : n),
+                 ref_feature, result};
     clip_incident_edges(fc, inc_face, ctx.threshold);
     clip_reference_corners(fc, inc_face, ctx.threshold);
 
@@ -259,7 +262,8 @@ void face_contact(const polytope &ref, const polytope &inc, const polytope_place
         // should rounding clip it all away, the incident polytope's deepest vertex stands in.
         auto vertex = place.to_a(inc.vertices[deepest]);
         auto height = dot(n, vertex) - ref.plane_constants[ref_face];
-        if (height <= 0) fc.add(vertex, height, detail::reported_feature(inc, {polyhedron_feature::vertex, deepest}));
+        if (height <= 0)
+            fc.add(vertex, height, detail::reported_feature(inc, {polyhedron_feature::vertex, deepest}));
     }
 }
 
@@ -369,7 +373,8 @@ void collide_polytopes(const polytope &a, const polytope &b, const collision_con
     vector3 normals_b[max_cached_faces];
     vector3 edge_crosses_b[max_cached_edges];
     if (b.faces.size() <= max_cached_faces && b.edges.size() <= max_cached_edges) {
-        for (std::size_t g = 0; g < b.faces.size(); ++g) normals_b[g] = pp.place.r * b.normals[g];
+        for (std::size_t g = 0; g < b.faces.size(); ++g)
+            normals_b[g] = pp.place.r * b.normals[g];
         for (std::size_t j = 0; j < b.edges.size(); ++j) {
             edge_crosses_b[j] = cross(normals_b[b.edge_faces[j][0]], normals_b[b.edge_faces[j][1]]);
         }
@@ -395,7 +400,8 @@ void collide_polytopes(const polytope &a, const polytope &b, const collision_con
             auto r_inv = transpose(pp.place.r);
             face_contact(b, a, {r_inv, -(r_inv * t)}, sat.index, false, last_resort, ctx, local);
         }
-        for (std::size_t i = 0; i < local.num_points; ++i) reached = std::min(reached, local.point[i].distance);
+        for (std::size_t i = 0; i < local.num_points; ++i)
+            reached = std::min(reached, local.point[i].distance);
     };
     std::size_t used = 0;
     while (used < search.count) {
@@ -431,13 +437,15 @@ void collide(const polyhedron_shape &a, const polyhedron_shape &b, const collisi
     detail::collide_polytopes(detail::make_polytope(*a.mesh), detail::make_polytope(*b.mesh), ctx, result);
 }
 
-void collide(const polyhedron_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const polyhedron_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result) {
     EDYN_ASSERT(a.mesh);
     detail::box_polytope box(b.half_extents);
     detail::collide_polytopes(detail::make_polytope(*a.mesh), box.view(), ctx, result);
 }
 
-void collide(const box_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const box_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result) {
     EDYN_ASSERT(b.mesh);
     detail::box_polytope box(a.half_extents);
     detail::collide_polytopes(box.view(), detail::make_polytope(*b.mesh), ctx, result);

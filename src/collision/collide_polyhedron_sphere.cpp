@@ -7,7 +7,8 @@
 // face of least penetration.
 namespace edyn {
 
-void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
     EDYN_ASSERT(a.mesh && b.radius > 0);
     auto poly = detail::make_polytope(*a.mesh);
     auto center = to_object_space(ctx.posB, ctx.posA, ctx.ornA);
@@ -25,9 +26,10 @@ void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_c
     result.add_point(p);
 }
 
-void collide(const sphere_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result) {
-    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); }, a, b,
-                            ctx, result);
+void collide(const sphere_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](const auto &x, const auto &y, const auto &c, auto &r) { collide(x, y, c, r); },
+                            a, b, ctx, result);
 }
 
 } // namespace edyn

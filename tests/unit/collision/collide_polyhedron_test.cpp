@@ -38,7 +38,8 @@ vector3 box_corner(const vector3 &he, int i) {
 
 polyhedron_shape box_hull(const vector3 &he) {
     std::vector<vector3> points;
-    for (int i = 0; i < 8; ++i) points.push_back(box_corner(he, i));
+    for (int i = 0; i < 8; ++i)
+        points.push_back(box_corner(he, i));
     return polyhedron_shape(points);
 }
 
@@ -67,16 +68,18 @@ polyhedron_shape irregular_hull() { return polyhedron_shape(irregular_points());
 // Independent geometry of a polyhedron placed at (pos, orn), from its vertices and face lists
 // only.
 struct placed_polyhedron {
-    std::vector<vector3> vertices;               // World.
-    std::vector<std::vector<vector3>> polygons;  // World, counter-clockwise from outside.
+    std::vector<vector3> vertices;              // World.
+    std::vector<std::vector<vector3>> polygons; // World, counter-clockwise from outside.
     std::vector<std::pair<vector3, vector3>> edges;
 
     placed_polyhedron(const polyhedron_shape &shape, const vector3 &pos, const quaternion &orn) {
         const auto &mesh = *shape.mesh;
-        for (auto &v : mesh.vertices) vertices.push_back(to_world_space(v, pos, orn));
+        for (auto &v : mesh.vertices)
+            vertices.push_back(to_world_space(v, pos, orn));
         for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
             std::vector<vector3> polygon;
-            for (auto i : mesh.face_indices(f)) polygon.push_back(vertices[i]);
+            for (auto i : mesh.face_indices(f))
+                polygon.push_back(vertices[i]);
             for (std::size_t k = 0; k < polygon.size(); ++k) {
                 // Each edge once: from the lower to the higher address in the vertex array.
                 auto i0 = mesh.face_indices(f)[k], i1 = mesh.face_indices(f)[(k + 1) % polygon.size()];
@@ -98,7 +101,8 @@ scalar point_triangle_distance(const vector3 &p, const vector3 &a, const vector3
     auto inside = dot(cross(b - a, q - a), n) >= 0 && dot(cross(c - b, q - b), n) >= 0 &&
                   dot(cross(a - c, q - c), n) >= 0;
     if (inside) return std::abs(dot(p - a, n));
-    return std::min({point_segment_distance(a, b, p), point_segment_distance(b, c, p), point_segment_distance(c, a, p)});
+    return std::min(
+        {point_segment_distance(a, b, p), point_segment_distance(b, c, p), point_segment_distance(c, a, p)});
 }
 
 // Signed distance from a world point: the nearest face plane inside, the nearest triangle outside.
@@ -123,15 +127,18 @@ scalar ternary_min(F &&f) {
     double lo = 0, hi = 1;
     for (int i = 0; i < 40; ++i) {
         auto m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-        if (f(scalar(m1)) < f(scalar(m2))) hi = m2; else lo = m1;
+        if (f(scalar(m1)) < f(scalar(m2)))
+            hi = m2;
+        else
+            lo = m1;
     }
     return std::min({f(scalar((lo + hi) / 2)), f(scalar(0)), f(scalar(1))});
 }
 
 // Minimum of a convex function over a triangle, by ternary search nested in ternary search (the
 // minimum over each segment from side to side is convex along the sides).
-scalar convex_min_triangle(const std::function<scalar(const vector3 &)> &f, const vector3 &a, const vector3 &b,
-                           const vector3 &c) {
+scalar convex_min_triangle(const std::function<scalar(const vector3 &)> &f, const vector3 &a,
+                           const vector3 &b, const vector3 &c) {
     return ternary_min([&](scalar u) {
         auto p = lerp(a, b, u), q = lerp(a, c, u);
         return ternary_min([&](scalar v) { return f(lerp(p, q, v)); });
@@ -165,7 +172,8 @@ scalar polyhedra_distance(const placed_polyhedron &a, const placed_polyhedron &b
 
 std::vector<vector3> edge_directions(const placed_polyhedron &poly) {
     std::vector<vector3> dirs;
-    for (auto &[e0, e1] : poly.edges) dirs.push_back(normalize(e1 - e0));
+    for (auto &[e0, e1] : poly.edges)
+        dirs.push_back(normalize(e1 - e0));
     return dirs;
 }
 
@@ -174,27 +182,31 @@ std::vector<vector3> edge_directions(const placed_polyhedron &poly) {
 std::vector<vector3> polyhedron_directions(const placed_polyhedron &a, const std::vector<vector3> &b_normals,
                                            const std::vector<vector3> &others, rng &random) {
     std::vector<vector3> dirs = b_normals;
-    for (std::size_t f = 0; f < a.polygons.size(); ++f) dirs.push_back(a.face_normal(f));
+    for (std::size_t f = 0; f < a.polygons.size(); ++f)
+        dirs.push_back(a.face_normal(f));
     for (auto &e : edge_directions(a)) {
         for (auto &o : others) {
             auto c = cross(e, o);
             if (length(c) > scalar(1e-3)) dirs.push_back(normalize(c));
         }
     }
-    for (int i = 0; i < 200; ++i) dirs.push_back(random.unit());
+    for (int i = 0; i < 200; ++i)
+        dirs.push_back(random.unit());
     return dirs;
 }
 
 std::vector<vector3> face_normals(const placed_polyhedron &poly) {
     std::vector<vector3> normals;
-    for (std::size_t f = 0; f < poly.polygons.size(); ++f) normals.push_back(poly.face_normal(f));
+    for (std::size_t f = 0; f < poly.polygons.size(); ++f)
+        normals.push_back(poly.face_normal(f));
     return normals;
 }
 
 // Largest gap over all unit directions between A's lowest and B's highest support, from dense
 // directions refined by a pattern search; `support_a(n)` is A's support value along n.
 scalar searched_gap(const std::function<scalar(const vector3 &)> &support_a,
-                    const std::function<scalar(const vector3 &)> &support_b, const std::vector<vector3> &extra = {}) {
+                    const std::function<scalar(const vector3 &)> &support_b,
+                    const std::vector<vector3> &extra = {}) {
     auto gap = [&](const vector3 &n) { return -support_a(-n) - support_b(n); };
     std::vector<std::pair<scalar, vector3>> coarse;
     constexpr int num_dirs = 2000;
@@ -205,7 +217,8 @@ scalar searched_gap(const std::function<scalar(const vector3 &)> &support_a,
         vector3 n{rho * std::cos(phi), y, rho * std::sin(phi)};
         coarse.emplace_back(gap(n), n);
     }
-    for (auto &n : extra) coarse.emplace_back(gap(n), n);
+    for (auto &n : extra)
+        coarse.emplace_back(gap(n), n);
     std::sort(coarse.begin(), coarse.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
     auto best = -large_scalar;
     for (int start = 0; start < 10; ++start) {
@@ -233,13 +246,15 @@ scalar searched_gap(const std::function<scalar(const vector3 &)> &support_a,
 
 scalar points_support(const std::vector<vector3> &points, const vector3 &n) {
     auto best = -large_scalar;
-    for (auto &p : points) best = std::max(best, dot(p, n));
+    for (auto &p : points)
+        best = std::max(best, dot(p, n));
     return best;
 }
 
 quaternion random_orientation(rng &random) {
     for (;;) {
-        quaternion q{random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)};
+        quaternion q{random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1),
+                     random.uniform(-1, 1)};
         if (length(q) > scalar(0.2)) return normalize(q);
     }
 }
@@ -264,11 +279,12 @@ void expect_swapped(const collision_result &r, const collision_result &s, scalar
 // collide(box-shaped polyhedron, other) against collide(box, other), in both orders: the same
 // number of points, the same deepest distance and normal, the same points when `same_points`.
 template<typename S>
-void expect_same_as_box(const vector3 &he, const S &other, const collision_context &ctx, const std::string &what,
-                        bool same_points = true) {
+void expect_same_as_box(const vector3 &he, const S &other, const collision_context &ctx,
+                        const std::string &what, bool same_points = true) {
     auto hull = box_hull(he);
     box_shape box{he};
-    auto compare = [&](const collision_result &rp, const collision_result &rb, bool poly_is_a, const char *order) {
+    auto compare = [&](const collision_result &rp, const collision_result &rb, bool poly_is_a,
+                       const char *order) {
         ASSERT_EQ(rp.num_points, rb.num_points) << what << " " << order;
         if (rp.num_points == 0) return;
         auto ip = deepest_index(rp), ib = deepest_index(rb);
@@ -326,14 +342,17 @@ TEST(collide_polyhedron_test, box_hull_against_box_as_box_box) {
     expect_same_as_box(cube_he, big, at(vec(0, edge_y + 0.01, 0), b_edge, a_edge), "edge on edge");
     // A's vertex down on B's face.
     auto a_vertex = shortest_arc(normalize(-cube_he), -vector3_y);
-    expect_same_as_box(cube_he, big, at(vec(0.1, -(length(cube_he) + 0.5) + 0.004, 0), quaternion_identity, a_vertex),
+    expect_same_as_box(cube_he, big,
+                       at(vec(0.1, -(length(cube_he) + 0.5) + 0.004, 0), quaternion_identity, a_vertex),
                        "vertex on face");
     rng random(7);
     for (int i = 0; i < 20; ++i) {
         auto orn = random_orientation(random);
         auto y = -(box_projection_radius(cube_he, rotate(conjugate(orn), vector3_y)) + 0.5);
-        expect_same_as_box(cube_he, big, at(vec(random.uniform(-0.3, 0.3), y + 0.01, random.uniform(-0.3, 0.3)),
-                                            quaternion_identity, orn), "rotated " + std::to_string(i));
+        expect_same_as_box(
+            cube_he, big,
+            at(vec(random.uniform(-0.3, 0.3), y + 0.01, random.uniform(-0.3, 0.3)), quaternion_identity, orn),
+            "rotated " + std::to_string(i));
     }
 }
 
@@ -373,8 +392,9 @@ TEST(collide_polyhedron_test, box_hulls_as_box_box) {
     for (int i = 0; i < 20; ++i) {
         auto orn = random_orientation(random);
         auto y = -(box_projection_radius(cube_he, rotate(conjugate(orn), vector3_y)) + 0.5);
-        check(at(vec(random.uniform(-0.3, 0.3), y + 0.01, random.uniform(-0.3, 0.3)), quaternion_identity, orn),
-              "rotated " + std::to_string(i));
+        check(
+            at(vec(random.uniform(-0.3, 0.3), y + 0.01, random.uniform(-0.3, 0.3)), quaternion_identity, orn),
+            "rotated " + std::to_string(i));
     }
 }
 
@@ -389,7 +409,8 @@ TEST(collide_polyhedron_test, box_hull_against_sphere_as_box_sphere) {
     expect_same_as_box(cube_he, sphere, at(vec(0.1, 0.2, 0.05)), "centre inside");
     rng random(9);
     for (int i = 0; i < 20; ++i) {
-        expect_same_as_box(cube_he, sphere, at(random.vec(-0.8, 0.8), quaternion_identity, random_orientation(random)),
+        expect_same_as_box(cube_he, sphere,
+                           at(random.vec(-0.8, 0.8), quaternion_identity, random_orientation(random)),
                            "rotated " + std::to_string(i));
     }
 }
@@ -402,10 +423,11 @@ TEST(collide_polyhedron_test, box_hull_against_plane_as_box_plane) {
     expect_same_as_box(cube_he, plane_at(-cube_he.y + 0.2), at(vector3_zero), "deep");
     auto edge = quaternion_axis_angle(vector3_z, pi / 4);
     auto edge_low = box_projection_radius(cube_he, rotate(conjugate(edge), vector3_y));
-    expect_same_as_box(cube_he, plane_at(-edge_low + 0.005), at(vector3_zero, quaternion_identity, edge), "edge");
+    expect_same_as_box(cube_he, plane_at(-edge_low + 0.005), at(vector3_zero, quaternion_identity, edge),
+                       "edge");
     auto vertex = shortest_arc(normalize(-cube_he), -vector3_y);
-    expect_same_as_box(cube_he, plane_at(-length(cube_he) + 0.005), at(vector3_zero, quaternion_identity, vertex),
-                       "vertex");
+    expect_same_as_box(cube_he, plane_at(-length(cube_he) + 0.005),
+                       at(vector3_zero, quaternion_identity, vertex), "vertex");
     rng random(10);
     for (int i = 0; i < 20; ++i) {
         auto orn = random_orientation(random);
@@ -422,14 +444,17 @@ TEST(collide_polyhedron_test, box_hull_against_capsule_as_box_capsule) {
     expect_same_as_box(cube_he, capsule, at(vec(0.02, top + 0.01, 0.1)), "apart within");
     expect_same_as_box(cube_he, capsule, at(vec(0.02, top + 0.03, 0.1)), "apart beyond");
     auto standing = quaternion_axis_angle(vector3_z, pi / 2);
-    expect_same_as_box(cube_he, capsule, at(vec(0.1, top + capsule.half_length - 0.005, 0), standing), "standing");
+    expect_same_as_box(cube_he, capsule, at(vec(0.1, top + capsule.half_length - 0.005, 0), standing),
+                       "standing");
     auto along_z = quaternion_axis_angle(vector3_y, pi / 2);
-    expect_same_as_box(cube_he, capsule, at(vec(cube_he.x + 0.07, cube_he.y + 0.07, 0), along_z), "along an edge");
+    expect_same_as_box(cube_he, capsule, at(vec(cube_he.x + 0.07, cube_he.y + 0.07, 0), along_z),
+                       "along an edge");
     expect_same_as_box(cube_he, capsule, at(vec(0, 0.2, 0)), "segment inside");
     rng random(11);
     for (int i = 0; i < 20; ++i) {
-        expect_same_as_box(cube_he, capsule, at(random.vec(-0.6, 0.6), random_orientation(random),
-                                                random_orientation(random)), "rotated " + std::to_string(i), false);
+        expect_same_as_box(cube_he, capsule,
+                           at(random.vec(-0.6, 0.6), random_orientation(random), random_orientation(random)),
+                           "rotated " + std::to_string(i), false);
     }
 }
 
@@ -445,11 +470,13 @@ TEST(collide_polyhedron_test, box_hull_against_cylinder_as_box_cylinder) {
     auto tilt = quaternion_axis_angle(vector3_z, 0.3);
     auto low = cylinder.half_length * std::cos(scalar(0.3)) + cylinder.radius * std::sin(scalar(0.3));
     expect_same_as_box(cube_he, cylinder, at(vec(0, cube_he.y + low - 0.005, 0), tilt), "tilted rim");
-    expect_same_as_box(cube_he, cylinder, at(vec(cube_he.x, top - 0.005, cube_he.z)), "cap over a corner", false);
+    expect_same_as_box(cube_he, cylinder, at(vec(cube_he.x, top - 0.005, cube_he.z)), "cap over a corner",
+                       false);
     rng random(12);
     for (int i = 0; i < 20; ++i) {
-        expect_same_as_box(cube_he, cylinder, at(random.vec(-0.6, 0.6), random_orientation(random),
-                                                 random_orientation(random)), "rotated " + std::to_string(i), false);
+        expect_same_as_box(cube_he, cylinder,
+                           at(random.vec(-0.6, 0.6), random_orientation(random), random_orientation(random)),
+                           "rotated " + std::to_string(i), false);
     }
 }
 
@@ -460,7 +487,7 @@ namespace {
 constexpr scalar tet_s = scalar(0.5);
 const scalar tet_inradius = tet_s / std::sqrt(scalar(3));
 const scalar tet_circumradius = tet_s * std::sqrt(scalar(3));
-const vector3 tet_n0 = normalize(vector3{1, 1, -1});  // Normal of face 0 (vertices 0, 1, 2).
+const vector3 tet_n0 = normalize(vector3{1, 1, -1}); // Normal of face 0 (vertices 0, 1, 2).
 
 // Turns the tetrahedron so that face 3 (vertices 1, 3, 2) faces down, or vertex 0 points down,
 // or face 0 faces up.
@@ -470,14 +497,16 @@ const quaternion tet_face_up = shortest_arc(tet_n0, vector3_y);
 
 // Distance from p to the nearest edge of a triangle.
 scalar distance_to_boundary(const vector3 &p, const vector3 &a, const vector3 &b, const vector3 &c) {
-    return std::min({point_segment_distance(a, b, p), point_segment_distance(b, c, p), point_segment_distance(c, a, p)});
+    return std::min(
+        {point_segment_distance(a, b, p), point_segment_distance(b, c, p), point_segment_distance(c, a, p)});
 }
 
 } // namespace
 
 TEST(collide_polyhedron_test, tetrahedron_against_plane) {
     auto tet = tetrahedron(tet_s);
-    auto r = run(tet, plane_shape{vector3_y, -tet_inradius + scalar(0.005)}, at(vector3_zero, quaternion_identity, tet_face_down));
+    auto r = run(tet, plane_shape{vector3_y, -tet_inradius + scalar(0.005)},
+                 at(vector3_zero, quaternion_identity, tet_face_down));
     ASSERT_EQ(r.num_points, 3u);
     for (std::size_t i = 0; i < 3; ++i) {
         EXPECT_NEAR(r.point[i].distance, -0.005, tol);
@@ -486,7 +515,8 @@ TEST(collide_polyhedron_test, tetrahedron_against_plane) {
         EXPECT_GT(distance(r.point[i].pivotA, vector3{tet_s, tet_s, tet_s}), 0.1);
         EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, tol);
     }
-    r = run(tet, plane_shape{vector3_y, -tet_circumradius + scalar(0.004)}, at(vector3_zero, quaternion_identity, tet_vertex_down));
+    r = run(tet, plane_shape{vector3_y, -tet_circumradius + scalar(0.004)},
+            at(vector3_zero, quaternion_identity, tet_vertex_down));
     ASSERT_EQ(r.num_points, 1u);
     EXPECT_NEAR(r.point[0].distance, -0.004, tol);
     expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
@@ -533,7 +563,8 @@ TEST(collide_polyhedron_test, tetrahedron_against_sphere) {
 TEST(collide_polyhedron_test, tetrahedron_against_box) {
     auto tet = tetrahedron(tet_s);
     box_shape big{{1, 0.5, 1}};
-    auto r = run(tet, big, at(vec(0.1, -(tet_inradius + 0.5) + 0.005, 0), quaternion_identity, tet_face_down));
+    auto r =
+        run(tet, big, at(vec(0.1, -(tet_inradius + 0.5) + 0.005, 0), quaternion_identity, tet_face_down));
     ASSERT_EQ(r.num_points, 3u);
     for (std::size_t i = 0; i < 3; ++i) {
         EXPECT_NEAR(r.point[i].distance, -0.005, tol);
@@ -543,7 +574,8 @@ TEST(collide_polyhedron_test, tetrahedron_against_box) {
         EXPECT_FALSE(r.point[i].featureA.has_value());
         expect_feature(r.point[i].featureB, box_feature::face, 2);
     }
-    r = run(tet, big, at(vec(0.1, -(tet_circumradius + 0.5) + 0.004, 0), quaternion_identity, tet_vertex_down));
+    r = run(tet, big,
+            at(vec(0.1, -(tet_circumradius + 0.5) + 0.004, 0), quaternion_identity, tet_vertex_down));
     ASSERT_EQ(r.num_points, 1u);
     EXPECT_NEAR(r.point[0].distance, -0.004, tol);
     expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
@@ -563,7 +595,8 @@ TEST(collide_polyhedron_test, tetrahedron_against_box) {
 TEST(collide_polyhedron_test, tetrahedron_against_tetrahedron) {
     auto tet = tetrahedron(tet_s);
     // A's vertex 0 down into the middle of B's upward face 0.
-    auto r = run(tet, tet, at(vec(0, -(tet_circumradius + tet_inradius) + 0.003, 0), tet_face_up, tet_vertex_down));
+    auto r = run(tet, tet,
+                 at(vec(0, -(tet_circumradius + tet_inradius) + 0.003, 0), tet_face_up, tet_vertex_down));
     ASSERT_EQ(r.num_points, 1u);
     EXPECT_NEAR(r.point[0].distance, -0.003, tol);
     expect_vec_near(r.point[0].normal, vector3_y, tol);
@@ -580,14 +613,16 @@ TEST(collide_polyhedron_test, tetrahedron_against_tetrahedron) {
         EXPECT_NEAR(to_world_space(r.point[i].pivotA, vector3_zero, tet_face_down).y, -tet_inradius, tol);
     }
     // Apart beyond the threshold.
-    EXPECT_EQ(run(tet, tet, at(vec(0.02, -2 * tet_inradius - 0.03, 0), turned, tet_face_down)).num_points, 0u);
+    EXPECT_EQ(run(tet, tet, at(vec(0.02, -2 * tet_inradius - 0.03, 0), turned, tet_face_down)).num_points,
+              0u);
 }
 
 TEST(collide_polyhedron_test, tetrahedron_against_capsule) {
     auto tet = tetrahedron(tet_s);
     // Face 0 up; a short capsule lying on its middle, a long one across it.
     capsule_shape short_capsule{0.1, 0.2, coordinate_axis::x};
-    auto r = run(tet, short_capsule, at(vec(0, tet_inradius + 0.1 - 0.005, 0), quaternion_identity, tet_face_up));
+    auto r =
+        run(tet, short_capsule, at(vec(0, tet_inradius + 0.1 - 0.005, 0), quaternion_identity, tet_face_up));
     ASSERT_EQ(r.num_points, 2u);
     for (std::size_t i = 0; i < 2; ++i) {
         EXPECT_NEAR(r.point[i].distance, -0.005, tol);
@@ -664,20 +699,21 @@ namespace {
 struct hull_face {
     vector3 centroid;
     vector3 normal;
-    scalar inradius;  // Distance from the centroid to the nearest edge.
+    scalar inradius; // Distance from the centroid to the nearest edge.
 };
 
 hull_face face_of(const polyhedron_shape &hull, std::size_t f) {
     const auto &mesh = *hull.mesh;
     hull_face face{vector3_zero, vector3_zero, large_scalar};
     auto idx = mesh.face_indices(f);
-    for (auto i : idx) face.centroid += mesh.vertices[i];
+    for (auto i : idx)
+        face.centroid += mesh.vertices[i];
     face.centroid /= scalar(idx.size());
     auto &p = mesh.vertices;
     face.normal = normalize(cross(p[idx[1]] - p[idx[0]], p[idx[2]] - p[idx[0]]));
     for (std::size_t k = 0; k < idx.size(); ++k) {
-        face.inradius = std::min(face.inradius, point_segment_distance(p[idx[k]], p[idx[(k + 1) % idx.size()]],
-                                                                       face.centroid));
+        face.inradius = std::min(
+            face.inradius, point_segment_distance(p[idx[k]], p[idx[(k + 1) % idx.size()]], face.centroid));
     }
     return face;
 }
@@ -708,7 +744,8 @@ TEST(collide_polyhedron_test, irregular_hull_against_box_and_polyhedron) {
     // A small box's vertex 0 into the face's centroid.
     box_shape small{{0.05, 0.04, 0.03}};
     auto box_down = shortest_arc(normalize(small.half_extents), -face.normal);
-    auto r = run(hull, small, at(face.centroid + face.normal * (length(small.half_extents) - scalar(0.003)), box_down));
+    auto r = run(hull, small,
+                 at(face.centroid + face.normal * (length(small.half_extents) - scalar(0.003)), box_down));
     ASSERT_EQ(r.num_points, 1u);
     EXPECT_NEAR(r.point[0].distance, -0.003, tol);
     expect_vec_near(r.point[0].normal, -face.normal, tol);
@@ -768,17 +805,20 @@ TEST(collide_polyhedron_test, irregular_hull_against_capsule_and_cylinder) {
 
 namespace {
 
-
 polyhedron_shape random_hull(rng &random, int i) {
     switch (i % 4) {
-    case 0: return irregular_hull();
-    case 1: return tetrahedron(random.uniform(0.1, 0.4));
-    case 2: return box_hull(random.vec(0.1, 0.5));
+    case 0:
+        return irregular_hull();
+    case 1:
+        return tetrahedron(random.uniform(0.1, 0.4));
+    case 2:
+        return box_hull(random.vec(0.1, 0.5));
     default: {
         std::vector<vector3> points;
         auto scale = random.vec(0.15, 0.5);
         auto count = 5 + int(random.uniform(0, 12));
-        for (int k = 0; k < count; ++k) points.push_back(random.vec(-1, 1) * scale);
+        for (int k = 0; k < count; ++k)
+            points.push_back(random.vec(-1, 1) * scale);
         return polyhedron_shape(points);
     }
     }
@@ -983,16 +1023,16 @@ TEST(collide_polyhedron_test, random_polyhedron_cylinder_matches_brute_force) {
         // Any direction's gap is a lower bound of the largest: the reported normals join the
         // search's starts, lest the search miss a narrow ridge of the gap.
         std::vector<vector3> normals;
-        for (std::size_t k = 0; k < r.num_points; ++k) normals.push_back(r.point[k].normal);
+        for (std::size_t k = 0; k < r.num_points; ++k)
+            normals.push_back(r.point[k].normal);
         auto searched = searched_gap([&](const vector3 &n) { return points_support(poly.vertices, n); },
                                      support_cylinder, normals);
         auto d = min_distance(r);
         EXPECT_NEAR(d, searched, 5e-4) << "case " << i;
         if (searched > 0.01) {
             ++apart;
-            auto exact = min_over_surface(poly, [&](const vector3 &x) {
-                return cylinder_sdf(cylinder, ctx.posB, ctx.ornB, x);
-            });
+            auto exact = min_over_surface(
+                poly, [&](const vector3 &x) { return cylinder_sdf(cylinder, ctx.posB, ctx.ornB, x); });
             EXPECT_NEAR(d, exact, 1e-4) << "case " << i;
         } else {
             ++overlapping;
@@ -1049,7 +1089,8 @@ TEST(collide_polyhedron_test, argument_order_swaps_the_roles) {
         auto label = "case " + std::to_string(i);
         sphere_shape sphere{random.uniform(0.05, 0.4)};
         capsule_shape capsule{random.uniform(0.05, 0.3), random.uniform(0, 0.5), coordinate_axis(i % 3)};
-        cylinder_shape cylinder{random.uniform(0.05, 0.4), random.uniform(0.05, 0.4), coordinate_axis((i + 1) % 3)};
+        cylinder_shape cylinder{random.uniform(0.05, 0.4), random.uniform(0.05, 0.4),
+                                coordinate_axis((i + 1) % 3)};
         plane_shape plane{random.unit(), random.uniform(-0.3, 0.3)};
         auto r = run(hull, sphere, ctx, 1e-4);
         expect_swapped(r, run(sphere, hull, swapped, 1e-4), 1e-6, "sphere " + label);

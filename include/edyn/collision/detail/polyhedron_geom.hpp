@@ -92,9 +92,9 @@ std::optional<collision_feature> reported_feature(const polytope &poly, const po
 
 // Closest point of a solid polytope to p.
 struct polytope_closest_point {
-    vector3 point;    // On the surface.
-    vector3 normal;   // Unit: from `point` towards p when outside; the face's normal when inside.
-    scalar distance;  // Signed: negative inside (then the depth below the least penetrated face).
+    vector3 point;   // On the surface.
+    vector3 normal;  // Unit: from `point` towards p when outside; the face's normal when inside.
+    scalar distance; // Signed: negative inside (then the depth below the least penetrated face).
     polytope_feature feature;
 };
 
@@ -104,9 +104,9 @@ polytope_closest_point closest_point_polytope(const polytope &poly, const vector
 
 // Closest points between the segment [p0, p1] and a solid polytope.
 struct segment_polytope_closest {
-    bool intersects{false};  // The segment meets the solid: nothing else is filled in.
+    bool intersects{false}; // The segment meets the solid: nothing else is filled in.
     scalar distance{0};
-    scalar t{0};  // Parameter of on_segment (0 at p0, 1 at p1).
+    scalar t{0}; // Parameter of on_segment (0 at p0, 1 at p1).
     vector3 on_segment{vector3_zero};
     vector3 on_polytope{vector3_zero};
     polytope_feature feature;
@@ -133,13 +133,14 @@ struct polytope_placement {
 struct polytope_closest_pair {
     scalar distance_sqr{large_scalar};
     vector3 on_a{vector3_zero};
-    vector3 on_b{vector3_zero};  // A's space.
+    vector3 on_b{vector3_zero}; // A's space.
     polytope_feature feature_a;
     polytope_feature feature_b;
 };
 
-polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &b, const polytope_placement &place,
-                                             const vector3 &axis, scalar reach) noexcept;
+polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &b,
+                                             const polytope_placement &place, const vector3 &axis,
+                                             scalar reach) noexcept;
 
 // Gauss-map test of SAT for an edge of A (normals a0, a1 of its two faces) against an edge of B
 // (normals b0, b1 of its faces, all in one frame): whether the arcs a0-a1 and (-b0)-(-b1) cross
@@ -147,8 +148,8 @@ polytope_closest_pair closest_pair_polytopes(const polytope &a, const polytope &
 // such pairs can give the least separation; the others are skipped. `s0` and `s1` are
 // dot(b0, cross(a0, a1)) and dot(b1, cross(a0, a1)), and `n_b` is cross(b0, b1), which loops
 // over edge pairs compute once per face or edge.
-inline bool is_minkowski_face(const vector3 &a0, const vector3 &a1, const vector3 &b0, const vector3 &b1, scalar s0,
-                              scalar s1, const vector3 &n_b) noexcept {
+inline bool is_minkowski_face(const vector3 &a0, const vector3 &a1, const vector3 &b0, const vector3 &b1,
+                              scalar s0, scalar s1, const vector3 &n_b) noexcept {
     // -b0 and -b1 on opposite sides of the great circle through a0 and a1.
     if (!(s0 * s1 < 0)) return false;
     // a0 and a1 on opposite sides of the great circle through -b0 and -b1.
@@ -160,7 +161,8 @@ inline bool is_minkowski_face(const vector3 &a0, const vector3 &a1, const vector
     return dot(y, a0 + a1) > 0;
 }
 
-inline bool is_minkowski_face(const vector3 &a0, const vector3 &a1, const vector3 &b0, const vector3 &b1) noexcept {
+inline bool is_minkowski_face(const vector3 &a0, const vector3 &a1, const vector3 &b0,
+                              const vector3 &b1) noexcept {
     auto n_a = cross(a0, a1);
     return is_minkowski_face(a0, a1, b0, b1, dot(b0, n_a), dot(b1, n_a), cross(b0, b1));
 }
