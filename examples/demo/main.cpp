@@ -50,7 +50,8 @@ int main(int argc, char **argv) {
     CLI::App app{"edyn-demo: rigid bodies falling, stacking, bouncing and sleeping"};
     app.add_option("--scene", opt.scene, "all, pyramid, pile or balls")
         ->check(CLI::IsMember({"all", "pyramid", "pile", "balls"}));
-    app.add_option("--pyramid-base", opt.pyramid_base, "boxes in the pyramid's bottom row")->check(CLI::Range(1u, 200u));
+    app.add_option("--pyramid-base", opt.pyramid_base, "boxes in the pyramid's bottom row")
+        ->check(CLI::Range(1u, 200u));
     app.add_option("--pile-count", opt.pile_count, "bodies in the pile")->check(CLI::Range(1u, 100000u));
     app.add_option("--balls", opt.balls, "bouncing balls")->check(CLI::Range(1u, 1000u));
     app.add_option("--seconds", opt.seconds, "simulated time")->check(CLI::Range(0.0, 3600.0));
@@ -82,8 +83,8 @@ int main(int argc, char **argv) {
     auto steps = static_cast<std::size_t>(opt.seconds / dt + 0.5);
     std::vector<double> step_ms;
     step_ms.reserve(steps);
-    std::printf("edyn-demo: %zu bodies, %zu steps of %.4f s\n", registry.storage<edyn::rigidbody_tag>().size(),
-                steps, dt);
+    std::printf("edyn-demo: %zu bodies, %zu steps of %.4f s\n",
+                registry.storage<edyn::rigidbody_tag>().size(), steps, dt);
 
     for (std::size_t i = 0; i < steps; ++i) {
         auto start = std::chrono::steady_clock::now();
@@ -92,8 +93,8 @@ int main(int argc, char **argv) {
         step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
         if (!opt.quiet && (i % 30 == 29 || i + 1 == steps)) {
             auto s = summarize(registry);
-            std::printf("\r  t = %6.2f s  contacts %6zu  islands %5zu (%5zu asleep)  last step %7.3f ms", (i + 1) * dt,
-                        s.contact_points, s.islands, s.sleeping_islands, step_ms.back());
+            std::printf("\r  t = %6.2f s  contacts %6zu  islands %5zu (%5zu asleep)  last step %7.3f ms",
+                        (i + 1) * dt, s.contact_points, s.islands, s.sleeping_islands, step_ms.back());
             std::fflush(stdout);
         }
     }
@@ -111,8 +112,8 @@ int main(int argc, char **argv) {
     std::printf("  median step       %.3f ms\n", median);
     if (top != edyn::null) {
         auto moved = edyn::length(registry.get<edyn::position>(top) - top_start);
-        std::printf("  pyramid           %s (top box moved %.2f cm in %.1f s)\n", moved < 0.01 ? "stood" : "did not stand",
-                    moved * 100, opt.seconds);
+        std::printf("  pyramid           %s (top box moved %.2f cm in %.1f s)\n",
+                    moved < 0.01 ? "stood" : "did not stand", moved * 100, opt.seconds);
     }
     edyn::detach(registry);
     return 0;

@@ -12,7 +12,8 @@ entity make_ground(registry &registry, scalar friction, scalar restitution) {
     return make_rigidbody(registry, def);
 }
 
-std::vector<entity> make_pyramid(registry &registry, unsigned base, scalar half_extent, const vector3 &origin) {
+std::vector<entity> make_pyramid(registry &registry, unsigned base, scalar half_extent,
+                                 const vector3 &origin) {
     std::vector<entity> boxes;
     rigidbody_def def;
     def.mass = 1;
@@ -30,7 +31,8 @@ std::vector<entity> make_pyramid(registry &registry, unsigned base, scalar half_
     return boxes;
 }
 
-std::vector<entity> make_tower(registry &registry, unsigned count, scalar half_extent, const vector3 &origin) {
+std::vector<entity> make_tower(registry &registry, unsigned count, scalar half_extent,
+                               const vector3 &origin) {
     std::vector<entity> boxes;
     rigidbody_def def;
     def.mass = 1;
@@ -77,7 +79,8 @@ std::vector<entity> make_pile(registry &registry, unsigned count, unsigned width
         rigidbody_def def;
         def.mass = 1;
         def.material->friction = scalar(0.6);
-        def.position = {offset + scalar(cell % width) * spacing, height + scalar(layer) * scalar(1.5) * spacing,
+        def.position = {offset + scalar(cell % width) * spacing,
+                        height + scalar(layer) * scalar(1.5) * spacing,
                         offset + scalar(cell / width) * spacing};
         vector3 axis{unit(rng), unit(rng), unit(rng)};
         if (!try_normalize(axis)) axis = vector3_y;
@@ -85,18 +88,29 @@ std::vector<entity> make_pile(registry &registry, unsigned count, unsigned width
         // A size for each body: its largest dimension lies between 0.5 and 1.
         auto s = size_dist(rng) / 2;
         switch (i % kinds) {
-        case 0: def.shape = box_shape{vector3{s, s * scalar(0.8), s * scalar(0.6)}}; break;
-        case 1: def.shape = sphere_shape{s}; break;
-        case 2: def.shape = capsule_shape{s * scalar(0.5), s * scalar(0.5), coordinate_axis::x}; break;
-        case 3: def.shape = cylinder_shape{s * scalar(0.6), s * scalar(0.6), coordinate_axis::y}; break;
-        default: def.shape = make_rock(rng, s); break;
+        case 0:
+            def.shape = box_shape{vector3{s, s * scalar(0.8), s * scalar(0.6)}};
+            break;
+        case 1:
+            def.shape = sphere_shape{s};
+            break;
+        case 2:
+            def.shape = capsule_shape{s * scalar(0.5), s * scalar(0.5), coordinate_axis::x};
+            break;
+        case 3:
+            def.shape = cylinder_shape{s * scalar(0.6), s * scalar(0.6), coordinate_axis::y};
+            break;
+        default:
+            def.shape = make_rock(rng, s);
+            break;
         }
         bodies.push_back(make_rigidbody(registry, def));
     }
     return bodies;
 }
 
-std::vector<entity> make_bouncing_balls(registry &registry, unsigned count, scalar height, const vector3 &origin) {
+std::vector<entity> make_bouncing_balls(registry &registry, unsigned count, scalar height,
+                                        const vector3 &origin) {
     std::vector<entity> balls;
     rigidbody_def def;
     def.shape = sphere_shape{scalar(0.5)};

@@ -31,13 +31,13 @@ struct sat_axis {
 // Relative placement of B in A's space.
 struct box_pair {
     vector3 ha, hb;
-    vector3 c;    // B's centre.
-    matrix3x3 r;  // B's axes as columns.
+    vector3 c;   // B's centre.
+    matrix3x3 r; // B's axes as columns.
 };
 
 struct sat_result {
-    sat_axis face;  // Best face axis, A's preferred.
-    sat_axis edge;  // Best edge axis.
+    sat_axis face; // Best face axis, A's preferred.
+    sat_axis edge; // Best edge axis.
     bool use_edge;
 };
 
@@ -142,7 +142,8 @@ void face_contact(const vector3 &ref_he, unsigned ref_face, const vector3 &inc_h
 // Returns false, adding nothing, when the boxes overlap but the closest points of the two
 // supporting edges fall off an edge: the edges do not cross over each other, so the axis cannot
 // give a point pair along it (a near tie with a face axis, left to the face).
-bool edge_contact(const box_pair &bp, const sat_axis &sat, const collision_context &ctx, collision_result &result) {
+bool edge_contact(const box_pair &bp, const sat_axis &sat, const collision_context &ctx,
+                  collision_result &result) {
     auto i = sat.index, j = sat.index_b;
     // A's edge along i farthest towards B, B's edge along j farthest towards A.
     auto support_a = support_point_box(bp.ha, sat.axis);
@@ -196,7 +197,7 @@ collision_feature edge_point_feature(unsigned edge, scalar t) noexcept {
 
 void closest_pair(const box_pair &bp, const collision_context &ctx, collision_result &result) {
     scalar best = large_scalar;
-    vector3 on_a{}, on_b{};  // In A's space.
+    vector3 on_a{}, on_b{}; // In A's space.
     collision_feature feature_a, feature_b;
     auto inv_r = transpose(bp.r);
     for (unsigned e = 0; e < 12; ++e) {
@@ -243,7 +244,8 @@ void closest_pair(const box_pair &bp, const collision_context &ctx, collision_re
 void collide(const box_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result) {
     auto inv_orn_a = conjugate(ctx.ornA);
     auto rel_orn = inv_orn_a * ctx.ornB;
-    box_pair bp{a.half_extents, b.half_extents, rotate(inv_orn_a, ctx.posB - ctx.posA), to_matrix3x3(rel_orn)};
+    box_pair bp{a.half_extents, b.half_extents, rotate(inv_orn_a, ctx.posB - ctx.posA),
+                to_matrix3x3(rel_orn)};
 
     auto axes = find_axis(bp);
     auto sat = axes.use_edge ? axes.edge : axes.face;

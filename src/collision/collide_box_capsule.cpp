@@ -17,17 +17,18 @@ constexpr scalar face_normal_tolerance = scalar(1e-6);
 
 struct box_capsule {
     vector3 he;
-    detail::capsule_segment seg;  // In the box's space.
+    detail::capsule_segment seg; // In the box's space.
     scalar radius;
-    quaternion orn_a;             // Box orientation, to bring normals to world space.
-    quaternion orn_ab;            // Capsule orientation in the box's space.
-    vector3 pos_ab;               // Capsule position in the box's space.
+    quaternion orn_a;  // Box orientation, to bring normals to world space.
+    quaternion orn_ab; // Capsule orientation in the box's space.
+    vector3 pos_ab;    // Capsule position in the box's space.
 };
 
 // Adds the pair (on_box, on_segment + normal * radius) where `normal` (box space, B towards A)
 // is the direction from the capsule's segment to the box.
 void add_pair(const box_capsule &bc, const vector3 &on_box, const vector3 &on_segment, scalar s,
-              const vector3 &normal, scalar distance, const collision_feature &feature_a, collision_result &result) {
+              const vector3 &normal, scalar distance, const collision_feature &feature_a,
+              collision_result &result) {
     collision_result::collision_point p;
     p.pivotA = on_box;
     p.pivotB = rotate(conjugate(bc.orn_ab), on_segment + normal * bc.radius - bc.pos_ab);
@@ -62,7 +63,8 @@ void face_points(const box_capsule &bc, unsigned face, scalar threshold, collisi
         auto height = dot(face_normal, on_segment) - bc.he[axis];
         auto distance = height - bc.radius;
         if (distance > threshold) continue;
-        add_pair(bc, on_segment - face_normal * height, on_segment, t, -face_normal, distance, feature, result);
+        add_pair(bc, on_segment - face_normal * height, on_segment, t, -face_normal, distance, feature,
+                 result);
     }
 }
 
@@ -104,8 +106,8 @@ void separated(const box_capsule &bc, const vector3 &on_segment, const vector3 &
             auto d = box_point - point;
             auto len = length(d);
             if (len <= epsilon || len - bc.radius > threshold) continue;
-            add_pair(bc, box_point, point, t, d / len, len - bc.radius, detail::box_feature_at(bc.he, box_point, 0),
-                     result);
+            add_pair(bc, box_point, point, t, d / len, len - bc.radius,
+                     detail::box_feature_at(bc.he, box_point, 0), result);
         }
     }
 }
@@ -161,12 +163,13 @@ void penetrating(const box_capsule &bc, scalar threshold, collision_result &resu
 
 } // namespace
 
-void collide(const box_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const box_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result) {
     auto inv_orn_a = conjugate(ctx.ornA);
     auto pos_ab = rotate(inv_orn_a, ctx.posB - ctx.posA);
     auto orn_ab = inv_orn_a * ctx.ornB;
-    box_capsule bc{a.half_extents, detail::make_capsule_segment(b, pos_ab, orn_ab), b.radius, ctx.ornA, orn_ab,
-                   pos_ab};
+    box_capsule bc{
+        a.half_extents, detail::make_capsule_segment(b, pos_ab, orn_ab), b.radius, ctx.ornA, orn_ab, pos_ab};
 
     scalar s;
     vector3 on_segment, on_box;
@@ -181,7 +184,8 @@ void collide(const box_shape &a, const capsule_shape &b, const collision_context
     }
 }
 
-void collide(const capsule_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const capsule_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
 }
 

@@ -5,8 +5,9 @@
 
 namespace edyn::detail {
 
-std::size_t clip_polygon_half_space(const clip_vertex *in, std::size_t n, const vector3 &normal, scalar constant,
-                                    const collision_feature &cut_feature, clip_vertex *out) noexcept {
+std::size_t clip_polygon_half_space(const clip_vertex *in, std::size_t n, const vector3 &normal,
+                                    scalar constant, const collision_feature &cut_feature,
+                                    clip_vertex *out) noexcept {
     if (n == 0) return 0;
     std::size_t count = 0;
     const clip_vertex *prev = &in[n - 1];

@@ -7,7 +7,8 @@ namespace edyn {
 
 // Every vertex within the threshold is a candidate; add_point keeps the deepest and the widest
 // four when a thin box brings more than four under the threshold.
-void collide(const box_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const box_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result) {
     EDYN_ASSERT(std::abs(length_sqr(b.normal) - 1) < scalar(1e-3), "plane normal must be unit length");
     // Vertices in the plane's frame along the normal: centre height plus the rotated offsets.
     auto normal_local = rotate(conjugate(ctx.ornA), b.normal);
@@ -30,7 +31,8 @@ void collide(const box_shape &a, const plane_shape &b, const collision_context &
     }
 }
 
-void collide(const plane_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const plane_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
 }
 

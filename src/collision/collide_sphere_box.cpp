@@ -5,7 +5,8 @@
 
 namespace edyn {
 
-void collide(const sphere_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const sphere_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result) {
     auto &he = b.half_extents;
     auto center = to_object_space(ctx.posA, ctx.posB, ctx.ornB);
     auto on_box = closest_point_box(he, center);
@@ -44,7 +45,8 @@ void collide(const sphere_shape &a, const box_shape &b, const collision_context 
     result.add_point(p);
 }
 
-void collide(const box_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const box_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
 }
 

@@ -6,7 +6,8 @@ namespace edyn {
 
 // Planes live in world space (they ignore their body's transform), so the plane's pivot is a
 // world-space point on the plane.
-void collide(const sphere_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const sphere_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result) {
     EDYN_ASSERT(std::abs(length_sqr(b.normal) - 1) < scalar(1e-3), "plane normal must be unit length");
     auto center_dist = distance_point_plane(b.normal, b.constant, ctx.posA);
     auto distance = center_dist - a.radius;
@@ -19,7 +20,8 @@ void collide(const sphere_shape &a, const plane_shape &b, const collision_contex
     result.add_point(p);
 }
 
-void collide(const plane_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const plane_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
 }
 

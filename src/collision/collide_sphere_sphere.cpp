@@ -3,7 +3,8 @@
 
 namespace edyn {
 
-void collide(const sphere_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result) {
+void collide(const sphere_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
     auto d = ctx.posA - ctx.posB;
     auto dist = length(d);
     auto distance = dist - a.radius - b.radius;

@@ -7,7 +7,8 @@ namespace edyn {
 
 namespace {
 
-bool same_contact(const collision_result::collision_point &a, const collision_result::collision_point &b) noexcept {
+bool same_contact(const collision_result::collision_point &a,
+                  const collision_result::collision_point &b) noexcept {
     constexpr auto merge_sqr = detail::contact_merge_distance * detail::contact_merge_distance;
     return distance_sqr(a.pivotA, b.pivotA) <= merge_sqr || distance_sqr(a.pivotB, b.pivotB) <= merge_sqr;
 }

@@ -49,7 +49,8 @@ namespace {
 
 // Current separation of a point from the bodies' motion since the step began.
 scalar current_separation(const contact_solver_point &p, const solver_body &a, const solver_body &b) {
-    auto d = (a.delta_position - b.delta_position) + (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
+    auto d = (a.delta_position - b.delta_position) +
+             (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
     return dot(p.normal, d) + p.adjusted_separation;
 }
 
@@ -175,7 +176,8 @@ bool solve_restitution_individually(contact_solver_constraint &c, solver_body &a
             auto max_impulse = c.friction * normal[i];
             for (int t = 0; t < 2; ++t) {
                 auto vt = dot(p.tangent[t], relative_velocity(a, b, p.rA, p.rB));
-                auto new_impulse = std::clamp(tangent[i][t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
+                auto new_impulse =
+                    std::clamp(tangent[i][t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
                 apply_impulse(a, b, p.tangent[t] * (new_impulse - tangent[i][t]), p.rA, p.rB);
                 tangent[i][t] = new_impulse;
             }

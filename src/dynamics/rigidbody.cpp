@@ -1,7 +1,4 @@
 #include "edyn/dynamics/rigidbody.hpp"
-#include <cmath>
-#include <sstream>
-#include <stdexcept>
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material.hpp"
@@ -13,6 +10,9 @@
 #include "edyn/shapes/moment_of_inertia.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/shapes/validate_shape.hpp"
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
 
 namespace edyn {
 
@@ -48,16 +48,21 @@ void check_orientation(const char *function, const quaternion &q) {
 }
 
 void check_material(const char *function, const material &m) {
-    if (!(m.friction >= 0) || !std::isfinite(m.friction)) fail(function, "material.friction", "must be in [0, inf), got " + str(m.friction));
-    if (!(m.restitution >= 0 && m.restitution <= 1)) fail(function, "material.restitution", "must be in [0, 1], got " + str(m.restitution));
-    if (!(m.roll_friction >= 0) || !std::isfinite(m.roll_friction)) fail(function, "material.roll_friction", "must be in [0, inf), got " + str(m.roll_friction));
-    if (!(m.spin_friction >= 0) || !std::isfinite(m.spin_friction)) fail(function, "material.spin_friction", "must be in [0, inf), got " + str(m.spin_friction));
+    if (!(m.friction >= 0) || !std::isfinite(m.friction))
+        fail(function, "material.friction", "must be in [0, inf), got " + str(m.friction));
+    if (!(m.restitution >= 0 && m.restitution <= 1))
+        fail(function, "material.restitution", "must be in [0, 1], got " + str(m.restitution));
+    if (!(m.roll_friction >= 0) || !std::isfinite(m.roll_friction))
+        fail(function, "material.roll_friction", "must be in [0, inf), got " + str(m.roll_friction));
+    if (!(m.spin_friction >= 0) || !std::isfinite(m.spin_friction))
+        fail(function, "material.spin_friction", "must be in [0, inf), got " + str(m.spin_friction));
     if (!(m.stiffness > 0)) fail(function, "material.stiffness", "must be positive, got " + str(m.stiffness));
     if (!(m.damping >= 0)) fail(function, "material.damping", "must be non-negative, got " + str(m.damping));
 }
 
 void check_mass(const char *function, scalar mass) {
-    if (!(mass > 0) || !std::isfinite(mass)) fail(function, "mass", "must be positive and finite for a dynamic body, got " + str(mass));
+    if (!(mass > 0) || !std::isfinite(mass))
+        fail(function, "mass", "must be positive and finite for a dynamic body, got " + str(mass));
 }
 
 void check_inertia(const char *function, const matrix3x3 &inertia) {
@@ -117,9 +122,15 @@ void set_mass_components(registry &registry, entity e, rigidbody_kind kind, cons
 
 void emplace_kind_tag(registry &registry, entity e, rigidbody_kind kind) {
     switch (kind) {
-    case rigidbody_kind::rb_dynamic: registry.emplace<dynamic_tag>(e); break;
-    case rigidbody_kind::rb_static: registry.emplace<static_tag>(e); break;
-    case rigidbody_kind::rb_kinematic: registry.emplace<kinematic_tag>(e); break;
+    case rigidbody_kind::rb_dynamic:
+        registry.emplace<dynamic_tag>(e);
+        break;
+    case rigidbody_kind::rb_static:
+        registry.emplace<static_tag>(e);
+        break;
+    case rigidbody_kind::rb_kinematic:
+        registry.emplace<kinematic_tag>(e);
+        break;
     }
 }
 
@@ -131,7 +142,8 @@ rigidbody_kind get_kind(const registry &registry, entity e) {
 
 void check_body(const char *function, const registry &registry, entity e) {
     if (!registry.valid(e)) throw std::invalid_argument(std::string(function) + ": entity is not valid");
-    if (!registry.all_of<rigidbody_tag>(e)) throw std::invalid_argument(std::string(function) + ": entity is not a rigid body");
+    if (!registry.all_of<rigidbody_tag>(e))
+        throw std::invalid_argument(std::string(function) + ": entity is not a rigid body");
 }
 
 // The shape currently stored on a body, rebuilt as a variant.
@@ -140,8 +152,11 @@ std::optional<shapes_variant_t> get_shape(const registry &registry, entity e) {
     if (!index) return std::nullopt;
     std::optional<shapes_variant_t> result;
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-        ((index->value == I ? void(result = registry.get<std::variant_alternative_t<I, shapes_variant_t>>(e)) : void()), ...);
-    }(std::make_index_sequence<num_shapes>{});
+        ((index->value == I ? void(result = registry.get<std::variant_alternative_t<I, shapes_variant_t>>(e))
+                            : void()),
+         ...);
+    }
+    (std::make_index_sequence<num_shapes>{});
     return result;
 }
 
@@ -182,11 +197,13 @@ void validate_rigidbody_def(const rigidbody_def &def) {
 void make_rigidbody(entity e, registry &registry, const rigidbody_def &def) {
     validate_rigidbody_def(def);
     if (!registry.valid(e)) throw std::invalid_argument("make_rigidbody: entity is not valid");
-    if (registry.all_of<rigidbody_tag>(e)) throw std::invalid_argument("make_rigidbody: entity is already a rigid body");
+    if (registry.all_of<rigidbody_tag>(e))
+        throw std::invalid_argument("make_rigidbody: entity is already a rigid body");
 
-    auto props = def.kind == rigidbody_kind::rb_dynamic
-                     ? compute_mass_properties(def.mass, def.inertia, def.shape, def.center_of_mass)
-                     : mass_properties{large_scalar, matrix3x3_zero, def.center_of_mass.value_or(vector3_zero)};
+    auto props =
+        def.kind == rigidbody_kind::rb_dynamic
+            ? compute_mass_properties(def.mass, def.inertia, def.shape, def.center_of_mass)
+            : mass_properties{large_scalar, matrix3x3_zero, def.center_of_mass.value_or(vector3_zero)};
 
     auto com_world = rotate(def.orientation, props.com);
     auto pos = def.position + com_world;
@@ -245,11 +262,13 @@ void rigidbody_set_kind(registry &registry, entity e, rigidbody_kind kind) {
         } else if (shape) {
             props = compute_mass_properties(1, std::nullopt, shape, com_value);
         } else {
-            throw std::invalid_argument("rigidbody_set_kind: an amorphous body needs a mass and inertia to become dynamic");
+            throw std::invalid_argument(
+                "rigidbody_set_kind: an amorphous body needs a mass and inertia to become dynamic");
         }
     } else if (old_kind == rigidbody_kind::rb_dynamic) {
         // Remembered so that the body can become dynamic again with the same mass.
-        registry.emplace_or_replace<rigidbody_dynamic_mass>(e, registry.get<mass>(e).s, static_cast<const matrix3x3 &>(registry.get<inertia>(e)));
+        registry.emplace_or_replace<rigidbody_dynamic_mass>(
+            e, registry.get<mass>(e).s, static_cast<const matrix3x3 &>(registry.get<inertia>(e)));
     }
 
     // Removing the AABB takes the body out of the broadphase; emplacing it again after the new
@@ -347,7 +366,8 @@ vector3 get_rigidbody_origin(const registry &registry, entity e) {
 void rigidbody_set_mass(registry &registry, entity e, scalar new_mass) {
     check_body("rigidbody_set_mass", registry, e);
     check_mass("rigidbody_set_mass", new_mass);
-    if (!registry.all_of<dynamic_tag>(e)) throw std::invalid_argument("rigidbody_set_mass: body is not dynamic");
+    if (!registry.all_of<dynamic_tag>(e))
+        throw std::invalid_argument("rigidbody_set_mass: body is not dynamic");
     auto scale = new_mass / registry.get<mass>(e).s;
     auto I = static_cast<const matrix3x3 &>(registry.get<inertia>(e)) * scale;
     registry.replace<mass>(e, new_mass);
@@ -357,7 +377,8 @@ void rigidbody_set_mass(registry &registry, entity e, scalar new_mass) {
     update_inertia_world(registry, e);
 }
 
-void rigidbody_apply_impulse(registry &registry, entity e, const vector3 &impulse, const vector3 &rel_location) {
+void rigidbody_apply_impulse(registry &registry, entity e, const vector3 &impulse,
+                             const vector3 &rel_location) {
     check_body("rigidbody_apply_impulse", registry, e);
     check_finite("rigidbody_apply_impulse", "impulse", impulse);
     check_finite("rigidbody_apply_impulse", "rel_location", rel_location);

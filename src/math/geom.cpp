@@ -38,8 +38,8 @@ void set_pair(segment_closest_points &r, std::size_t i, const vector3 &a0, const
 
 // Parallel segments: either the two ends of the overlap of their projections on A, or the
 // single pair of nearest ends.
-void parallel_segments(segment_closest_points &r, const vector3 &a0, const vector3 &d1, scalar a, const vector3 &b0,
-                       const vector3 &d2) noexcept {
+void parallel_segments(segment_closest_points &r, const vector3 &a0, const vector3 &d1, scalar a,
+                       const vector3 &b0, const vector3 &d2) noexcept {
     auto b1 = b0 + d2;
     auto sb0 = dot(b0 - a0, d1) / a;
     auto sb1 = dot(b1 - a0, d1) / a;
@@ -53,7 +53,8 @@ void parallel_segments(segment_closest_points &r, const vector3 &a0, const vecto
         closest_point_segment(b0, b1, a0 + d1 * hi, t);
         set_pair(r, 1, a0, d1, hi, b0, d2, t);
         r.num_points = 2;
-        r.distance_sqr = std::min(distance_sqr(r.pointA[0], r.pointB[0]), distance_sqr(r.pointA[1], r.pointB[1]));
+        r.distance_sqr =
+            std::min(distance_sqr(r.pointA[0], r.pointB[0]), distance_sqr(r.pointA[1], r.pointB[1]));
         return;
     }
     auto s = lo > hi ? (std::max(sb0, sb1) < 0 ? scalar(0) : scalar(1)) : (lo + hi) * scalar(0.5);
@@ -111,8 +112,8 @@ segment_closest_points closest_points_segment_segment(const vector3 &a0, const v
     return r;
 }
 
-bool clip_line_interval(const vector3 &p, const vector3 &dir, const vector3 &normal, scalar constant, scalar &t0,
-                        scalar &t1) noexcept {
+bool clip_line_interval(const vector3 &p, const vector3 &dir, const vector3 &normal, scalar constant,
+                        scalar &t0, scalar &t1) noexcept {
     auto dn = dot(normal, dir);
     auto dist = dot(normal, p) - constant;
     if (std::abs(dn) <= epsilon * epsilon) {
@@ -168,8 +169,8 @@ void sort_small(scalar *values, std::size_t n) noexcept {
 
 } // namespace
 
-scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0, const vector3 &p1, scalar &t,
-                                  vector3 &on_segment, vector3 &on_box) noexcept {
+scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0, const vector3 &p1,
+                                  scalar &t, vector3 &on_segment, vector3 &on_box) noexcept {
     auto d = p1 - p0;
     // Parameters where the segment crosses a slab boundary split [0, 1] into pieces on which
     // the set of clamped coordinates, hence the quadratic, is fixed.
@@ -218,7 +219,8 @@ scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0
     return best_dist_sqr;
 }
 
-vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius, const vector3 &p) noexcept {
+vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius,
+                           const vector3 &p) noexcept {
     auto w = project_plane(p - center, normal);
     auto len_sqr = length_sqr(w);
     if (len_sqr > radius * radius) {
@@ -266,12 +268,14 @@ std::size_t clip_polygon(const Vec *in, std::size_t n, Dist &&dist, Vec *out) no
 
 std::size_t clip_polygon_half_plane(const vector2 *in, std::size_t n, const vector2 &normal, scalar constant,
                                     vector2 *out) noexcept {
-    return clip_polygon(in, n, [&](const vector2 &p) { return dot(normal, p) - constant; }, out);
+    return clip_polygon(
+        in, n, [&](const vector2 &p) { return dot(normal, p) - constant; }, out);
 }
 
 std::size_t clip_polygon_half_space(const vector3 *in, std::size_t n, const vector3 &normal, scalar constant,
                                     vector3 *out) noexcept {
-    return clip_polygon(in, n, [&](const vector3 &p) { return dot(normal, p) - constant; }, out);
+    return clip_polygon(
+        in, n, [&](const vector3 &p) { return dot(normal, p) - constant; }, out);
 }
 
 std::size_t clip_polygon_convex(const vector2 *subject, std::size_t n, const vector2 *clip, std::size_t m,
@@ -296,7 +300,8 @@ std::size_t clip_polygon_convex(const vector2 *subject, std::size_t n, const vec
     return count;
 }
 
-bool point_in_convex_polygon(const vector2 *polygon, std::size_t n, const vector2 &p, scalar tolerance) noexcept {
+bool point_in_convex_polygon(const vector2 *polygon, std::size_t n, const vector2 &p,
+                             scalar tolerance) noexcept {
     for (std::size_t i = 0; i < n; ++i) {
         auto c0 = polygon[i];
         auto edge = polygon[(i + 1) % n] - c0;

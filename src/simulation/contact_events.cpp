@@ -3,9 +3,7 @@
 namespace edyn {
 
 namespace {
-contact_events &events(registry &registry) {
-    return registry.ctx().emplace<contact_events>();
-}
+contact_events &events(registry &registry) { return registry.ctx().emplace<contact_events>(); }
 } // namespace
 
 sink<contact_signal_t> on_contact_started(registry &registry) { return sink{events(registry).started}; }
@@ -19,10 +17,18 @@ sink<contact_point_signal_t> on_contact_point_destroyed(registry &registry) {
 
 void contact_events::publish(const event &e) {
     switch (e.type) {
-    case kind::started: started.publish(e.manifold); break;
-    case kind::point_created: point_created.publish(e.manifold, e.id); break;
-    case kind::point_destroyed: point_destroyed.publish(e.manifold, e.id); break;
-    case kind::ended: ended.publish(e.manifold); break;
+    case kind::started:
+        started.publish(e.manifold);
+        break;
+    case kind::point_created:
+        point_created.publish(e.manifold, e.id);
+        break;
+    case kind::point_destroyed:
+        point_destroyed.publish(e.manifold, e.id);
+        break;
+    case kind::ended:
+        ended.publish(e.manifold);
+        break;
     }
 }
 

@@ -15,8 +15,9 @@ void save_previous_transforms(registry &registry) {
 }
 
 void interpolate_present_transforms(registry &registry, scalar alpha) {
-    registry.view<previous_transform, position, orientation, present_position, present_orientation>(
-                exclude<sleeping_tag>)
+    registry
+        .view<previous_transform, position, orientation, present_position, present_orientation>(
+            exclude<sleeping_tag>)
         .each([alpha](const previous_transform &prev, const position &pos, const orientation &orn,
                       present_position &present_pos, present_orientation &present_orn) {
             present_pos = lerp(prev.position, static_cast<const vector3 &>(pos), alpha);
@@ -28,7 +29,8 @@ void interpolate_present_transforms(registry &registry, scalar alpha) {
         present_orn = orn;
     };
     registry.view<position, orientation, present_position, present_orientation, sleeping_tag>().each(snap);
-    registry.view<position, orientation, present_position, present_orientation>(exclude<previous_transform>).each(snap);
+    registry.view<position, orientation, present_position, present_orientation>(exclude<previous_transform>)
+        .each(snap);
 }
 
 } // namespace edyn

@@ -1,8 +1,8 @@
 #include "edyn/simulation/island_manager.hpp"
-#include <algorithm>
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/simulation/settings.hpp"
+#include <algorithm>
 
 namespace edyn {
 
@@ -59,7 +59,8 @@ void island_manager::remove_node(registry &registry, entity node) {
     // Edges of this node now join at most one island node; the split decides where they go.
     isle.may_split = true;
     if (isle.nodes.empty()) {
-        for (auto edge : isle.edges) registry.remove<island_resident, island_edge>(edge);
+        for (auto edge : isle.edges)
+            registry.remove<island_resident, island_edge>(edge);
         destroy_island(registry, island_entity);
     }
 }
@@ -106,8 +107,10 @@ void island_manager::unlink_edge(registry &registry, entity edge) {
 void island_manager::merge(registry &registry, entity into, entity from) {
     auto &target = registry.get<island>(into);
     auto &source = registry.get<island>(from);
-    for (auto node : source.nodes) push_resident(registry, target.nodes, node, into);
-    for (auto edge : source.edges) push_resident(registry, target.edges, edge, into);
+    for (auto node : source.nodes)
+        push_resident(registry, target.nodes, node, into);
+    for (auto edge : source.edges)
+        push_resident(registry, target.edges, edge, into);
     target.may_split |= source.may_split;
     source.nodes.clear();
     source.edges.clear();
@@ -122,7 +125,8 @@ void island_manager::wake_island(registry &registry, entity island_entity) {
         registry.remove<sleeping_tag>(node);
         registry.get<sleep_timer>(node).time = 0;
     }
-    for (auto edge : isle.edges) registry.remove<sleeping_tag>(edge);
+    for (auto edge : isle.edges)
+        registry.remove<sleeping_tag>(edge);
 }
 
 void island_manager::wake_entity(registry &registry, entity e) {
@@ -143,7 +147,8 @@ void island_manager::put_to_sleep(registry &registry, entity island_entity) {
         registry.get<linvel>(node) = vector3_zero;
         registry.get<angvel>(node) = vector3_zero;
     }
-    for (auto edge : isle.edges) registry.emplace_or_replace<sleeping_tag>(edge);
+    for (auto edge : isle.edges)
+        registry.emplace_or_replace<sleeping_tag>(edge);
 }
 
 void island_manager::split(registry &registry, entity island_entity) {
@@ -156,7 +161,8 @@ void island_manager::split(registry &registry, entity island_entity) {
 
     // Union-find over the island's nodes, indexed through their entity index.
     std::size_t max_index = 0;
-    for (auto node : nodes) max_index = std::max<std::size_t>(max_index, to_index(node));
+    for (auto node : nodes)
+        max_index = std::max<std::size_t>(max_index, to_index(node));
     if (local_index.size() <= max_index) local_index.resize(max_index + 1);
     parent.resize(nodes.size());
     for (std::uint32_t i = 0; i < nodes.size(); ++i) {
@@ -164,7 +170,8 @@ void island_manager::split(registry &registry, entity island_entity) {
         parent[i] = i;
     }
     auto find = [&](std::uint32_t i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
         return i;
     };
     auto node_of = [&](entity body) -> std::int64_t {
@@ -216,7 +223,8 @@ void island_manager::update_sleeping(registry &registry, const settings &setting
 
     // A copy, since splitting creates islands.
     candidates.clear();
-    for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) candidates.push_back(island_entity);
+    for (auto island_entity : registry.view<island>(exclude<sleeping_tag>))
+        candidates.push_back(island_entity);
     for (auto island_entity : candidates) {
         if (!registry.valid(island_entity) || registry.all_of<sleeping_tag>(island_entity)) continue;
         auto &isle = registry.get<island>(island_entity);
@@ -240,8 +248,10 @@ void island_manager::update_sleeping(registry &registry, const settings &setting
 
 void island_manager::clear(registry &registry) {
     candidates.clear();
-    for (auto island_entity : registry.view<island>()) candidates.push_back(island_entity);
-    for (auto island_entity : candidates) registry.destroy(island_entity);
+    for (auto island_entity : registry.view<island>())
+        candidates.push_back(island_entity);
+    for (auto island_entity : candidates)
+        registry.destroy(island_entity);
     registry.clear<island_resident, island_edge, sleep_timer>();
 }
 

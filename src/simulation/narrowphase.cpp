@@ -5,8 +5,8 @@
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/dynamics/tags.hpp"
-#include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 
@@ -29,7 +29,8 @@ void record_events(contact_events &events, entity manifold, const contact_point_
 
 // Mixed material values are stored on new points for the program to read; the solver mixes
 // again every step so that material changes apply at once.
-void fill_materials(const registry &registry, contact_manifold &manifold, const contact_point_changes &changes) {
+void fill_materials(const registry &registry, contact_manifold &manifold,
+                    const contact_point_changes &changes) {
     auto *matA = registry.try_get<material>(manifold.body[0]);
     auto *matB = registry.try_get<material>(manifold.body[1]);
     if (!matA || !matB || changes.num_created == 0) return;
@@ -71,7 +72,8 @@ void run_narrowphase(registry &registry, world_state &world) {
     bool record = events.has_listeners();
 
     world.manifolds.clear();
-    for (auto e : registry.view<contact_manifold>(exclude<sleeping_tag>)) world.manifolds.push_back(e);
+    for (auto e : registry.view<contact_manifold>(exclude<sleeping_tag>))
+        world.manifolds.push_back(e);
     // The view yields the newest manifold first; solving in creation order is the natural and
     // reproducible order.
     std::reverse(world.manifolds.begin(), world.manifolds.end());
@@ -88,7 +90,8 @@ void run_narrowphase(registry &registry, world_state &world) {
 
         auto &ornA = registry.get<orientation>(a);
         auto &ornB = registry.get<orientation>(b);
-        manifold_transforms tf{get_rigidbody_origin(registry, a), ornA, get_rigidbody_origin(registry, b), ornB};
+        manifold_transforms tf{get_rigidbody_origin(registry, a), ornA, get_rigidbody_origin(registry, b),
+                               ornB};
         // Points are looked for as far as the bodies can travel towards each other in a step,
         // so that the solver can stop them at the surface instead of inside it.
         manifold.separation_threshold = contact_breaking_threshold + approach_speed(registry, a, b) * dt;

@@ -22,7 +22,9 @@ namespace {
 world_state &world(registry &registry) { return registry.ctx().get<world_state>(); }
 
 void on_construct_rigidbody(registry &registry, entity e) {
-    if (!registry.all_of<static_tag>(e)) registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e), registry.get<orientation>(e));
+    if (!registry.all_of<static_tag>(e))
+        registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e),
+                                                        registry.get<orientation>(e));
     if (registry.all_of<dynamic_tag>(e)) world(registry).islands.add_node(registry, e);
 }
 
@@ -43,7 +45,8 @@ void on_construct_static(registry &registry, entity e) { registry.remove<previou
 
 void on_destroy_static(registry &registry, entity e) {
     if (registry.all_of<rigidbody_tag, position, orientation>(e)) {
-        registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e), registry.get<orientation>(e));
+        registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e),
+                                                        registry.get<orientation>(e));
     }
 }
 
@@ -101,12 +104,13 @@ template<typename... Components>
 struct component_list {};
 
 // Every component edyn puts on the program's entities.
-using edyn_components = component_list<
-    rigidbody_tag, dynamic_tag, static_tag, kinematic_tag, sleeping_tag, sleeping_disabled_tag, sensor_tag,
-    position, orientation, present_position, present_orientation, linvel, angvel, gravity, mass, mass_inv,
-    inertia, inertia_inv, inertia_world_inv, center_of_mass, rigidbody_dynamic_mass, material, shape_index, AABB,
-    collision_filter, collision_exclusion, previous_transform, island_resident, island_edge, sleep_timer,
-    plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
+using edyn_components =
+    component_list<rigidbody_tag, dynamic_tag, static_tag, kinematic_tag, sleeping_tag, sleeping_disabled_tag,
+                   sensor_tag, position, orientation, present_position, present_orientation, linvel, angvel,
+                   gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
+                   rigidbody_dynamic_mass, material, shape_index, AABB, collision_filter, collision_exclusion,
+                   previous_transform, island_resident, island_edge, sleep_timer, plane_shape, sphere_shape,
+                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
 
 template<typename... Components>
 void clear_all(registry &registry, component_list<Components...>) {
@@ -124,9 +128,9 @@ void disconnect_update(registry &registry, component_list<Components...>) {
 }
 
 // Changes that must wake a sleeping body (besides its transform).
-using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
-                                          plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
-                                          polyhedron_shape, compound_shape>;
+using waking_components =
+    component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape, sphere_shape,
+                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
 
 } // namespace
 
@@ -168,7 +172,8 @@ void disconnect_registry_listeners(registry &registry) {
 
 void adopt_existing_bodies(registry &registry) {
     std::vector<entity> bodies;
-    for (auto e : registry.view<rigidbody_tag>()) bodies.push_back(e);
+    for (auto e : registry.view<rigidbody_tag>())
+        bodies.push_back(e);
     // Oldest first, as if they had been made after attach().
     std::reverse(bodies.begin(), bodies.end());
     for (auto e : bodies) {
@@ -179,9 +184,12 @@ void adopt_existing_bodies(registry &registry) {
 
 void remove_edyn_components(registry &registry) {
     std::vector<entity> internal;
-    for (auto e : registry.view<contact_manifold>()) internal.push_back(e);
-    for (auto e : registry.view<island>()) internal.push_back(e);
-    for (auto e : internal) registry.destroy(e);
+    for (auto e : registry.view<contact_manifold>())
+        internal.push_back(e);
+    for (auto e : registry.view<island>())
+        internal.push_back(e);
+    for (auto e : internal)
+        registry.destroy(e);
     clear_all(registry, edyn_components{});
 }
 

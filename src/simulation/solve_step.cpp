@@ -32,7 +32,8 @@ std::uint32_t roll_axes(const registry &registry, entity body, const vector3 &no
             plane_space(normal, axes[0], axes[1]);
             return 2;
         } else if constexpr (std::is_same_v<S, cylinder_shape>) {
-            auto axis = project_plane(coordinate_axis_vector(shape.axis, registry.get<orientation>(body)), normal);
+            auto axis =
+                project_plane(coordinate_axis_vector(shape.axis, registry.get<orientation>(body)), normal);
             if (!try_normalize(axis)) return 0;
             axes[0] = axis;
             return 1;
@@ -50,7 +51,8 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
     world.bodies.emplace_back();
     world.body_entities.push_back(null);
 
-    auto view = registry.view<rigidbody_tag, linvel, angvel, mass_inv, inertia_world_inv>(exclude<sleeping_tag, static_tag>);
+    auto view = registry.view<rigidbody_tag, linvel, angvel, mass_inv, inertia_world_inv>(
+        exclude<sleeping_tag, static_tag>);
     for (auto e : view) {
         auto index = to_index(e);
         if (world.body_index.size() <= index) world.body_index.resize(index + 1, 0);
@@ -86,8 +88,8 @@ void gather_contacts(registry &registry, world_state &world) {
 
         // Bodies resting against a moving kinematic body must not fall asleep.
         for (auto [body, other] : {std::pair{a, b}, std::pair{b, a}}) {
-            if (registry.all_of<kinematic_tag>(other) &&
-                (registry.get<linvel>(other) != vector3_zero || registry.get<angvel>(other) != vector3_zero)) {
+            if (registry.all_of<kinematic_tag>(other) && (registry.get<linvel>(other) != vector3_zero ||
+                                                          registry.get<angvel>(other) != vector3_zero)) {
                 world.islands.wake_entity(registry, body);
             }
         }
@@ -175,7 +177,8 @@ void write_back(registry &registry, world_state &world, scalar dt) {
         }
         if (auto *aabb = registry.try_get<AABB>(e)) {
             auto origin = get_rigidbody_origin(registry, e);
-            *aabb = visit_shape(registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
+            *aabb =
+                visit_shape(registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
             // Swept over the next step's motion, so that pairs are found before they touch.
             auto sweep = body.linvel * dt;
             aabb->min += min(sweep, vector3_zero);
@@ -192,10 +195,12 @@ void write_back(registry &registry, world_state &world, scalar dt) {
             cp.normal_impulse = p.normal_impulse;
             cp.friction_impulse = {p.tangent_impulse[0], p.tangent_impulse[1]};
             cp.normal_restitution_impulse = p.restitution_impulse;
-            cp.friction_restitution_impulse = {p.tangent_restitution_impulse[0], p.tangent_restitution_impulse[1]};
+            cp.friction_restitution_impulse = {p.tangent_restitution_impulse[0],
+                                               p.tangent_restitution_impulse[1]};
             // Torsional and rolling impulses are shared evenly by the points for reporting.
             cp.spin_friction_impulse = c.spin_impulse / scalar(c.num_points);
-            cp.roll_friction_impulse = {c.roll_impulse[0] / scalar(c.num_points), c.roll_impulse[1] / scalar(c.num_points)};
+            cp.roll_friction_impulse = {c.roll_impulse[0] / scalar(c.num_points),
+                                        c.roll_impulse[1] / scalar(c.num_points)};
         }
     }
 }

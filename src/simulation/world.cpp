@@ -1,8 +1,4 @@
 #include "edyn/simulation/world.hpp"
-#include <chrono>
-#include <cmath>
-#include <stdexcept>
-#include <string>
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/should_collide.hpp"
@@ -17,6 +13,10 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/simulation/step.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace edyn {
 
@@ -45,8 +45,9 @@ void attach(registry &registry, const init_config &config) {
     if (is_attached(registry)) invalid("attach", "the registry is already attached");
     if (config.execution_mode != execution_mode::sequential) {
         invalid("attach", "execution_mode " +
-                              std::string(config.execution_mode == execution_mode::asynchronous ? "asynchronous"
-                                                                                              : "sequential_multithreaded") +
+                              std::string(config.execution_mode == execution_mode::asynchronous
+                                              ? "asynchronous"
+                                              : "sequential_multithreaded") +
                               " is not available yet; use execution_mode::sequential");
     }
     auto &s = registry.ctx().emplace<settings>();
@@ -118,7 +119,8 @@ void set_paused(registry &registry, bool paused) { world(registry).paused = paus
 bool is_paused(const registry &registry) { return registry.ctx().get<world_state>().paused; }
 
 void set_fixed_dt(registry &registry, scalar dt) {
-    if (!(dt > 0) || !std::isfinite(dt)) invalid("set_fixed_dt", "dt must be positive and finite, got " + std::to_string(dt));
+    if (!(dt > 0) || !std::isfinite(dt))
+        invalid("set_fixed_dt", "dt must be positive and finite, got " + std::to_string(dt));
     mutable_settings(registry).fixed_dt = dt;
 }
 scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fixed_dt; }
@@ -128,7 +130,8 @@ void set_gravity(registry &registry, const vector3 &gravity) {
     mutable_settings(registry).gravity = gravity;
     // Resting bodies must notice a new gravity.
     auto &w = world(registry);
-    for (auto e : registry.view<dynamic_tag, sleeping_tag>()) w.islands.wake_entity(registry, e);
+    for (auto e : registry.view<dynamic_tag, sleeping_tag>())
+        w.islands.wake_entity(registry, e);
 }
 vector3 get_gravity(const registry &registry) { return get_settings(registry).gravity; }
 
@@ -136,12 +139,16 @@ void set_solver_velocity_iterations(registry &registry, unsigned iterations) {
     if (iterations == 0) invalid("set_solver_velocity_iterations", "iterations must be at least 1");
     mutable_settings(registry).num_substeps = iterations;
 }
-unsigned get_solver_velocity_iterations(const registry &registry) { return get_settings(registry).num_substeps; }
+unsigned get_solver_velocity_iterations(const registry &registry) {
+    return get_settings(registry).num_substeps;
+}
 
 void set_solver_position_iterations(registry &registry, unsigned iterations) {
     mutable_settings(registry).num_relax_iterations = iterations;
 }
-unsigned get_solver_position_iterations(const registry &registry) { return get_settings(registry).num_relax_iterations; }
+unsigned get_solver_position_iterations(const registry &registry) {
+    return get_settings(registry).num_relax_iterations;
+}
 
 void set_solver_restitution_iterations(registry &registry, unsigned iterations) {
     mutable_settings(registry).num_restitution_iterations = iterations;
@@ -175,7 +182,11 @@ const settings &get_settings(const registry &registry) {
     return *s;
 }
 
-double get_simulation_time(const registry &registry) { return registry.ctx().get<world_state>().simulation_time; }
-std::uint64_t get_step_count(const registry &registry) { return registry.ctx().get<world_state>().step_count; }
+double get_simulation_time(const registry &registry) {
+    return registry.ctx().get<world_state>().simulation_time;
+}
+std::uint64_t get_step_count(const registry &registry) {
+    return registry.ctx().get<world_state>().step_count;
+}
 
 } // namespace edyn

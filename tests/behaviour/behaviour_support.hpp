@@ -1,9 +1,9 @@
 #ifndef EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
 #define EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
 
-#include <gtest/gtest.h>
 #include <cmath>
 #include <edyn/edyn.hpp>
+#include <gtest/gtest.h>
 
 namespace edyn::test {
 
@@ -17,7 +17,8 @@ struct world_fixture : ::testing::Test {
     // Runs whole fixed steps covering `seconds` of simulated time; returns the step count.
     int run_for(double seconds) {
         auto steps = int(std::lround(seconds / double(get_fixed_dt(reg))));
-        for (int i = 0; i < steps; ++i) step_simulation(reg);
+        for (int i = 0; i < steps; ++i)
+            step_simulation(reg);
         return steps;
     }
 

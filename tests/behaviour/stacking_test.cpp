@@ -14,7 +14,8 @@ TEST_F(stacking, pyramid_of_210_boxes_stands_for_ten_seconds) {
     run_for(10);
     auto moved = length(pos(top) - start);
     EXPECT_LT(moved, scalar(0.01)) << "top box moved " << moved << " m";
-    for (auto e : boxes) ASSERT_TRUE(isfinite(pos(e)));
+    for (auto e : boxes)
+        ASSERT_TRUE(isfinite(pos(e)));
 }
 
 TEST_F(stacking, tower_of_30_boxes_stands_for_ten_seconds) {

@@ -12,68 +12,115 @@ namespace edyn {
 // shapes do. No call allocates memory.
 
 // Sphere.
-void collide(const sphere_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const sphere_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const sphere_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const sphere_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const sphere_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const sphere_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const sphere_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const sphere_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const sphere_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const sphere_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Plane (only against non-plane shapes).
-void collide(const plane_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const plane_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const plane_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const plane_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const plane_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const plane_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const plane_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const plane_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Box.
 void collide(const box_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const box_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const box_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const box_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const box_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const box_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Capsule.
-void collide(const capsule_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const capsule_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const capsule_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const capsule_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const capsule_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const capsule_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Cylinder.
-void collide(const cylinder_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const cylinder_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const cylinder_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const cylinder_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const cylinder_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const cylinder_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Polyhedron (SAT over face normals and edge pairs; featureA/featureB are not reported).
-void collide(const polyhedron_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const polyhedron_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const polyhedron_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const polyhedron_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const sphere_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const plane_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const box_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const capsule_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const polyhedron_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const sphere_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const plane_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Compound: through its children (a tree over them when there are many). Features carry the
 // child index in `part`; where the child's own pair reports no feature, the compound's feature is
 // {std::monostate, 0, part}.
-void collide(const compound_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const compound_shape &a, const sphere_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const compound_shape &a, const plane_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const compound_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const compound_shape &a, const capsule_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const compound_shape &a, const cylinder_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const compound_shape &a, const polyhedron_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const sphere_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const plane_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const box_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const capsule_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const cylinder_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
-void collide(const polyhedron_shape &a, const compound_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const compound_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const plane_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const sphere_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const plane_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
 
 // Any two shapes of a rigid body. Plane against plane reports nothing (both are static).
 void collide(const shapes_variant_t &a, const shapes_variant_t &b, const collision_context &ctx,

@@ -1,11 +1,11 @@
 #ifndef EDYN_COLLISION_COLLISION_RESULT_HPP
 #define EDYN_COLLISION_COLLISION_RESULT_HPP
 
+#include "edyn/collision/collision_feature.hpp"
+#include "edyn/math/quaternion.hpp"
 #include <array>
 #include <cstdint>
 #include <optional>
-#include "edyn/collision/collision_feature.hpp"
-#include "edyn/math/quaternion.hpp"
 
 namespace edyn {
 

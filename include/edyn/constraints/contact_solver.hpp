@@ -1,18 +1,18 @@
 #ifndef EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 #define EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 
+#include "edyn/dynamics/solver_body.hpp"
 #include <array>
 #include <cstdint>
 #include <span>
-#include "edyn/dynamics/solver_body.hpp"
 
 namespace edyn {
 
 // One point of a contact as the solver sees it. Geometry is captured at the start of the step
 // (narrowphase output); the current separation is recovered from the bodies' accumulated motion.
 struct contact_solver_point {
-    vector3 rA, rB;                // contact points relative to each centre of mass, world space
-    vector3 normal;                // from B towards A
+    vector3 rA, rB; // contact points relative to each centre of mass, world space
+    vector3 normal; // from B towards A
     vector3 tangent[2];
     scalar adjusted_separation{0}; // separation minus dot(normal, rA - rB)
     scalar normal_mass{0};

@@ -1,8 +1,8 @@
 #ifndef EDYN_DYNAMICS_INTEGRATION_HPP
 #define EDYN_DYNAMICS_INTEGRATION_HPP
 
-#include <span>
 #include "edyn/dynamics/solver_body.hpp"
+#include <span>
 
 namespace edyn {
 

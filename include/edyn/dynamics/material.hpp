@@ -1,9 +1,9 @@
 #ifndef EDYN_DYNAMICS_MATERIAL_HPP
 #define EDYN_DYNAMICS_MATERIAL_HPP
 
+#include "edyn/math/scalar.hpp"
 #include <cstdint>
 #include <limits>
-#include "edyn/math/scalar.hpp"
 
 namespace edyn {
 

@@ -1,12 +1,12 @@
 #ifndef EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 #define EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 
+#include "edyn/dynamics/material.hpp"
+#include "edyn/ecs/registry.hpp"
 #include <cmath>
 #include <map>
 #include <optional>
 #include <utility>
-#include "edyn/dynamics/material.hpp"
-#include "edyn/ecs/registry.hpp"
 
 namespace edyn {
 

@@ -1,9 +1,9 @@
 #ifndef EDYN_DYNAMICS_RIGIDBODY_HPP
 #define EDYN_DYNAMICS_RIGIDBODY_HPP
 
-#include <optional>
 #include "edyn/dynamics/rigidbody_def.hpp"
 #include "edyn/ecs/registry.hpp"
+#include <optional>
 
 namespace edyn {
 
@@ -42,7 +42,8 @@ vector3 get_rigidbody_origin(const registry &registry, entity entity);
 void rigidbody_set_mass(registry &registry, entity entity, scalar mass);
 
 // Applies an impulse at a point given relative to the centre of mass, in world space.
-void rigidbody_apply_impulse(registry &registry, entity entity, const vector3 &impulse, const vector3 &rel_location);
+void rigidbody_apply_impulse(registry &registry, entity entity, const vector3 &impulse,
+                             const vector3 &rel_location);
 
 // Recomputes the body's AABB component from its shape and current transform.
 void update_rigidbody_aabb(registry &registry, entity entity);

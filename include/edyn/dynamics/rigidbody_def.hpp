@@ -1,11 +1,11 @@
 #ifndef EDYN_DYNAMICS_RIGIDBODY_DEF_HPP
 #define EDYN_DYNAMICS_RIGIDBODY_DEF_HPP
 
-#include <cstdint>
-#include <optional>
 #include "edyn/dynamics/material.hpp"
 #include "edyn/math/matrix3x3.hpp"
 #include "edyn/shapes/shapes.hpp"
+#include <cstdint>
+#include <optional>
 
 namespace edyn {
 

@@ -1,8 +1,8 @@
 #ifndef EDYN_DYNAMICS_SOLVER_BODY_HPP
 #define EDYN_DYNAMICS_SOLVER_BODY_HPP
 
-#include <cstdint>
 #include "edyn/math/matrix3x3.hpp"
+#include <cstdint>
 
 namespace edyn {
 

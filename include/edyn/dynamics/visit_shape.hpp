@@ -1,10 +1,10 @@
 #ifndef EDYN_DYNAMICS_VISIT_SHAPE_HPP
 #define EDYN_DYNAMICS_VISIT_SHAPE_HPP
 
-#include <utility>
 #include "edyn/dynamics/shape_index.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/shapes/shapes.hpp"
+#include <utility>
 
 namespace edyn {
 
@@ -13,14 +13,16 @@ namespace edyn {
 template<typename Fn>
 decltype(auto) visit_shape(const registry &registry, entity entity, Fn &&fn) {
     auto index = registry.get<shape_index>(entity).value;
-    return [&]<std::size_t... I>(std::index_sequence<I...>) -> decltype(auto) {
-        using result_t = decltype(fn(std::declval<const std::variant_alternative_t<0, shapes_variant_t> &>()));
+    return [&]<std::size_t... I>(std::index_sequence<I...>)->decltype(auto) {
+        using result_t =
+            decltype(fn(std::declval<const std::variant_alternative_t<0, shapes_variant_t> &>()));
         using table_t = result_t (*)(const edyn::registry &, edyn::entity, Fn &);
         static constexpr table_t table[] = {[](const edyn::registry &reg, edyn::entity e, Fn &f) -> result_t {
             return f(reg.get<std::variant_alternative_t<I, shapes_variant_t>>(e));
         }...};
         return table[index](registry, entity, fn);
-    }(std::make_index_sequence<num_shapes>{});
+    }
+    (std::make_index_sequence<num_shapes>{});
 }
 
 } // namespace edyn

@@ -140,11 +140,10 @@ private:
             slots.resize(id + 1, no_slot);
         }
         entries.reserve(entries.size() + 1);
-        auto value = std::unique_ptr<Type>(
-            new Type(detail::make_component<Type>(std::forward<Args>(args)...)));
+        auto value =
+            std::unique_ptr<Type>(new Type(detail::make_component<Type>(std::forward<Args>(args)...)));
         auto *pointer = value.get();
-        entries.push_back(
-            {std::unique_ptr<void, deleter_type>(value.release(), &destroy<Type>), id});
+        entries.push_back({std::unique_ptr<void, deleter_type>(value.release(), &destroy<Type>), id});
         slots[id] = entries.size() - 1;
         return *pointer;
     }

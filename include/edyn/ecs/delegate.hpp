@@ -70,9 +70,8 @@ public:
     // functions (value is the object) and free functions taking the payload by reference.
     template<auto Candidate, typename Type>
     void connect(Type &value_or_instance) noexcept {
-        static_assert(
-            std::is_invocable_r_v<Ret, decltype(Candidate), Type &, Args...>,
-            "delegate::connect: candidate cannot be called with this instance and arguments");
+        static_assert(std::is_invocable_r_v<Ret, decltype(Candidate), Type &, Args...>,
+                      "delegate::connect: candidate cannot be called with this instance and arguments");
         instance = &value_or_instance;
         function = [](const void *payload, Args... args) -> Ret {
             auto *typed = static_cast<Type *>(const_cast<void *>(payload));
@@ -88,9 +87,8 @@ public:
             EDYN_ASSERT(value_or_instance != nullptr, "delegate::connect: null instance");
             connect<Candidate>(*value_or_instance);
         } else {
-            static_assert(
-                std::is_invocable_r_v<Ret, decltype(Candidate), Type *, Args...>,
-                "delegate::connect: candidate cannot be called with this pointer and arguments");
+            static_assert(std::is_invocable_r_v<Ret, decltype(Candidate), Type *, Args...>,
+                          "delegate::connect: candidate cannot be called with this pointer and arguments");
             instance = value_or_instance;
             function = [](const void *payload, Args... args) -> Ret {
                 auto *typed = static_cast<Type *>(const_cast<void *>(payload));
@@ -152,13 +150,12 @@ struct bound_signature<Ret (*)(First, Args...)> {
 };
 
 template<typename Ret, typename First, typename... Args>
-struct bound_signature<Ret (*)(First, Args...) noexcept>
-    : bound_signature<Ret (*)(First, Args...)> {};
+struct bound_signature<Ret (*)(First, Args...) noexcept> : bound_signature<Ret (*)(First, Args...)> {};
 
-#define EDYN_DETAIL_MEMBER_SIGNATURE(qualifiers)                                                   \
-    template<typename Ret, typename Class, typename... Args>                                       \
-    struct bound_signature<Ret (Class::*)(Args...) qualifiers> {                                   \
-        using type = Ret(Args...);                                                                 \
+#define EDYN_DETAIL_MEMBER_SIGNATURE(qualifiers)                                                             \
+    template<typename Ret, typename Class, typename... Args>                                                 \
+    struct bound_signature<Ret (Class::*)(Args...) qualifiers> {                                             \
+        using type = Ret(Args...);                                                                           \
     };
 EDYN_DETAIL_MEMBER_SIGNATURE()
 EDYN_DETAIL_MEMBER_SIGNATURE(const)

@@ -31,9 +31,7 @@ struct entity_traits {
 }
 
 // EnTT's name for the index part.
-[[nodiscard]] constexpr entity_traits::value_type to_entity(entity e) noexcept {
-    return to_index(e);
-}
+[[nodiscard]] constexpr entity_traits::value_type to_entity(entity e) noexcept { return to_index(e); }
 
 [[nodiscard]] constexpr entity_traits::value_type to_version(entity e) noexcept {
     return to_integral(e) >> entity_traits::index_bits;
@@ -48,9 +46,7 @@ struct entity_traits {
 // The type of `edyn::null`. Like EnTT's, it compares equal to any entity whose index is the
 // reserved all-ones index, whatever its version, and converts to the all-ones entity.
 struct null_t {
-    [[nodiscard]] constexpr operator entity() const noexcept {
-        return entity{~entity_traits::value_type{}};
-    }
+    [[nodiscard]] constexpr operator entity() const noexcept { return entity{~entity_traits::value_type{}}; }
 
     [[nodiscard]] friend constexpr bool operator==(null_t, null_t) noexcept { return true; }
 

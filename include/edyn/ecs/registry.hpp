@@ -35,8 +35,7 @@ namespace detail {
     return text;
 }
 
-[[noreturn]] inline void throw_invalid_entity(std::string_view function, entity e,
-                                              std::string_view type) {
+[[noreturn]] inline void throw_invalid_entity(std::string_view function, entity e, std::string_view type) {
     auto message = std::string(function) + ": " + describe(e) + " is not valid";
     if (!type.empty()) {
         message += " (component " + std::string(type) + ")";
@@ -44,10 +43,9 @@ namespace detail {
     throw std::invalid_argument(message);
 }
 
-[[noreturn]] inline void throw_has_component(std::string_view function, entity e,
-                                             std::string_view type) {
-    throw std::invalid_argument(std::string(function) + ": " + describe(e) +
-                                " already has component " + std::string(type));
+[[noreturn]] inline void throw_has_component(std::string_view function, entity e, std::string_view type) {
+    throw std::invalid_argument(std::string(function) + ": " + describe(e) + " already has component " +
+                                std::string(type));
 }
 
 } // namespace detail
@@ -182,9 +180,7 @@ public:
     [[nodiscard]] bool valid(entity e) const noexcept { return ids.valid(e); }
 
     // The version the slot of `e` has now (the version a new entity there would get if free).
-    [[nodiscard]] entity_traits::value_type current(entity e) const noexcept {
-        return ids.current(e);
-    }
+    [[nodiscard]] entity_traits::value_type current(entity e) const noexcept { return ids.current(e); }
 
     // Number of entities alive.
     [[nodiscard]] size_type alive() const noexcept { return ids.alive(); }
@@ -388,8 +384,7 @@ public:
     [[nodiscard]] basic_view<get_t<Type...>, exclude_t<Exclude...>>
     view(exclude_t<Exclude...> = exclude_t<Exclude...>{}) {
         using filter_type = std::array<const sparse_set *, sizeof...(Exclude)>;
-        return {assure<std::remove_const_t<Type>>().pool...,
-                filter_type{&assure<Exclude>().pool...}};
+        return {assure<std::remove_const_t<Type>>().pool..., filter_type{&assure<Exclude>().pool...}};
     }
 
     template<typename... Type, typename... Exclude>
@@ -432,8 +427,7 @@ private:
 
     template<typename Type>
     void create_pool(std::size_t id) {
-        pool_record record{std::make_unique<edyn::storage<Type>>(),
-                           std::make_unique<pool_signals>()};
+        pool_record record{std::make_unique<edyn::storage<Type>>(), std::make_unique<pool_signals>()};
         if (id >= slots.size()) {
             slots.resize(id + 1);
         }

@@ -50,9 +50,7 @@ public:
             : packed(packed)
             , offset(offset) {}
 
-        reference operator*() const noexcept {
-            return (*packed)[static_cast<size_type>(offset - 1)];
-        }
+        reference operator*() const noexcept { return (*packed)[static_cast<size_type>(offset - 1)]; }
         pointer operator->() const noexcept { return &**this; }
         reference operator[](difference_type n) const noexcept { return *(*this + n); }
 
@@ -88,17 +86,13 @@ public:
         friend difference_type operator-(const iterator &a, const iterator &b) noexcept {
             return b.offset - a.offset;
         }
-        friend bool operator==(const iterator &a, const iterator &b) noexcept {
-            return a.offset == b.offset;
-        }
+        friend bool operator==(const iterator &a, const iterator &b) noexcept { return a.offset == b.offset; }
         friend auto operator<=>(const iterator &a, const iterator &b) noexcept {
             return b.offset <=> a.offset;
         }
 
         // Position in the packed array of the entity this iterator points to.
-        [[nodiscard]] size_type index() const noexcept {
-            return static_cast<size_type>(offset - 1);
-        }
+        [[nodiscard]] size_type index() const noexcept { return static_cast<size_type>(offset - 1); }
 
     private:
         const std::vector<entity> *packed{nullptr};
@@ -141,9 +135,7 @@ public:
     }
 
     // Entity at a position of the packed array, or null past the end.
-    [[nodiscard]] entity at(size_type pos) const noexcept {
-        return pos < packed.size() ? packed[pos] : null;
-    }
+    [[nodiscard]] entity at(size_type pos) const noexcept { return pos < packed.size() ? packed[pos] : null; }
 
     [[nodiscard]] iterator begin() const noexcept {
         return {&packed, static_cast<std::ptrdiff_t>(packed.size())};

@@ -40,8 +40,7 @@ class storage final : public sparse_set {
 public:
     using value_type = Type;
     // A power of two, so that finding a component's page is a shift; pages are about 16 KiB.
-    static constexpr size_type page_capacity =
-        std::bit_floor(std::max<size_type>(1, 16384 / sizeof(Type)));
+    static constexpr size_type page_capacity = std::bit_floor(std::max<size_type>(1, 16384 / sizeof(Type)));
 
     storage() = default;
     ~storage() override { release_all(); }
@@ -81,9 +80,7 @@ public:
         return value_at(index(e));
     }
 
-    [[nodiscard]] Type *try_get(entity e) noexcept {
-        return contains(e) ? &value_at(index(e)) : nullptr;
-    }
+    [[nodiscard]] Type *try_get(entity e) noexcept { return contains(e) ? &value_at(index(e)) : nullptr; }
 
     [[nodiscard]] const Type *try_get(entity e) const noexcept {
         return contains(e) ? &value_at(index(e)) : nullptr;
@@ -154,9 +151,7 @@ private:
         return instance;
     }
 
-    Type *slot(size_type pos) const noexcept {
-        return pages[pos / page_capacity] + pos % page_capacity;
-    }
+    Type *slot(size_type pos) const noexcept { return pages[pos / page_capacity] + pos % page_capacity; }
 
     void assure_payload_page(size_type page) {
         if (page >= pages.size()) {

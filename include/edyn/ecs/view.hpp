@@ -33,8 +33,8 @@ struct get_t {
 namespace detail {
 
 template<typename Type>
-using storage_for_t = std::conditional_t<std::is_const_v<Type>,
-                                         const storage<std::remove_const_t<Type>>, storage<Type>>;
+using storage_for_t =
+    std::conditional_t<std::is_const_v<Type>, const storage<std::remove_const_t<Type>>, storage<Type>>;
 
 template<typename Type>
 inline constexpr bool is_tag_v = std::is_empty_v<std::remove_const_t<Type>>;
@@ -80,8 +80,7 @@ class basic_view<get_t<Get...>, exclude_t<Exclude...>> {
 
     template<typename Type>
     static constexpr std::size_t index_of() noexcept {
-        constexpr bool matches[] = {
-            std::is_same_v<std::remove_const_t<Type>, std::remove_const_t<Get>>...};
+        constexpr bool matches[] = {std::is_same_v<std::remove_const_t<Type>, std::remove_const_t<Get>>...};
         for (std::size_t i = 0; i < sizeof...(Get); ++i) {
             if (matches[i]) {
                 return i;
@@ -127,9 +126,7 @@ public:
             ++*this;
             return copy;
         }
-        friend bool operator==(const iterator &a, const iterator &b) noexcept {
-            return a.offset == b.offset;
-        }
+        friend bool operator==(const iterator &a, const iterator &b) noexcept { return a.offset == b.offset; }
 
     private:
         void skip() noexcept {
@@ -203,8 +200,7 @@ public:
     [[nodiscard]] size_type size_hint() const noexcept { return lead->size(); }
 
     // Exact number of entities; only single-component views without exclusions know it cheaply.
-    [[nodiscard]] size_type size() const noexcept
-        requires(sizeof...(Get) == 1 && sizeof...(Exclude) == 0) {
+    [[nodiscard]] size_type size() const noexcept requires(sizeof...(Get) == 1 && sizeof...(Exclude) == 0) {
         return lead->size();
     }
 
@@ -230,8 +226,7 @@ public:
     }
 
     [[nodiscard]] bool contains(entity e) const noexcept {
-        return std::apply([e](auto *...pool) { return (pool->contains(e) && ...); }, pools) &&
-               !excluded(e);
+        return std::apply([e](auto *...pool) { return (pool->contains(e) && ...); }, pools) && !excluded(e);
     }
 
     // `get<T>(e)` gives `T &`; `get<T, U>(e)` a tuple of references; `get(e)` all of them.
@@ -240,8 +235,7 @@ public:
     [[nodiscard]] decltype(auto) get(entity e) const noexcept {
         EDYN_ASSERT(contains(e), "view::get: entity is not in the view");
         if constexpr (sizeof...(Type) == 0) {
-            return std::apply([e](auto *...pool) { return std::tuple<Get &...>{pool->get(e)...}; },
-                              pools);
+            return std::apply([e](auto *...pool) { return std::tuple<Get &...>{pool->get(e)...}; }, pools);
         } else if constexpr (sizeof...(Type) == 1) {
             return (std::get<index_of<Type>()>(pools)->get(e), ...);
         } else {
@@ -253,8 +247,7 @@ public:
     // The pool of one of the view's component types.
     template<typename Type>
     [[nodiscard]] auto &storage() const noexcept {
-        static_assert(index_of<Type>() < sizeof...(Get),
-                      "view::storage: not a component of this view");
+        static_assert(index_of<Type>() < sizeof...(Get), "view::storage: not a component of this view");
         return *std::get<index_of<Type>()>(pools);
     }
 
@@ -269,9 +262,7 @@ public:
         each_dispatch(func, std::index_sequence_for<Get...>{});
     }
 
-    [[nodiscard]] each_range each() const noexcept {
-        return {each_iterator{begin()}, each_iterator{end()}};
-    }
+    [[nodiscard]] each_range each() const noexcept { return {each_iterator{begin()}, each_iterator{end()}}; }
 
 private:
     [[nodiscard]] bool accept(entity e) const noexcept {
@@ -335,9 +326,7 @@ private:
     [[nodiscard]] auto each_tuple(entity e) const {
         return std::tuple_cat(
             std::tuple<entity>{e},
-            std::apply(
-                [e](auto *...pool) { return std::tuple_cat(component_of<Get>(*pool, e)...); },
-                pools));
+            std::apply([e](auto *...pool) { return std::tuple_cat(component_of<Get>(*pool, e)...); }, pools));
     }
 
     template<typename Type, typename Pool>

@@ -50,9 +50,9 @@ inline constexpr scalar segment_parallel_tolerance = scalar(1e-3);
 // Closest points between the segments [a0, a1] and [b0, b1]. Degenerate segments (points) are
 // handled. When they are parallel (see segment_parallel_tolerance) and their projections on
 // A's line overlap by more than a rounding error, two pairs are returned (see above).
-segment_closest_points closest_points_segment_segment(const vector3 &a0, const vector3 &a1, const vector3 &b0,
-                                                      const vector3 &b1,
-                                                      scalar parallel_tolerance = segment_parallel_tolerance) noexcept;
+segment_closest_points
+closest_points_segment_segment(const vector3 &a0, const vector3 &a1, const vector3 &b0, const vector3 &b1,
+                               scalar parallel_tolerance = segment_parallel_tolerance) noexcept;
 
 // Support point of the segment [p0, p1] in direction `dir` (p0 on ties).
 inline vector3 support_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &dir) noexcept {
@@ -61,8 +61,8 @@ inline vector3 support_point_segment(const vector3 &p0, const vector3 &p1, const
 
 // Clips the parametric interval [t0, t1] of the line p + dir * t to the half-space
 // dot(normal, x) <= constant. Returns false when nothing is left.
-bool clip_line_interval(const vector3 &p, const vector3 &dir, const vector3 &normal, scalar constant, scalar &t0,
-                        scalar &t1) noexcept;
+bool clip_line_interval(const vector3 &p, const vector3 &dir, const vector3 &normal, scalar constant,
+                        scalar &t0, scalar &t1) noexcept;
 
 // Clips the segment [p0, p1] in place to the half-space dot(normal, x) <= constant. Returns
 // false (leaving p0, p1 unspecified) when nothing is left.
@@ -82,7 +82,8 @@ constexpr vector3 project_point_plane(const vector3 &normal, scalar constant, co
 
 // Closest point of the solid box to p (p itself when inside).
 constexpr vector3 closest_point_box(const vector3 &half_extents, const vector3 &p) noexcept {
-    return {std::clamp(p.x, -half_extents.x, half_extents.x), std::clamp(p.y, -half_extents.y, half_extents.y),
+    return {std::clamp(p.x, -half_extents.x, half_extents.x),
+            std::clamp(p.y, -half_extents.y, half_extents.y),
             std::clamp(p.z, -half_extents.z, half_extents.z)};
 }
 
@@ -114,13 +115,14 @@ int nearest_box_face(const vector3 &half_extents, const vector3 &p, scalar &sign
 // (0 when the segment touches or crosses the box); `t` receives the parameter of the point on
 // the segment, `on_segment` and `on_box` the two points. Exact: the squared distance is a
 // convex piecewise quadratic in t whose pieces are minimised in closed form.
-scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0, const vector3 &p1, scalar &t,
-                                  vector3 &on_segment, vector3 &on_box) noexcept;
+scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0, const vector3 &p1,
+                                  scalar &t, vector3 &on_segment, vector3 &on_box) noexcept;
 
 // Discs and circles (a cylinder's caps and rims).
 
 // Closest point to p on the solid disc of `radius` centred at `center` with unit `normal`.
-vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius, const vector3 &p) noexcept;
+vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius,
+                           const vector3 &p) noexcept;
 
 // Closest point to p on the circle of `radius` centred at `center` with unit `normal`. When p is
 // on the axis (every point is closest) the point along plane_space(normal)'s first vector.

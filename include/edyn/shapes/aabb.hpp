@@ -31,7 +31,9 @@ constexpr bool contains(const AABB &aabb, const vector3 &p) noexcept {
 }
 
 // Smallest box enclosing both.
-constexpr AABB enclosing_aabb(const AABB &a, const AABB &b) noexcept { return {min(a.min, b.min), max(a.max, b.max)}; }
+constexpr AABB enclosing_aabb(const AABB &a, const AABB &b) noexcept {
+    return {min(a.min, b.min), max(a.max, b.max)};
+}
 
 // Grows (positive `amount`) or shrinks the box by `amount` on every side.
 constexpr AABB inset(const AABB &aabb, const vector3 &amount) noexcept {

@@ -12,9 +12,12 @@ constexpr int coordinate_axis_index(coordinate_axis axis) noexcept { return stat
 
 constexpr vector3 coordinate_axis_vector(coordinate_axis axis) noexcept {
     switch (axis) {
-    case coordinate_axis::x: return vector3_x;
-    case coordinate_axis::y: return vector3_y;
-    default: return vector3_z;
+    case coordinate_axis::x:
+        return vector3_x;
+    case coordinate_axis::y:
+        return vector3_y;
+    default:
+        return vector3_z;
     }
 }
 

@@ -1,10 +1,10 @@
 #ifndef EDYN_SIMULATION_CONTACT_EVENTS_HPP
 #define EDYN_SIMULATION_CONTACT_EVENTS_HPP
 
-#include <cstdint>
-#include <vector>
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/ecs/registry.hpp"
+#include <cstdint>
+#include <vector>
 
 namespace edyn {
 

@@ -1,10 +1,10 @@
 #ifndef EDYN_SIMULATION_ISLAND_HPP
 #define EDYN_SIMULATION_ISLAND_HPP
 
-#include <cstdint>
-#include <vector>
 #include "edyn/ecs/entity.hpp"
 #include "edyn/math/scalar.hpp"
+#include <cstdint>
+#include <vector>
 
 namespace edyn {
 

@@ -1,10 +1,10 @@
 #ifndef EDYN_SIMULATION_ISLAND_MANAGER_HPP
 #define EDYN_SIMULATION_ISLAND_MANAGER_HPP
 
-#include <cstdint>
-#include <vector>
 #include "edyn/ecs/registry.hpp"
 #include "edyn/simulation/island.hpp"
+#include <cstdint>
+#include <vector>
 
 namespace edyn {
 
@@ -44,7 +44,6 @@ public:
 
     // Destroys every island entity (detach).
     void clear(registry &registry);
-
 
 private:
     entity create_island(registry &registry);

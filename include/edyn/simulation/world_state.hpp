@@ -1,13 +1,13 @@
 #ifndef EDYN_SIMULATION_WORLD_STATE_HPP
 #define EDYN_SIMULATION_WORLD_STATE_HPP
 
-#include <cstdint>
-#include <vector>
 #include "edyn/collision/broadphase.hpp"
 #include "edyn/collision/collision_result.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/simulation/island_manager.hpp"
+#include <cstdint>
+#include <vector>
 
 namespace edyn {
 

@@ -2,8 +2,8 @@
 #define EDYN_SCENES_SCENES_HPP
 
 #include <cstdint>
-#include <vector>
 #include <edyn/edyn.hpp>
+#include <vector>
 
 namespace edyn::scenes {
 

@@ -179,7 +179,8 @@ TEST(collide_box_test, apart_within_and_beyond_threshold) {
     ctx.posB = {0.2, 1.015, -0.1};
     auto r = run(box, box, ctx);
     ASSERT_EQ(r.num_points, 4u);
-    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(r.point[i].distance, 0.015, tol);
+    for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_NEAR(r.point[i].distance, 0.015, tol);
     expect_consistent(r, ctx, tol);
     ctx.posB.y = scalar(1.021);
     EXPECT_EQ(run(box, box, ctx).num_points, 0u);
@@ -484,7 +485,8 @@ TEST(collide_box_test, box_vertex_and_edge_indices_agree) {
         EXPECT_GT(detail::box_vertex(he, v0)[axis], 0) << "edge " << e;
         EXPECT_EQ(detail::box_edge_between(v0, v1), e);
         EXPECT_EQ(detail::box_edge_index(axis, detail::box_vertex(he, v1)), e);
-        auto f = detail::box_feature_at(he, (detail::box_vertex(he, v0) + detail::box_vertex(he, v1)) * scalar(0.5), 0);
+        auto f = detail::box_feature_at(
+            he, (detail::box_vertex(he, v0) + detail::box_vertex(he, v1)) * scalar(0.5), 0);
         expect_feature(f, box_feature::edge, e);
     }
     // The documented example: edge 8 runs along z on the +x, +y side; edge 1 along x at -y, +z.
@@ -508,8 +510,8 @@ TEST(collide_box_test, box_faces_are_counter_clockwise_from_outside) {
             EXPECT_GT(turn, 0) << "face " << f << " corner " << i;
         }
         EXPECT_EQ(detail::box_support_face(n * scalar(2) + vector3{0.1, 0.1, 0.1} * scalar(0.5)), f);
-        expect_feature(std::optional(detail::box_feature_at(he, n * he[detail::box_face_axis(f)] * scalar(0.999),
-                                                            scalar(0.01))),
+        expect_feature(std::optional(detail::box_feature_at(
+                           he, n * he[detail::box_face_axis(f)] * scalar(0.999), scalar(0.01))),
                        box_feature::face, f);
     }
     // Inside: nearest face.
@@ -523,7 +525,8 @@ TEST(collide_box_test, tagged_clipping_reports_incident_features) {
     vector3 ref_he{0.5, 0.5, 0.5};
     detail::clip_vertex polygon[4];
     detail::box_face_polygon({0.5, 0.5, 0.5}, 3, {0.8, 1, 0}, quaternion_identity, polygon);
-    for (auto &v : polygon) EXPECT_NEAR(v.position.y, 0.5, tol);
+    for (auto &v : polygon)
+        EXPECT_NEAR(v.position.y, 0.5, tol);
     detail::clip_vertex out[detail::max_clip_vertices];
     auto face = collision_feature{box_feature::face, 3};
     auto n = detail::clip_polygon_box_face_sides(polygon, 4, ref_he, 2, face, out);

@@ -23,7 +23,8 @@ collision_context with_plane_b(const vector3 &pos, const quaternion &orn, scalar
 
 scalar lowest_vertex(const vector3 &he, const collision_context &ctx) {
     auto lowest = large_scalar;
-    for (auto &v : box_vertices(he, ctx.posA, ctx.ornA)) lowest = std::min(lowest, v.y);
+    for (auto &v : box_vertices(he, ctx.posA, ctx.ornA))
+        lowest = std::min(lowest, v.y);
     return lowest;
 }
 
@@ -57,7 +58,7 @@ TEST(collide_plane_test, plane_sphere_tilted_plane_and_threshold) {
     auto n = normalize(vector3{1, 1, 0});
     plane_shape plane{n, 1};
     collision_context ctx;
-    ctx.posA = {7, 7, 7};  // ignored
+    ctx.posA = {7, 7, 7}; // ignored
     ctx.posB = n * scalar(1.3) + vector3{-2, 2, 5};
     ctx.threshold = 0.05;
     auto r = run(plane, sphere_shape{0.26}, ctx);
@@ -91,7 +92,8 @@ TEST(collide_plane_test, box_resting_face_down_gives_four_vertices) {
         EXPECT_NEAR(r.point[i].pivotB.y, 0, tol);
     }
     // Lower vertices: y negative, bit 1 set.
-    for (auto v : {2u, 3u, 6u, 7u}) EXPECT_TRUE(has_vertex(r, v)) << "vertex " << v;
+    for (auto v : {2u, 3u, 6u, 7u})
+        EXPECT_TRUE(has_vertex(r, v)) << "vertex " << v;
     expect_consistent(r, ctx, tol, false, true);
 }
 
@@ -100,7 +102,8 @@ TEST(collide_plane_test, box_on_edge_and_on_vertex) {
     auto ctx = with_plane_b({0, half_diag - scalar(0.01), 0}, quaternion_axis_angle(vector3_z, pi / 4));
     auto r = run(box_shape{0.5, 0.5, 0.5}, ground, ctx);
     ASSERT_EQ(r.num_points, 2u);
-    for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(r.point[i].distance, -0.01, tol);
+    for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_NEAR(r.point[i].distance, -0.01, tol);
     // Rotated +45 degrees about z, world height is (x + y) / sqrt2: the lowest edge is at -x, -y.
     EXPECT_TRUE(has_vertex(r, 3u));
     EXPECT_TRUE(has_vertex(r, 7u));
@@ -133,7 +136,8 @@ TEST(collide_plane_test, thin_box_with_large_threshold_keeps_four) {
     ASSERT_EQ(r.num_points, 4u);
     EXPECT_NEAR(min_distance(r), lowest_vertex({1, 0.05, 1}, ctx), tol);
     vector3 v[4];
-    for (int i = 0; i < 4; ++i) v[i] = r.point[i].pivotB;
+    for (int i = 0; i < 4; ++i)
+        v[i] = r.point[i].pivotB;
     EXPECT_GT(quadrilateral_area(v[0], v[1], v[2], v[3]), scalar(3.5));
 }
 

@@ -67,12 +67,13 @@ TEST(collide_sphere_test, concentric_spheres_separate_upwards) {
 TEST(collide_sphere_test, sphere_sphere_random_matches_closed_form) {
     rng random(11);
     for (int i = 0; i < 500; ++i) {
-        collision_context ctx{random.vec(-1, 1), random.orientation(), random.vec(-1, 1), random.orientation(),
-                              random.uniform(0, 0.3)};
+        collision_context ctx{random.vec(-1, 1), random.orientation(), random.vec(-1, 1),
+                              random.orientation(), random.uniform(0, 0.3)};
         sphere_shape a{random.uniform(0.05, 0.6)}, b{random.uniform(0.05, 0.6)};
         auto expected = distance(ctx.posA, ctx.posB) - a.radius - b.radius;
         auto r = run(a, b, ctx);
-        ASSERT_EQ(r.num_points, expected <= ctx.threshold ? 1u : 0u) << "case " << i << " distance " << expected;
+        ASSERT_EQ(r.num_points, expected <= ctx.threshold ? 1u : 0u)
+            << "case " << i << " distance " << expected;
         if (r.num_points == 0) continue;
         EXPECT_NEAR(r.point[0].distance, expected, tol) << "case " << i;
         EXPECT_NEAR(length(r.point[0].pivotA), a.radius, tol);
@@ -126,7 +127,7 @@ TEST(collide_sphere_test, sphere_near_box_edge_and_vertex) {
 TEST(collide_sphere_test, sphere_centre_inside_box_leaves_through_nearest_face) {
     collision_context ctx;
     ctx.posB = {5, 0, 0};
-    ctx.ornB = quaternion_axis_angle(vector3_y, half_pi);  // box -x face looks towards world +z
+    ctx.ornB = quaternion_axis_angle(vector3_y, half_pi); // box -x face looks towards world +z
     ctx.posA = ctx.posB + rotate(ctx.ornB, vector3{-0.9, 0.1, 0});
     auto r = run(sphere_shape{0.2}, box_shape{1, 0.5, 2}, ctx);
     ASSERT_EQ(r.num_points, 1u);
@@ -188,9 +189,11 @@ TEST(collide_sphere_test, sphere_box_random_matches_signed_distance) {
         sphere_shape sphere{random.uniform(0.05, 0.6)};
         collision_context ctx{random.vec(-1.5, 1.5), random.orientation(), random.vec(-0.5, 0.5),
                               random.orientation(), random.uniform(0, 0.2)};
-        auto expected = box_sdf(box.half_extents, to_object_space(ctx.posA, ctx.posB, ctx.ornB)) - sphere.radius;
+        auto expected =
+            box_sdf(box.half_extents, to_object_space(ctx.posA, ctx.posB, ctx.ornB)) - sphere.radius;
         auto r = run(sphere, box, ctx);
-        ASSERT_EQ(r.num_points, expected <= ctx.threshold ? 1u : 0u) << "case " << i << " distance " << expected;
+        ASSERT_EQ(r.num_points, expected <= ctx.threshold ? 1u : 0u)
+            << "case " << i << " distance " << expected;
         if (r.num_points == 0) continue;
         ++hits;
         auto &p = r.point[0];
@@ -283,7 +286,8 @@ TEST(collide_sphere_test, sphere_capsule_random_matches_segment_distance) {
         capsule_ends(capsule, ctx.posB, ctx.ornB, p0, p1);
         auto expected = point_segment_distance(p0, p1, ctx.posA) - capsule.radius - sphere.radius;
         auto r = run(sphere, capsule, ctx);
-        ASSERT_EQ(r.num_points, expected <= ctx.threshold ? 1u : 0u) << "case " << i << " distance " << expected;
+        ASSERT_EQ(r.num_points, expected <= ctx.threshold ? 1u : 0u)
+            << "case " << i << " distance " << expected;
         if (r.num_points == 0) continue;
         ++hits;
         auto &p = r.point[0];

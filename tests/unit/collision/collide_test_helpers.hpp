@@ -8,9 +8,9 @@
 #include "edyn/collision/collide.hpp"
 #include "edyn/math/math.hpp"
 #include "edyn/math/transform.hpp"
-#include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 #include <string>
 #include <vector>
@@ -39,7 +39,8 @@ void expect_feature(const std::optional<collision_feature> &f, Kind kind, std::u
 
 inline scalar min_distance(const collision_result &r) {
     auto d = large_scalar;
-    for (std::size_t i = 0; i < r.num_points; ++i) d = std::min(d, r.point[i].distance);
+    for (std::size_t i = 0; i < r.num_points; ++i)
+        d = std::min(d, r.point[i].distance);
     return d;
 }
 
@@ -79,7 +80,8 @@ inline void expect_consistent(const collision_result &r, const collision_context
 // Deterministic random numbers.
 struct rng {
     std::mt19937 engine;
-    explicit rng(unsigned seed) : engine(seed) {}
+    explicit rng(unsigned seed)
+        : engine(seed) {}
     scalar uniform(scalar lo, scalar hi) { return std::uniform_real_distribution<scalar>(lo, hi)(engine); }
     vector3 vec(scalar lo, scalar hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
     vector3 unit() {
@@ -116,7 +118,10 @@ scalar convex_min(F &&f) {
     double lo = 0, hi = 1;
     for (int i = 0; i < 100; ++i) {
         auto m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-        if (f(scalar(m1)) < f(scalar(m2))) hi = m2; else lo = m1;
+        if (f(scalar(m1)) < f(scalar(m2)))
+            hi = m2;
+        else
+            lo = m1;
     }
     return std::min({f(scalar(lo)), f(scalar(0)), f(scalar(1))});
 }
@@ -133,7 +138,8 @@ inline void capsule_ends(const capsule_shape &c, const vector3 &pos, const quate
 inline std::vector<vector3> box_vertices(const vector3 &he, const vector3 &pos, const quaternion &orn) {
     std::vector<vector3> v;
     for (int i = 0; i < 8; ++i) {
-        v.push_back(to_world_space({i & 1 ? -he.x : he.x, i & 2 ? -he.y : he.y, i & 4 ? -he.z : he.z}, pos, orn));
+        v.push_back(
+            to_world_space({i & 1 ? -he.x : he.x, i & 2 ? -he.y : he.y, i & 4 ? -he.z : he.z}, pos, orn));
     }
     return v;
 }
@@ -197,8 +203,10 @@ inline std::vector<vector3> candidate_directions(const quaternion &orn_a, const 
             if (length(c) > scalar(1e-3)) dirs.push_back(normalize(c));
         }
     }
-    for (auto &o : others) dirs.push_back(o);
-    for (int i = 0; i < num_random; ++i) dirs.push_back(random.unit());
+    for (auto &o : others)
+        dirs.push_back(o);
+    for (int i = 0; i < num_random; ++i)
+        dirs.push_back(random.unit());
     return dirs;
 }
 

@@ -62,37 +62,41 @@ TEST(collision_result_test, full_manifold_keeps_deepest_and_grows_area) {
     r.add_point(make({1, 0, 1}, -0.01));
     r.add_point(make({0.5, 0, 0.2}, -0.5)); // deepest, inside the triangle of the others
     ASSERT_EQ(r.num_points, 4u);
-    auto area_before = quadrilateral_area(r.point[0].pivotA, r.point[1].pivotA, r.point[2].pivotA,
-                                          r.point[3].pivotA);
+    auto area_before =
+        quadrilateral_area(r.point[0].pivotA, r.point[1].pivotA, r.point[2].pivotA, r.point[3].pivotA);
     // The missing corner of the square increases the area: it replaces a point, never the deepest.
     r.add_point(make({0, 0, 1}, -0.01));
     ASSERT_EQ(r.num_points, 4u);
     EXPECT_TRUE(contains(r, {0.5, 0, 0.2}));
     EXPECT_TRUE(contains(r, {0, 0, 1}));
-    auto area_after = quadrilateral_area(r.point[0].pivotA, r.point[1].pivotA, r.point[2].pivotA,
-                                         r.point[3].pivotA);
+    auto area_after =
+        quadrilateral_area(r.point[0].pivotA, r.point[1].pivotA, r.point[2].pivotA, r.point[3].pivotA);
     EXPECT_GT(area_after, area_before + scalar(0.05));
 }
 
 TEST(collision_result_test, full_manifold_rejects_point_that_shrinks_area) {
     collision_result r;
     vector3 corners[4] = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
-    for (auto &c : corners) r.add_point(make(c, -0.1));
+    for (auto &c : corners)
+        r.add_point(make(c, -0.1));
     r.add_point(make({0.5, 0, 0.5}, -0.05));
     ASSERT_EQ(r.num_points, 4u);
-    for (auto &c : corners) EXPECT_TRUE(contains(r, c));
+    for (auto &c : corners)
+        EXPECT_TRUE(contains(r, c));
 }
 
 TEST(collision_result_test, full_manifold_always_takes_a_new_deepest_point) {
     collision_result r;
     vector3 corners[4] = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
-    for (auto &c : corners) r.add_point(make(c, -0.1));
+    for (auto &c : corners)
+        r.add_point(make(c, -0.1));
     r.add_point(make({0.5, 0, 0.5}, -0.2));
     ASSERT_EQ(r.num_points, 4u);
     EXPECT_TRUE(contains(r, {0.5, 0, 0.5}));
     // Three corners remain.
     int kept = 0;
-    for (auto &c : corners) kept += contains(r, c);
+    for (auto &c : corners)
+        kept += contains(r, c);
     EXPECT_EQ(kept, 3);
 }
 
@@ -105,7 +109,8 @@ TEST(collision_result_test, reduction_of_an_octagon_keeps_a_large_quad) {
     ASSERT_EQ(r.num_points, 4u);
     EXPECT_TRUE(contains(r, {std::cos(pi2 * 3 / 8), 0, std::sin(pi2 * 3 / 8)}));
     vector3 v[4];
-    for (int i = 0; i < 4; ++i) v[i] = r.point[i].pivotA;
+    for (int i = 0; i < 4; ++i)
+        v[i] = r.point[i].pivotA;
     // The largest quad in a unit octagon is the square of area 2; greedy insertion must get
     // close to it.
     EXPECT_GE(quadrilateral_area(v[0], v[1], v[2], v[3]), scalar(1.7));

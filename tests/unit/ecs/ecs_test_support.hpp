@@ -8,9 +8,7 @@
 
 // GoogleTest prints a scoped enumeration as raw bytes; this makes failures show "entity 5v1".
 namespace edyn {
-inline void PrintTo(entity e, std::ostream *os) {
-    *os << "entity " << to_index(e) << 'v' << to_version(e);
-}
+inline void PrintTo(entity e, std::ostream *os) { *os << "entity " << to_index(e) << 'v' << to_version(e); }
 } // namespace edyn
 
 // Component types shared by the ecs tests. A named namespace keeps type names readable in the

@@ -29,8 +29,7 @@ struct counters {
     void destroy(registry &, entity) { ++destroys; }
 };
 
-void check_against_model(const registry &reg, const std::map<entity, model_entry> &model,
-                         int step) {
+void check_against_model(const registry &reg, const std::map<entity, model_entry> &model, int step) {
     ASSERT_EQ(reg.alive(), model.size()) << "step " << step;
     std::size_t positions = 0, masses = 0, tags = 0;
     for (const auto &[e, entry] : model) {
@@ -96,8 +95,7 @@ TEST(registry_model_test, random_operations_match_a_map_model) {
             entity e;
             if (!dead.empty() && op == 1) {
                 // A hinted create of a dead handle's index with a fresh version.
-                const auto stale =
-                    dead[std::uniform_int_distribution<std::size_t>(0, dead.size() - 1)(rng)];
+                const auto stale = dead[std::uniform_int_distribution<std::size_t>(0, dead.size() - 1)(rng)];
                 const auto hint = make_entity(to_index(stale), to_version(stale) + 7);
                 e = reg.create(hint);
                 if (model.count(hint) == 0 && !reg.valid(stale)) {

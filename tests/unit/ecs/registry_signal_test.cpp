@@ -95,8 +95,7 @@ TEST(registry_signal_test, update_fires_after_replace_and_patch) {
     reg.patch<position>(e, [](position &p) { p.x = 3; });
     reg.get<position>(e).x = 4;
     reg.patch<position>(e);
-    EXPECT_EQ(rec.events,
-              (events{"u:position:0:has:2", "u:position:0:has:3", "u:position:0:has:4"}));
+    EXPECT_EQ(rec.events, (events{"u:position:0:has:2", "u:position:0:has:3", "u:position:0:has:4"}));
 }
 
 TEST(registry_signal_test, emplace_or_replace_fires_construct_then_update) {
@@ -120,8 +119,7 @@ TEST(registry_signal_test, remove_and_erase_fire_destroy_before_removal) {
     rec.events.clear();
     reg.remove<position, tag>(e);
     reg.remove<position>(e);
-    EXPECT_EQ(rec.events, (events{"d:position:0:has:7", "d:tag:0:has"}))
-        << "nothing for the absent one";
+    EXPECT_EQ(rec.events, (events{"d:position:0:has:7", "d:tag:0:has"})) << "nothing for the absent one";
     rec.events.clear();
     reg.emplace<position>(e, 8.f);
     reg.erase<position>(e);
@@ -136,8 +134,7 @@ TEST(registry_signal_test, clear_fires_destroy_for_each_component) {
     }
     rec.watch<position>(reg, "position");
     reg.clear<position>();
-    EXPECT_EQ(rec.events,
-              (events{"d:position:2:has:2", "d:position:1:has:1", "d:position:0:has:0"}));
+    EXPECT_EQ(rec.events, (events{"d:position:2:has:2", "d:position:1:has:1", "d:position:0:has:0"}));
     EXPECT_EQ(reg.alive(), 3u);
     rec.events.clear();
     reg.emplace<position>(reg.create(), 9.f);
@@ -186,8 +183,7 @@ TEST(registry_signal_test, listeners_may_modify_the_registry) {
     for (int i = 0; i < 100; ++i) {
         entities.push_back(reg.create());
         auto &p = reg.emplace<position>(entities.back(), float(i));
-        EXPECT_EQ(p.x, float(i))
-            << "emplace returns the component even after listeners changed pools";
+        EXPECT_EQ(p.x, float(i)) << "emplace returns the component even after listeners changed pools";
     }
     EXPECT_EQ(reg.storage<tag>().size(), 100u);
     EXPECT_EQ(reg.storage<mass>().size(), 100u);

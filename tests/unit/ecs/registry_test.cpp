@@ -290,8 +290,8 @@ TEST(registry_test, get_and_try_get_single_and_several) {
     reg.emplace<position>(e, 1.f);
     reg.emplace<velocity>(e, 2.f);
     static_assert(std::is_same_v<decltype(reg.get<position>(e)), position &>);
-    static_assert(std::is_same_v<decltype(reg.get<position, velocity>(e)),
-                                 std::tuple<position &, velocity &>>);
+    static_assert(
+        std::is_same_v<decltype(reg.get<position, velocity>(e)), std::tuple<position &, velocity &>>);
     auto [p, v] = reg.get<position, velocity>(e);
     p.x = 5;
     EXPECT_EQ(reg.get<position>(e).x, 5.f);
@@ -369,8 +369,7 @@ TEST(registry_test, storage_exposes_the_pool) {
 
     const registry &cref = reg;
     EXPECT_EQ(&cref.storage<position>(), &pool);
-    EXPECT_TRUE(cref.storage<mass>().empty())
-        << "const access to a missing pool gives an empty one";
+    EXPECT_TRUE(cref.storage<mass>().empty()) << "const access to a missing pool gives an empty one";
 }
 
 TEST(registry_test, each_visits_alive_entities_and_allows_destroying_them) {
@@ -427,8 +426,7 @@ TEST(registry_test, insert_emplaces_copies_or_throws_adding_nothing) {
         entities.push_back(reg.create());
     }
     reg.emplace<position>(entities[2]);
-    EXPECT_THROW(reg.insert(entities.begin(), entities.end(), position{1, 1, 1}),
-                 std::invalid_argument);
+    EXPECT_THROW(reg.insert(entities.begin(), entities.end(), position{1, 1, 1}), std::invalid_argument);
     EXPECT_EQ(reg.storage<position>().size(), 1u);
     reg.remove<position>(entities[2]);
     reg.insert(entities.begin(), entities.end(), position{1, 1, 1});

@@ -117,8 +117,7 @@ TEST(delegate_test, equality_compares_function_and_instance) {
 TEST(delegate_test, runtime_function_pointer_and_payload) {
     int payload = 3;
     delegate<int(int)> d;
-    d.connect([](const void *data, int x) { return *static_cast<const int *>(data) * x; },
-              &payload);
+    d.connect([](const void *data, int x) { return *static_cast<const int *>(data) * x; }, &payload);
     EXPECT_EQ(d(5), 15);
 }
 

@@ -87,8 +87,7 @@ TEST_F(view_test, each_passes_entity_and_components_or_only_components) {
         seen.push_back(e);
         sum += p.x + v.x;
     });
-    EXPECT_EQ(seen, (std::vector<entity>{entities[8], entities[6], entities[4], entities[2],
-                                         entities[0]}));
+    EXPECT_EQ(seen, (std::vector<entity>{entities[8], entities[6], entities[4], entities[2], entities[0]}));
     EXPECT_EQ(sum, 20.f + 200.f);
 
     reg.view<position, velocity>().each([](position &p, velocity &v) { p.y = v.x; });
@@ -131,8 +130,8 @@ TEST_F(view_test, get_on_the_view) {
     EXPECT_TRUE(view.contains(e));
     EXPECT_FALSE(view.contains(entities[3]));
     static_assert(std::is_same_v<decltype(view.get<position>(e)), position &>);
-    static_assert(std::is_same_v<decltype(view.get<velocity, position>(e)),
-                                 std::tuple<velocity &, position &>>);
+    static_assert(
+        std::is_same_v<decltype(view.get<velocity, position>(e)), std::tuple<velocity &, position &>>);
     EXPECT_EQ(&view.get<position>(e), &reg.get<position>(e));
     auto [v, p] = view.get<velocity, position>(e);
     EXPECT_EQ(v.x, 40.f);
@@ -162,8 +161,8 @@ TEST_F(view_test, range_for_over_each_gives_entity_and_components) {
 TEST_F(view_test, const_registry_gives_read_only_views) {
     const registry &cref = reg;
     auto view = cref.view<position, velocity>();
-    static_assert(std::is_same_v<decltype(view),
-                                 basic_view<get_t<const position, const velocity>, exclude_t<>>>);
+    static_assert(
+        std::is_same_v<decltype(view), basic_view<get_t<const position, const velocity>, exclude_t<>>>);
     static_assert(std::is_same_v<decltype(view.get<position>(entities[0])), const position &>);
     float sum = 0;
     view.each([&](const position &p, const velocity &) { sum += p.x; });

@@ -233,7 +233,8 @@ TEST(geom_test, clip_square_by_half_plane) {
     auto n = clip_polygon_half_plane(square, 4, {1, 0}, 0.5, out);
     ASSERT_EQ(n, 4u);
     EXPECT_NEAR(polygon_signed_area(out, n), 3, tol);
-    for (std::size_t i = 0; i < n; ++i) EXPECT_LE(out[i].x, 0.5 + tol);
+    for (std::size_t i = 0; i < n; ++i)
+        EXPECT_LE(out[i].x, 0.5 + tol);
     // Cutting off a corner adds a vertex.
     n = clip_polygon_half_plane(square, 4, normalize(vector2{1, 1}), std::sqrt(scalar(2)) * scalar(0.5), out);
     ASSERT_EQ(n, 5u);
@@ -251,7 +252,8 @@ TEST(geom_test, clip_half_space_3d) {
     vector3 out[5];
     auto n = clip_polygon_half_space(square, 4, {0, 0, 1}, 0, out);
     ASSERT_EQ(n, 4u);
-    for (std::size_t i = 0; i < n; ++i) EXPECT_LE(out[i].z, tol);
+    for (std::size_t i = 0; i < n; ++i)
+        EXPECT_LE(out[i].z, tol);
 }
 
 TEST(geom_test, clip_convex_polygons) {

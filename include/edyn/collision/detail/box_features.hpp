@@ -57,7 +57,8 @@ constexpr void box_edge_vertex_indices(unsigned edge, unsigned &v0, unsigned &v1
     v1 = bits | (1u << axis);
 }
 
-constexpr void box_edge_vertices(const vector3 &half_extents, unsigned edge, vector3 &v0, vector3 &v1) noexcept {
+constexpr void box_edge_vertices(const vector3 &half_extents, unsigned edge, vector3 &v0,
+                                 vector3 &v1) noexcept {
     unsigned i0 = 0, i1 = 0;
     box_edge_vertex_indices(edge, i0, i1);
     v0 = box_vertex(half_extents, i0);
@@ -78,7 +79,8 @@ constexpr void box_face_vertex_indices(unsigned face, unsigned (&indices)[4]) no
     }
 }
 
-constexpr void box_face_vertices(const vector3 &half_extents, unsigned face, vector3 (&vertices)[4]) noexcept {
+constexpr void box_face_vertices(const vector3 &half_extents, unsigned face,
+                                 vector3 (&vertices)[4]) noexcept {
     unsigned indices[4];
     box_face_vertex_indices(face, indices);
     for (int i = 0; i < 4; ++i) {
@@ -102,7 +104,8 @@ inline unsigned box_support_face(const vector3 &dir) noexcept {
 
 // Feature of the box surface at p, a point on (or within `tolerance` of) the surface: the
 // vertex, edge or face whose bounds p meets. A point inside the box gets its nearest face.
-inline collision_feature box_feature_at(const vector3 &half_extents, const vector3 &p, scalar tolerance) noexcept {
+inline collision_feature box_feature_at(const vector3 &half_extents, const vector3 &p,
+                                        scalar tolerance) noexcept {
     int on_bound[3];
     int count = 0;
     for (int k = 0; k < 3; ++k) {

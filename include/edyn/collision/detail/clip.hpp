@@ -26,8 +26,9 @@ inline constexpr std::size_t max_clip_vertices = 16;
 // `out` (room for n + 1). A vertex created on a polygon edge takes that edge's feature; the new
 // edge running along the plane takes `cut_feature` (normally the incident face). Returns the
 // number of vertices written.
-std::size_t clip_polygon_half_space(const clip_vertex *in, std::size_t n, const vector3 &normal, scalar constant,
-                                    const collision_feature &cut_feature, clip_vertex *out) noexcept;
+std::size_t clip_polygon_half_space(const clip_vertex *in, std::size_t n, const vector3 &normal,
+                                    scalar constant, const collision_feature &cut_feature,
+                                    clip_vertex *out) noexcept;
 
 // Clips the polygon `in` (n <= 12 vertices, in the reference box's space) against the four side
 // planes of face `face` of a box of `half_extents`: what remains projects onto the face.

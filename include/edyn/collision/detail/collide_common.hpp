@@ -9,8 +9,8 @@
 namespace edyn::detail {
 
 // Two points of one manifold whose pivots on A, or on B, are closer than this are one contact
-// (the same spot of one of the shapes): collision_result::add_point keeps the deeper. 1 mm: below what a solver can tell
-// apart for bodies of centimetre size and up, and far above the rounding of clipping.
+// (the same spot of one of the shapes): collision_result::add_point keeps the deeper. 1 mm: below what a
+// solver can tell apart for bodies of centimetre size and up, and far above the rounding of clipping.
 inline constexpr scalar contact_merge_distance = scalar(1e-3);
 
 // Separating-axis tests prefer face axes (and A's faces over B's): a candidate axis replaces the
@@ -28,8 +28,8 @@ constexpr bool sat_better(scalar candidate, scalar current) noexcept {
 // Builds a point from world-space points on A and B, their world normal (B towards A) and the
 // distance, expressing the pivots in each shape's object space.
 inline collision_result::collision_point make_point(const collision_context &ctx, const vector3 &world_on_a,
-                                                   const vector3 &world_on_b, const vector3 &normal,
-                                                   scalar distance) noexcept {
+                                                    const vector3 &world_on_b, const vector3 &normal,
+                                                    scalar distance) noexcept {
     collision_result::collision_point p;
     p.pivotA = to_object_space(world_on_a, ctx.posA, ctx.ornA);
     p.pivotB = to_object_space(world_on_b, ctx.posB, ctx.ornB);
@@ -72,7 +72,8 @@ inline constexpr scalar capsule_hemisphere_cosine = scalar(1e-4);
 
 // Feature of a capsule surface point whose segment parameter is s (0 at p0, 1 at p1) and whose
 // outward direction (from the segment) is `surface_dir`; `axis` as in capsule_segment, same frame.
-inline collision_feature capsule_feature_at(scalar s, const vector3 &surface_dir, const vector3 &axis) noexcept {
+inline collision_feature capsule_feature_at(scalar s, const vector3 &surface_dir,
+                                            const vector3 &axis) noexcept {
     auto c = dot(surface_dir, axis);
     if (s <= 0 && c > capsule_hemisphere_cosine) return {capsule_feature::hemisphere, 0};
     if (s >= 1 && c < -capsule_hemisphere_cosine) return {capsule_feature::hemisphere, 1};
