@@ -43,6 +43,7 @@
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/execution_mode.hpp"
 #include "edyn/simulation/island.hpp"
+#include "edyn/simulation/raycast.hpp"
 #include "edyn/simulation/settings.hpp"
 #include "edyn/simulation/world.hpp"
 
