@@ -58,10 +58,32 @@ void island_manager::remove_node(registry &registry, entity node) {
 
     // Edges of this node now join at most one island node; the split decides where they go.
     isle.may_split = true;
-    if (isle.nodes.empty()) {
-        for (auto edge : isle.edges)
-            registry.remove<island_resident, island_edge>(edge);
-        destroy_island(registry, island_entity);
+    if (isle.nodes.empty()) dissolve_empty(registry, island_entity);
+}
+
+void island_manager::dissolve_empty(registry &registry, entity island_entity) {
+    // Out of the list first, so that on_resident_destroyed sees these removals as internal.
+    auto edges = std::move(registry.get<island>(island_entity).edges);
+    for (auto edge : edges)
+        registry.remove<island_resident, island_edge>(edge);
+    destroy_island(registry, island_entity);
+}
+
+void island_manager::on_resident_destroyed(registry &registry, entity e) {
+    auto &resident = registry.get<island_resident>(e);
+    auto island_entity = resident.island_entity;
+    if (!registry.valid(island_entity)) return;
+    auto &isle = registry.get<island>(island_entity);
+    auto index = resident.index;
+    // Every removal made by the manager takes the entity out of its list first.
+    if (index < isle.edges.size() && isle.edges[index] == e) {
+        erase_resident(registry, isle.edges, e);
+        isle.may_split = true;
+    } else if (index < isle.nodes.size() && isle.nodes[index] == e) {
+        wake_island(registry, island_entity);
+        erase_resident(registry, isle.nodes, e);
+        isle.may_split = true;
+        if (isle.nodes.empty()) dissolve_empty(registry, island_entity);
     }
 }
 

@@ -41,6 +41,10 @@ void on_construct_dynamic(registry &registry, entity e) {
 
 void on_destroy_dynamic(registry &registry, entity e) { world(registry).islands.remove_node(registry, e); }
 
+void on_destroy_resident(registry &registry, entity e) {
+    world(registry).islands.on_resident_destroyed(registry, e);
+}
+
 void on_construct_static(registry &registry, entity e) { registry.remove<previous_transform>(e); }
 
 void on_destroy_static(registry &registry, entity e) {
@@ -144,6 +148,7 @@ void connect_registry_listeners(registry &registry) {
     registry.on_construct<AABB>().connect<&on_construct_aabb>();
     registry.on_destroy<AABB>().connect<&on_destroy_aabb>();
     registry.on_destroy<contact_manifold>().connect<&on_destroy_manifold>();
+    registry.on_destroy<island_resident>().connect<&on_destroy_resident>();
     registry.on_update<position>().connect<&on_update_transform>();
     registry.on_update<orientation>().connect<&on_update_transform>();
     connect_update<&on_update_wake>(registry, waking_components{});
@@ -162,6 +167,7 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_construct<AABB>().disconnect<&on_construct_aabb>();
     registry.on_destroy<AABB>().disconnect<&on_destroy_aabb>();
     registry.on_destroy<contact_manifold>().disconnect<&on_destroy_manifold>();
+    registry.on_destroy<island_resident>().disconnect<&on_destroy_resident>();
     registry.on_update<position>().disconnect<&on_update_transform>();
     registry.on_update<orientation>().disconnect<&on_update_transform>();
     disconnect_update<&on_update_wake>(registry, waking_components{});

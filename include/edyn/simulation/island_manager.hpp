@@ -29,6 +29,12 @@ public:
     // Removes `edge` from its island, if it is linked.
     void unlink_edge(registry &registry, entity edge);
 
+    // Listener of on_destroy<island_resident>: when an entity is destroyed, the registry may
+    // remove its island_resident before the component whose listener would unlink it (the order
+    // follows pool creation), so the entity is taken out of its island here in that case.
+    // Removals made by the manager itself are recognised and ignored.
+    void on_resident_destroyed(registry &registry, entity e);
+
     void wake_island(registry &registry, entity island_entity);
     // Wakes the island of `entity` (a node or a linked edge), if it sleeps.
     void wake_entity(registry &registry, entity entity);
@@ -50,6 +56,8 @@ private:
     void destroy_island(registry &registry, entity island_entity);
     void merge(registry &registry, entity into, entity from);
     void put_to_sleep(registry &registry, entity island_entity);
+    // Unlinks the edges of an island left with no node, and destroys it.
+    void dissolve_empty(registry &registry, entity island_entity);
 
     // Scratch: islands to visit while the island pool changes.
     std::vector<entity> candidates;

@@ -1,0 +1,131 @@
+#include "behaviour/behaviour_support.hpp"
+
+namespace edyn::test {
+namespace {
+
+struct sleeping : world_fixture {
+    entity ground;
+    void SetUp() override {
+        world_fixture::SetUp();
+        rigidbody_def def;
+        def.kind = rigidbody_kind::rb_static;
+        def.shape = plane_shape{vector3_y, 0};
+        ground = make_rigidbody(reg, def);
+    }
+    bool asleep(entity e) const { return reg.all_of<sleeping_tag>(e); }
+};
+
+TEST_F(sleeping, a_resting_box_falls_asleep_with_its_island) {
+    auto box = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    auto time_to_sleep = double(get_settings(reg).time_to_sleep);
+    // Awake while its timer runs.
+    run_for(time_to_sleep * 0.5);
+    EXPECT_FALSE(asleep(box));
+    run_for(1.0);
+    ASSERT_TRUE(asleep(box)) << "not asleep after " << time_to_sleep * 0.5 + 1 << " s";
+    auto island_entity = reg.get<island_resident>(box).island_entity;
+    EXPECT_TRUE(asleep(island_entity));
+    EXPECT_EQ(vel(box), vector3_zero);
+    EXPECT_EQ(angular(box), vector3_zero);
+    // A sleeping body does not move, however many steps run.
+    auto before = pos(box);
+    run_for(2.0);
+    EXPECT_EQ(pos(box), before);
+}
+
+TEST_F(sleeping, a_falling_body_stays_awake_and_sleeping_disabled_never_sleeps) {
+    auto faller = make_rigidbody(reg, sphere_def(0.5, {10, 100, 0}));
+    auto def = box_def({0.5, 0.5, 0.5}, {0, 0.5, 0});
+    def.sleeping_disabled = true;
+    auto insomniac = make_rigidbody(reg, def);
+    run_for(3.0);
+    EXPECT_FALSE(asleep(faller));
+    EXPECT_FALSE(asleep(insomniac));
+}
+
+TEST_F(sleeping, a_body_dropped_on_a_sleeping_stack_wakes_it) {
+    auto bottom = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    auto top = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 1.5, 0}));
+    run_for(3.0);
+    ASSERT_TRUE(asleep(bottom));
+    ASSERT_TRUE(asleep(top));
+
+    // A box, not a ball: a ball with no rolling friction would roll on for ever.
+    auto dropped = make_rigidbody(reg, box_def({0.3, 0.3, 0.3}, {0.2, 4, 0.1}, 5));
+    bool woke = false;
+    for (int i = 0; i < 120 && !woke; ++i) {
+        step_simulation(reg);
+        woke = !asleep(bottom) && !asleep(top);
+    }
+    EXPECT_TRUE(woke);
+    // One island now: the new contact joined it to the stack.
+    EXPECT_EQ(reg.get<island_resident>(dropped).island_entity, reg.get<island_resident>(bottom).island_entity);
+    // And it all settles and sleeps again.
+    run_for(5.0);
+    EXPECT_TRUE(asleep(bottom));
+    EXPECT_TRUE(asleep(dropped));
+}
+
+TEST_F(sleeping, changes_through_the_registry_or_edyns_functions_wake_a_body) {
+    auto box = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    run_for(2.0);
+    ASSERT_TRUE(asleep(box));
+
+    reg.patch<linvel>(box, [](linvel &v) { v = vector3{0, 5, 0}; });
+    EXPECT_FALSE(asleep(box));
+    step_simulation(reg);
+    EXPECT_GT(pos(box).y, 0.55) << "the patched velocity took effect";
+    run_for(4.0);
+    ASSERT_TRUE(asleep(box));
+
+    reg.replace<position>(box, vector3{3, 2, 0});
+    EXPECT_FALSE(asleep(box));
+    run_for(4.0);
+    ASSERT_TRUE(asleep(box));
+    EXPECT_NEAR(pos(box).x, 3, 0.01);
+    EXPECT_NEAR(pos(box).y, 0.5, 0.02);
+
+    rigidbody_apply_impulse(reg, box, {0, 0, 4}, vector3_zero);
+    EXPECT_FALSE(asleep(box));
+    step_simulation(reg);
+    EXPECT_GT(vel(box).z, 1);
+    run_for(4.0);
+    ASSERT_TRUE(asleep(box));
+
+    set_gravity(reg, {0, 9.8, 0});
+    EXPECT_FALSE(asleep(box));
+    run_for(0.5);
+    EXPECT_GT(pos(box).y, 1) << "the box falls up under the new gravity";
+}
+
+TEST_F(sleeping, separate_islands_sleep_independently) {
+    auto resting = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    // A dropped rolling away on the ground, far off: never slow enough to sleep.
+    auto def = sphere_def(0.5, {50, 0.5, 0});
+    def.linvel = {3, 0, 0};
+    auto roller = make_rigidbody(reg, def);
+    run_for(2.0);
+    EXPECT_TRUE(asleep(resting));
+    EXPECT_FALSE(asleep(roller));
+    EXPECT_NE(reg.get<island_resident>(resting).island_entity,
+              reg.get<island_resident>(roller).island_entity);
+}
+
+// Two boxes rest side by side, touching, in one island. Pulling one away must not keep the
+// other awake: the island splits before it sleeps.
+TEST_F(sleeping, an_island_that_comes_apart_splits_and_sleeps_in_parts) {
+    auto left = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {-0.5, 0.5, 0}));
+    auto right = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0.5, 0.5, 0}));
+    run_for(0.2);
+    ASSERT_EQ(reg.get<island_resident>(left).island_entity, reg.get<island_resident>(right).island_entity);
+    // Push the right box away; friction stops it a few metres off.
+    reg.patch<linvel>(right, [](linvel &v) { v = vector3{6, 0, 0}; });
+    run_for(6.0);
+    EXPECT_GT(pos(right).x, 2) << "the right box went away";
+    EXPECT_TRUE(asleep(left));
+    EXPECT_TRUE(asleep(right));
+    EXPECT_NE(reg.get<island_resident>(left).island_entity, reg.get<island_resident>(right).island_entity);
+}
+
+} // namespace
+} // namespace edyn::test

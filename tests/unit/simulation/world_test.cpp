@@ -1,0 +1,167 @@
+#include <cmath>
+#include <edyn/edyn.hpp>
+#include <gtest/gtest.h>
+#include <stdexcept>
+
+namespace edyn {
+namespace {
+
+entity make_ball(registry &reg, const vector3 &pos) {
+    rigidbody_def def;
+    def.shape = sphere_shape{0.5};
+    def.position = pos;
+    return make_rigidbody(reg, def);
+}
+
+TEST(world, attach_detach_attach_keeps_the_programs_entities) {
+    registry reg;
+    attach(reg);
+    EXPECT_TRUE(is_attached(reg));
+    EXPECT_THROW(attach(reg), std::invalid_argument);
+    auto ball = make_ball(reg, {0, 0.45, 0});
+    rigidbody_def ground;
+    ground.kind = rigidbody_kind::rb_static;
+    ground.shape = plane_shape{vector3_y, 0};
+    make_rigidbody(reg, ground);
+    struct user_data {
+        int value;
+    };
+    reg.emplace<user_data>(ball, 7);
+    step_simulation(reg); // a manifold entity now exists
+    ASSERT_GT(reg.storage<contact_manifold>().size(), 0u);
+
+    detach(reg);
+    EXPECT_FALSE(is_attached(reg));
+    EXPECT_TRUE(reg.valid(ball));
+    EXPECT_EQ(reg.get<user_data>(ball).value, 7);
+    EXPECT_FALSE(reg.any_of<position>(ball));
+    EXPECT_EQ(reg.storage<contact_manifold>().size(), 0u);
+    EXPECT_EQ(reg.storage<island>().size(), 0u);
+    EXPECT_THROW(step_simulation(reg), std::invalid_argument);
+
+    attach(reg);
+    auto again = make_ball(reg, {0, 5, 0});
+    for (int i = 0; i < 10; ++i)
+        step_simulation(reg);
+    EXPECT_LT(reg.get<position>(again).y, 5);
+    detach(reg);
+}
+
+TEST(world, modes_not_yet_available_are_refused) {
+    registry reg;
+    EXPECT_THROW(attach(reg, init_config{execution_mode::asynchronous}), std::invalid_argument);
+    EXPECT_THROW(attach(reg, init_config{execution_mode::sequential_multithreaded}), std::invalid_argument);
+    EXPECT_FALSE(is_attached(reg));
+    attach(reg, init_config{execution_mode::sequential});
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential);
+}
+
+TEST(world, update_runs_as_many_fixed_steps_as_the_time_asks_for) {
+    registry reg;
+    attach(reg);
+    auto dt = double(get_fixed_dt(reg));
+    EXPECT_NEAR(dt, 1.0 / 60, 1e-7);
+    update(reg, 100.0); // sets the start only
+    EXPECT_EQ(get_step_count(reg), 0u);
+    update(reg, 100.0 + 2.5 * dt);
+    EXPECT_EQ(get_step_count(reg), 2u);
+    update(reg, 100.0 + 3.6 * dt); // the half step left over plus 1.1 more
+    EXPECT_EQ(get_step_count(reg), 3u);
+    EXPECT_NEAR(get_simulation_time(reg), 3 * dt, 1e-6);
+    update(reg, 99.0); // time going backwards is no time
+    EXPECT_EQ(get_step_count(reg), 3u);
+    EXPECT_THROW(update(reg, std::nan("")), std::invalid_argument);
+}
+
+TEST(world, steps_per_update_are_capped_and_the_rest_dropped) {
+    registry reg;
+    attach(reg);
+    set_max_steps_per_update(reg, 4);
+    EXPECT_THROW(set_max_steps_per_update(reg, 0), std::invalid_argument);
+    update(reg, 0.0);
+    update(reg, 10.0); // a long stall
+    EXPECT_EQ(get_step_count(reg), 4u);
+    update(reg, 10.0 + get_fixed_dt(reg) * 1.01);
+    // Only one more step: the stall was not caught up with.
+    EXPECT_LE(get_step_count(reg), 6u);
+}
+
+TEST(world, pause_stops_update_but_not_step_simulation) {
+    registry reg;
+    attach(reg);
+    auto ball = make_ball(reg, {0, 10, 0});
+    update(reg, 0.0);
+    set_paused(reg, true);
+    EXPECT_TRUE(is_paused(reg));
+    update(reg, 1.0);
+    EXPECT_EQ(get_step_count(reg), 0u);
+    EXPECT_EQ(reg.get<position>(ball).y, 10);
+    step_simulation(reg);
+    EXPECT_EQ(get_step_count(reg), 1u);
+    EXPECT_LT(reg.get<position>(ball).y, 10);
+    set_paused(reg, false);
+    update(reg, 1.0 + 3.5 * double(get_fixed_dt(reg)));
+    EXPECT_EQ(get_step_count(reg), 4u);
+}
+
+// After update(), present_position lies between the last two steps, at the fraction of a step
+// of time left over.
+TEST(world, present_transforms_are_interpolated_between_the_last_two_steps) {
+    registry reg;
+    attach(reg);
+    set_gravity(reg, vector3_zero);
+    rigidbody_def def;
+    def.shape = sphere_shape{0.5};
+    def.linvel = {6, 0, 0};
+    def.angvel = {0, 3, 0};
+    auto ball = make_rigidbody(reg, def);
+    auto dt = double(get_fixed_dt(reg));
+
+    update(reg, 0.0);
+    update(reg, 2.25 * dt); // two steps and a quarter
+    ASSERT_EQ(get_step_count(reg), 2u);
+    auto x = reg.get<position>(ball).x;
+    EXPECT_NEAR(x, 6 * 2 * dt, 1e-5);
+    auto present = reg.get<present_position>(ball).x;
+    EXPECT_NEAR(present, 6 * 1.25 * dt, 1e-5) << "the present lags the last step by 3/4 of a step";
+    EXPECT_GT(present, 6 * dt - 1e-6);
+    EXPECT_LT(present, x);
+    auto present_angle = 2 * std::asin(reg.get<present_orientation>(ball).y);
+    EXPECT_NEAR(present_angle, 3 * 1.25 * dt, 1e-4);
+
+    // step_simulation sets the present to the step it ran.
+    step_simulation(reg);
+    EXPECT_EQ(reg.get<present_position>(ball).x, reg.get<position>(ball).x);
+}
+
+TEST(world, settings_are_validated_and_read_back) {
+    registry reg;
+    EXPECT_THROW(get_settings(reg), std::invalid_argument);
+    attach(reg);
+    EXPECT_THROW(set_fixed_dt(reg, 0), std::invalid_argument);
+    EXPECT_THROW(set_fixed_dt(reg, -1), std::invalid_argument);
+    EXPECT_THROW(set_fixed_dt(reg, std::numeric_limits<scalar>::quiet_NaN()), std::invalid_argument);
+    set_fixed_dt(reg, scalar(0.01));
+    EXPECT_EQ(get_fixed_dt(reg), scalar(0.01));
+    EXPECT_EQ(get_gravity(reg), (vector3{0, scalar(-9.8), 0}));
+    set_gravity(reg, {0, -1.62, 0});
+    EXPECT_EQ(get_gravity(reg).y, scalar(-1.62));
+    EXPECT_THROW(set_gravity(reg, {0, std::numeric_limits<scalar>::infinity(), 0}), std::invalid_argument);
+    EXPECT_THROW(set_solver_velocity_iterations(reg, 0), std::invalid_argument);
+    set_solver_velocity_iterations(reg, 4);
+    EXPECT_EQ(get_solver_velocity_iterations(reg), 4u);
+    set_solver_position_iterations(reg, 2);
+    EXPECT_EQ(get_solver_position_iterations(reg), 2u);
+    set_solver_restitution_iterations(reg, 0);
+    EXPECT_EQ(get_solver_restitution_iterations(reg), 0u);
+    set_solver_individual_restitution_iterations(reg, 3);
+    EXPECT_EQ(get_solver_individual_restitution_iterations(reg), 3u);
+
+    // The new fixed dt is used by the next step.
+    auto ball = make_ball(reg, {0, 10, 0});
+    step_simulation(reg);
+    EXPECT_NEAR(reg.get<linvel>(ball).y, -1.62 * 0.01, 1e-5);
+}
+
+} // namespace
+} // namespace edyn
