@@ -1,0 +1,136 @@
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <edyn/edyn.hpp>
+#include <edyn_scenes/scenes.hpp>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <map>
+#include <sstream>
+#include <string>
+
+// Same inputs, same build → bitwise the same transforms. The pile scene runs 300 steps and every
+// body's position, orientation and velocities are hashed (FNV-1a over their bytes, in the order
+// the bodies were made).
+
+namespace edyn {
+namespace {
+
+constexpr unsigned pile_bodies = 256;
+constexpr int pile_steps = 300;
+
+struct hasher {
+    std::uint64_t value{14695981039346656037ull};
+    void add(const void *data, std::size_t size) {
+        auto *bytes = static_cast<const unsigned char *>(data);
+        for (std::size_t i = 0; i < size; ++i) {
+            value ^= bytes[i];
+            value *= 1099511628211ull;
+        }
+    }
+    void add(const vector3 &v) { add(&v, sizeof(v)); }
+    void add(const quaternion &q) { add(&q, sizeof(q)); }
+};
+
+struct pile_run {
+    registry reg;
+    std::vector<entity> bodies;
+    pile_run() {
+        attach(reg);
+        scenes::make_ground(reg);
+        bodies = scenes::make_pile(reg, pile_bodies, 8, 2, scenes::pile_shapes::with_polyhedra);
+    }
+    ~pile_run() { detach(reg); }
+
+    std::uint64_t hash() const {
+        hasher h;
+        for (auto e : bodies) {
+            h.add(reg.get<position>(e));
+            h.add(reg.get<orientation>(e));
+            h.add(reg.get<linvel>(e));
+            h.add(reg.get<angvel>(e));
+        }
+        return h.value;
+    }
+};
+
+std::uint64_t run_pile() {
+    pile_run run;
+    for (int i = 0; i < pile_steps; ++i)
+        step_simulation(run.reg);
+    return run.hash();
+}
+
+std::string hex(std::uint64_t v) {
+    std::ostringstream s;
+    s << std::hex << v;
+    return s.str();
+}
+
+TEST(determinism, the_pile_gives_the_same_transforms_every_run) {
+    auto first = run_pile();
+    auto second = run_pile();
+    EXPECT_EQ(hex(first), hex(second));
+}
+
+// No state hidden outside the registry: two worlds stepped in turn match a world run alone.
+TEST(determinism, interleaved_worlds_do_not_affect_each_other) {
+    auto alone = run_pile();
+    pile_run a, b;
+    for (int i = 0; i < pile_steps; ++i) {
+        step_simulation(a.reg);
+        if (i % 3 != 0) step_simulation(b.reg);
+    }
+    EXPECT_EQ(hex(a.hash()), hex(alone));
+    EXPECT_NE(hex(b.hash()), hex(alone)) << "b ran fewer steps, so it must differ: the hash sees motion";
+}
+
+// The hash pinned for this compiler and scalar type. A change to the physics changes it: when
+// the change is intended, rerun with EDYN_UPDATE_GOLDEN=1 to record the new value.
+std::string build_key() {
+    std::ostringstream key;
+#if defined(__clang__)
+    key << "clang-" << __clang_major__;
+#elif defined(__GNUC__)
+    key << "gcc-" << __GNUC__;
+#else
+    key << "other";
+#endif
+    key << (sizeof(scalar) == 8 ? "-double" : "-float");
+    return key.str();
+}
+
+TEST(determinism, the_pile_matches_its_pinned_hash) {
+    const std::string path = EDYN_DETERMINISM_GOLDEN_FILE;
+    std::map<std::string, std::string> golden;
+    {
+        std::ifstream in(path);
+        std::string key, value;
+        while (in >> key >> value)
+            golden[key] = value;
+    }
+    auto key = build_key();
+    auto measured = hex(run_pile());
+
+    const char *update = std::getenv("EDYN_UPDATE_GOLDEN");
+    if (update && std::strcmp(update, "1") == 0) {
+        golden[key] = measured;
+        std::ofstream out(path);
+        for (auto &[k, v] : golden)
+            out << k << ' ' << v << '\n';
+        GTEST_SKIP() << "recorded " << key << ' ' << measured << " in " << path;
+    }
+    auto it = golden.find(key);
+    if (it == golden.end()) {
+        GTEST_SKIP() << "no hash pinned for " << key << " in " << path
+                     << "; run with EDYN_UPDATE_GOLDEN=1 to record " << measured;
+    }
+    EXPECT_EQ(measured, it->second) << "the pile's transforms after " << pile_steps << " steps changed for "
+                                    << key
+                                    << ". If the physics was changed on purpose, rerun this test with "
+                                       "EDYN_UPDATE_GOLDEN=1 and commit "
+                                    << path;
+}
+
+} // namespace
+} // namespace edyn
