@@ -43,10 +43,11 @@ struct inertia_world_inv : matrix3x3 {
 // Offset of the centre of mass from the body's origin, in object space. Only present on
 // bodies whose centre of mass differs from the origin.
 struct center_of_mass : vector3 {
-    center_of_mass &operator=(const vector3 &v) noexcept {
-        vector3::operator=(v);
-        return *this;
-    }
+    center_of_mass() = default;
+    constexpr center_of_mass(const vector3 &v) noexcept
+        : vector3(v) {}
+    constexpr center_of_mass(scalar x, scalar y, scalar z) noexcept
+        : vector3{x, y, z} {}
 };
 
 // Mass and inertia a dynamic body had before rigidbody_set_kind made it static or kinematic,

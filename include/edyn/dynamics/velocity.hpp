@@ -7,26 +7,29 @@ namespace edyn {
 
 // Linear velocity of the centre of mass, world space, m/s.
 struct linvel : vector3 {
-    linvel &operator=(const vector3 &v) noexcept {
-        vector3::operator=(v);
-        return *this;
-    }
+    linvel() = default;
+    constexpr linvel(const vector3 &v) noexcept
+        : vector3(v) {}
+    constexpr linvel(scalar x, scalar y, scalar z) noexcept
+        : vector3{x, y, z} {}
 };
 
 // Angular velocity, world space, rad/s.
 struct angvel : vector3 {
-    angvel &operator=(const vector3 &v) noexcept {
-        vector3::operator=(v);
-        return *this;
-    }
+    angvel() = default;
+    constexpr angvel(const vector3 &v) noexcept
+        : vector3(v) {}
+    constexpr angvel(scalar x, scalar y, scalar z) noexcept
+        : vector3{x, y, z} {}
 };
 
 // Per-body gravitational acceleration, overriding the world's (see set_gravity).
 struct gravity : vector3 {
-    gravity &operator=(const vector3 &v) noexcept {
-        vector3::operator=(v);
-        return *this;
-    }
+    gravity() = default;
+    constexpr gravity(const vector3 &v) noexcept
+        : vector3(v) {}
+    constexpr gravity(scalar x, scalar y, scalar z) noexcept
+        : vector3{x, y, z} {}
 };
 
 } // namespace edyn

@@ -165,3 +165,33 @@ TEST(world, settings_are_validated_and_read_back) {
 
 } // namespace
 } // namespace edyn
+
+namespace edyn {
+namespace {
+
+// The manual's components read and write like the vector or quaternion they hold.
+TEST(components, take_braced_coordinates_and_plain_vectors) {
+    registry reg;
+    auto e = reg.create();
+    reg.emplace<linvel>(e, 1, 2, 3);
+    reg.get<linvel>(e) = {0, 5, 0};
+    EXPECT_EQ(reg.get<linvel>(e), (vector3{0, 5, 0}));
+    vector3 v{4, 5, 6};
+    reg.get<linvel>(e) = v;
+    reg.get<linvel>(e) += vector3{1, 1, 1};
+    EXPECT_EQ(reg.get<linvel>(e), (vector3{5, 6, 7}));
+    reg.emplace_or_replace<angvel>(e, vector3{0, 0, 2});
+    reg.patch<angvel>(e, [](angvel &w) { w = {0, 0, 1}; });
+    EXPECT_EQ(reg.get<angvel>(e).z, 1);
+    reg.emplace<position>(e, vector3{1, 0, 0});
+    reg.replace<position>(e, 2, 0, 0);
+    EXPECT_EQ(reg.get<position>(e).x, 2);
+    reg.emplace<orientation>(e) = {0, 0, 0, 1};
+    reg.get<orientation>(e) = quaternion_axis_angle(vector3_y, scalar(0.5));
+    EXPECT_NEAR(reg.get<orientation>(e).y, std::sin(scalar(0.25)), 1e-6);
+    linvel zero{};
+    EXPECT_EQ(zero, vector3_zero);
+}
+
+} // namespace
+} // namespace edyn
