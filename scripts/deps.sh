@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
   libcli11-dev
+  libbullet-dev gnuplot-nox
 )
 
 missing=()

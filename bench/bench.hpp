@@ -1,0 +1,80 @@
+#ifndef EDYN_BENCH_BENCH_HPP
+#define EDYN_BENCH_BENCH_HPP
+
+// edyn-bench: the standard scenes simulated by edyn and by Bullet, one engine after the other,
+// with the same bodies, masses, materials and time step, so that the figures are a ratio
+// measured in one run on one machine.
+
+#include <cstddef>
+#include <cstdint>
+#include <edyn/edyn.hpp>
+#include <string>
+#include <vector>
+
+namespace edyn_bench {
+
+// One scene at one size. `size` is the pyramid's base width or the pile's body count.
+struct scene_spec {
+    std::string scene;
+    unsigned size{0};
+    unsigned steps{0};
+    unsigned warmup{0};
+    // Off by default in both engines: the figures are the cost of simulating the scene, not of
+    // skipping the bodies that came to rest.
+    bool sleeping{false};
+};
+
+// What one engine measured on one scene.
+struct run_result {
+    std::string scene;
+    std::string engine;
+    unsigned bodies{0}; // dynamic bodies
+    unsigned threads{1};
+    unsigned steps{0};    // steps simulated, warm-up included
+    unsigned measured{0}; // steps timed (after warm-up)
+    double median_ms{0};
+    double p95_ms{0};
+    double peak_rss_mb{0};
+    std::size_t contacts{0}; // contact points at the end
+    // Pyramid: top box displacement (m) at the end; pile: deepest penetration (m) at the end.
+    double stability{0};
+    std::string stability_metric;
+    bool ok{false};
+    std::string error;
+};
+
+// Builds `spec` in an attached edyn registry with the shared scene builders. Returns the body
+// whose displacement is the scene's stability figure (the pyramid's top box), or edyn::null.
+edyn::entity build_scene(edyn::registry &registry, const scene_spec &spec);
+
+// Name of the stability figure of a scene ("top_box_displacement_m", ...).
+std::string stability_metric(const std::string &scene);
+
+// Scenes edyn-bench knows, in the order `--scene all` runs them.
+std::vector<std::string> available_scenes();
+
+// Per-step times in milliseconds to the median and 95th percentile of the steps after warm-up.
+struct step_stats {
+    double median_ms{0};
+    double p95_ms{0};
+    unsigned measured{0};
+};
+step_stats summarize_steps(const std::vector<double> &step_ms, unsigned warmup);
+
+// Runs the scene with one engine in this process and fills every field but peak_rss_mb.
+run_result run_edyn(const scene_spec &spec);
+run_result run_bullet(const scene_spec &spec);
+
+// Peak resident memory of this process in MB (VmHWM), and a reset of that peak to the current
+// resident size, so that a measurement counts only what comes after it.
+double peak_rss_mb();
+void reset_peak_rss();
+
+// Writes the results as a JSON list of records.
+void write_json(const std::string &path, const std::vector<run_result> &results);
+// A markdown table of the results with the edyn/Bullet ratios of median time.
+std::string markdown_table(const std::vector<run_result> &results);
+
+} // namespace edyn_bench
+
+#endif // EDYN_BENCH_BENCH_HPP

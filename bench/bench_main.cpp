@@ -1,0 +1,244 @@
+// edyn-bench: runs the standard scenes with edyn and with Bullet, one engine after the other,
+// and prints a markdown table of ms/step, peak memory, contacts, stability and the edyn/Bullet
+// ratio; --json writes the records. Each (scene, engine) runs in a forked child process so that
+// its peak memory is its own and a crash in one engine does not hide the other's figures.
+#include "bench.hpp"
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace edyn_bench {
+namespace {
+
+struct options {
+    std::string scene{"all"};
+    std::vector<std::string> bodies{"standard"};
+    unsigned steps{0};
+    int warmup{-1};
+    unsigned threads{1};
+    std::string engine{"both"};
+    std::string json;
+    std::string markdown;
+    bool no_fork{false};
+    bool sleeping{false};
+};
+
+// Sizes of the standard set and of the quick set CTest runs.
+std::vector<unsigned> sizes_for(const std::string &scene, const std::string &set) {
+    if (set == "small") return scene == "pyramid" ? std::vector<unsigned>{4} : std::vector<unsigned>{64};
+    return scene == "pyramid" ? std::vector<unsigned>{20, 40, 100} : std::vector<unsigned>{1024, 4096, 16384};
+}
+
+// Steps of the standard set: 10 s for the pyramids, so that the top box's displacement is the
+// issue's figure, and enough for the piles to land and settle into a heap; the largest pile
+// gets fewer to keep the whole run to a few minutes on two cores.
+unsigned default_steps(const std::string &scene, unsigned size) {
+    if (scene == "pyramid") return 600;
+    return size > 4096 ? 300 : 600;
+}
+
+std::vector<scene_spec> make_specs(const options &opt) {
+    std::vector<std::string> scenes;
+    if (opt.scene == "all") {
+        scenes = available_scenes();
+    } else {
+        scenes = {opt.scene};
+    }
+    std::vector<scene_spec> specs;
+    for (const auto &scene : scenes) {
+        std::vector<unsigned> sizes;
+        for (const auto &b : opt.bodies) {
+            if (b == "standard" || b == "small") {
+                auto set = sizes_for(scene, b);
+                sizes.insert(sizes.end(), set.begin(), set.end());
+            } else {
+                sizes.push_back(static_cast<unsigned>(std::stoul(b)));
+            }
+        }
+        for (auto size : sizes) {
+            scene_spec spec;
+            spec.scene = scene;
+            spec.size = size;
+            spec.sleeping = opt.sleeping;
+            spec.steps = opt.steps > 0 ? opt.steps : default_steps(scene, size);
+            spec.warmup =
+                opt.warmup >= 0 ? static_cast<unsigned>(opt.warmup) : std::min(60u, spec.steps / 10);
+            specs.push_back(spec);
+        }
+    }
+    return specs;
+}
+
+run_result run_engine(const scene_spec &spec, const std::string &engine) {
+    run_result result;
+    try {
+        reset_peak_rss();
+        result = engine == "edyn" ? run_edyn(spec) : run_bullet(spec);
+        result.peak_rss_mb = peak_rss_mb();
+    } catch (const std::exception &e) {
+        result.scene = spec.scene;
+        result.engine = engine;
+        result.ok = false;
+        result.error = e.what();
+    }
+    return result;
+}
+
+// Fields cross the pipe one per line, in this order.
+std::string serialize(const run_result &r) {
+    std::ostringstream out;
+    out.precision(17);
+    auto error = r.error;
+    std::replace(error.begin(), error.end(), '\n', ' ');
+    out << r.ok << '\n'
+        << r.bodies << '\n'
+        << r.threads << '\n'
+        << r.steps << '\n'
+        << r.measured << '\n'
+        << r.median_ms << '\n'
+        << r.p95_ms << '\n'
+        << r.peak_rss_mb << '\n'
+        << r.contacts << '\n'
+        << r.stability << '\n'
+        << r.stability_metric << '\n'
+        << error << '\n';
+    return out.str();
+}
+
+run_result deserialize(const std::string &text, const scene_spec &spec, const std::string &engine) {
+    run_result r;
+    r.scene = spec.scene;
+    r.engine = engine;
+    std::istringstream in(text);
+    in >> r.ok >> r.bodies >> r.threads >> r.steps >> r.measured >> r.median_ms >> r.p95_ms >>
+        r.peak_rss_mb >> r.contacts >> r.stability;
+    in.ignore(1);
+    std::getline(in, r.stability_metric);
+    std::getline(in, r.error);
+    if (!in && !r.ok && r.error.empty()) r.error = "the child process sent no result";
+    return r;
+}
+
+run_result run_forked(const scene_spec &spec, const std::string &engine) {
+    int fds[2];
+    if (pipe(fds) != 0) throw std::runtime_error(std::string("edyn-bench: pipe: ") + std::strerror(errno));
+    std::fflush(stdout);
+    std::fflush(stderr);
+    auto pid = fork();
+    if (pid < 0) throw std::runtime_error(std::string("edyn-bench: fork: ") + std::strerror(errno));
+    if (pid == 0) {
+        close(fds[0]);
+        auto text = serialize(run_engine(spec, engine));
+        std::size_t written = 0;
+        while (written < text.size()) {
+            auto n = write(fds[1], text.data() + written, text.size() - written);
+            if (n <= 0) _exit(3);
+            written += static_cast<std::size_t>(n);
+        }
+        close(fds[1]);
+        _exit(0);
+    }
+    close(fds[1]);
+    std::string text;
+    char buffer[4096];
+    ssize_t n;
+    while ((n = read(fds[0], buffer, sizeof buffer)) > 0)
+        text.append(buffer, static_cast<std::size_t>(n));
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    auto result = deserialize(text, spec, engine);
+    if (WIFSIGNALED(status)) {
+        result.ok = false;
+        result.error = std::string("killed by signal ") + std::to_string(WTERMSIG(status));
+    }
+    return result;
+}
+
+int run(const options &opt) {
+    if (opt.scene == "chain" || opt.scene == "ragdolls") {
+        std::fprintf(stderr, "edyn-bench: the %s scene needs joints, which edyn does not have yet\n",
+                     opt.scene.c_str());
+        return 2;
+    }
+    if (opt.threads > 1) {
+        std::fprintf(stderr,
+                     "edyn-bench: edyn has no multithreaded execution mode yet and the Bullet peer is "
+                     "btDiscreteDynamicsWorld: both run on one thread (threads = 1 in the records)\n");
+    }
+    std::vector<std::string> engines;
+    if (opt.engine == "edyn" || opt.engine == "both") engines.push_back("edyn");
+    if (opt.engine == "bullet" || opt.engine == "both") engines.push_back("bullet");
+
+    std::vector<run_result> results;
+    bool failed = false;
+    for (const auto &spec : make_specs(opt)) {
+        for (const auto &engine : engines) {
+            std::fprintf(stderr, "edyn-bench: %s %u, %s, %u steps ... ", spec.scene.c_str(), spec.size,
+                         engine.c_str(), spec.steps);
+            std::fflush(stderr);
+            auto r = opt.no_fork ? run_engine(spec, engine) : run_forked(spec, engine);
+            r.threads = 1;
+            if (r.ok) {
+                std::fprintf(stderr, "%u bodies, median %.3f ms/step, p95 %.3f, %.1f MB, %zu contacts\n",
+                             r.bodies, r.median_ms, r.p95_ms, r.peak_rss_mb, r.contacts);
+            } else {
+                std::fprintf(stderr, "failed: %s\n", r.error.c_str());
+                failed = true;
+            }
+            results.push_back(std::move(r));
+        }
+    }
+
+    auto table = markdown_table(results);
+    std::printf("%s", table.c_str());
+    if (!opt.json.empty()) write_json(opt.json, results);
+    if (!opt.markdown.empty()) {
+        auto *file = std::fopen(opt.markdown.c_str(), "w");
+        if (!file) throw std::runtime_error("edyn-bench: cannot write " + opt.markdown);
+        std::fputs(table.c_str(), file);
+        std::fclose(file);
+    }
+    return failed ? 1 : 0;
+}
+
+} // namespace
+} // namespace edyn_bench
+
+int main(int argc, char **argv) {
+    edyn_bench::options opt;
+    CLI::App app{"edyn-bench: the standard scenes in edyn and in Bullet, side by side"};
+    app.add_option("--scene", opt.scene, "pyramid, pile, chain, ragdolls or all")
+        ->check(CLI::IsMember({"all", "pyramid", "pile", "chain", "ragdolls"}));
+    app.add_option("--bodies", opt.bodies,
+                   "sizes: the pyramid's base width or the pile's body count; 'standard' (pyramid 20 40 "
+                   "100, pile 1024 4096 16384) or 'small' (a quick check)")
+        ->check(CLI::IsMember({"standard", "small"}) | CLI::PositiveNumber);
+    app.add_option("--steps", opt.steps, "steps per run, warm-up included (0: each scene's default)");
+    app.add_option("--warmup", opt.warmup, "steps left out of the timings (default: a tenth, at most 60)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--threads", opt.threads, "worker threads (both engines run on one for now)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--engine", opt.engine, "edyn, bullet or both")
+        ->check(CLI::IsMember({"edyn", "bullet", "both"}));
+    app.add_option("--json", opt.json, "write the records to this file");
+    app.add_option("--markdown", opt.markdown, "write the table to this file");
+    app.add_flag("--sleeping", opt.sleeping,
+                 "let bodies at rest sleep in both engines (off: the figures are the cost of simulating)");
+    app.add_flag("--no-fork", opt.no_fork,
+                 "run everything in this process (for profilers; peak memory is then the process's)");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        return edyn_bench::run(opt);
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,68 @@
+// The edyn side of edyn-bench: the scene from the shared builders, stepped with
+// edyn::step_simulation one fixed step at a time.
+#include "bench.hpp"
+#include <algorithm>
+#include <chrono>
+
+namespace edyn_bench {
+
+namespace {
+
+struct contact_figures {
+    std::size_t points{0};
+    double deepest_penetration{0};
+};
+
+contact_figures count_contacts(edyn::registry &registry) {
+    contact_figures figures;
+    registry.view<edyn::contact_manifold>().each([&](const edyn::contact_manifold &manifold) {
+        figures.points += manifold.num_points;
+        manifold.each_point([&](const edyn::contact_point &point) {
+            figures.deepest_penetration = std::max(figures.deepest_penetration, -double(point.distance));
+        });
+    });
+    return figures;
+}
+
+} // namespace
+
+run_result run_edyn(const scene_spec &spec) {
+    run_result result;
+    result.scene = spec.scene;
+    result.engine = "edyn";
+    result.stability_metric = stability_metric(spec.scene);
+
+    edyn::registry registry;
+    edyn::attach(registry); // sequential: edyn has no multithreaded mode yet
+    auto tracked = build_scene(registry, spec);
+    result.bodies = static_cast<unsigned>(registry.storage<edyn::dynamic_tag>().size());
+    edyn::vector3 tracked_start{};
+    if (tracked != edyn::null) tracked_start = registry.get<edyn::position>(tracked);
+
+    std::vector<double> step_ms;
+    step_ms.reserve(spec.steps);
+    for (unsigned i = 0; i < spec.steps; ++i) {
+        auto start = std::chrono::steady_clock::now();
+        edyn::step_simulation(registry);
+        auto end = std::chrono::steady_clock::now();
+        step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+    }
+
+    auto stats = summarize_steps(step_ms, spec.warmup);
+    result.steps = spec.steps;
+    result.measured = stats.measured;
+    result.median_ms = stats.median_ms;
+    result.p95_ms = stats.p95_ms;
+    auto contacts = count_contacts(registry);
+    result.contacts = contacts.points;
+    if (tracked != edyn::null) {
+        result.stability = double(edyn::length(registry.get<edyn::position>(tracked) - tracked_start));
+    } else {
+        result.stability = contacts.deepest_penetration;
+    }
+    edyn::detach(registry);
+    result.ok = true;
+    return result;
+}
+
+} // namespace edyn_bench

@@ -1,0 +1,66 @@
+#include "bench.hpp"
+#include <algorithm>
+#include <edyn_scenes/scenes.hpp>
+#include <stdexcept>
+
+namespace edyn_bench {
+
+std::vector<std::string> available_scenes() { return {"pyramid", "pile"}; }
+
+std::string stability_metric(const std::string &scene) {
+    if (scene == "pyramid") return "top_box_displacement_m";
+    if (scene == "pile") return "max_penetration_m";
+    throw std::invalid_argument("stability_metric: unknown scene '" + scene + "'");
+}
+
+namespace {
+
+edyn::entity build_bodies(edyn::registry &registry, const scene_spec &spec) {
+    // Both engines get the ground's defaults from the scene builder: friction 0.6, no bounce.
+    edyn::scenes::make_ground(registry);
+    if (spec.scene == "pyramid") {
+        auto boxes = edyn::scenes::make_pyramid(registry, spec.size);
+        return boxes.empty() ? edyn::null : boxes.back();
+    }
+    if (spec.scene == "pile") {
+        // The pile: boxes, spheres, capsules and cylinders in equal share, 16 wide.
+        edyn::scenes::make_pile(registry, spec.size, 16, 2, edyn::scenes::pile_shapes::primitives, 1);
+        return edyn::null;
+    }
+    throw std::invalid_argument("build_scene: unknown scene '" + spec.scene + "'");
+}
+
+} // namespace
+
+edyn::entity build_scene(edyn::registry &registry, const scene_spec &spec) {
+    auto tracked = build_bodies(registry, spec);
+    if (!spec.sleeping) {
+        // What rigidbody_def::sleeping_disabled does, for bodies the shared builders made.
+        for (auto e : registry.view<edyn::dynamic_tag>()) {
+            registry.emplace<edyn::sleeping_disabled_tag>(e);
+        }
+    }
+    return tracked;
+}
+
+step_stats summarize_steps(const std::vector<double> &step_ms, unsigned warmup) {
+    step_stats stats;
+    if (step_ms.empty()) return stats;
+    // Keep at least one step even when the warm-up asks for all of them.
+    auto skip = std::min<std::size_t>(warmup, step_ms.size() - 1);
+    std::vector<double> sorted(step_ms.begin() + static_cast<std::ptrdiff_t>(skip), step_ms.end());
+    std::sort(sorted.begin(), sorted.end());
+    auto at = [&](double q) {
+        // Nearest rank: the smallest value with at least q of the samples at or below it.
+        auto rank = static_cast<std::size_t>(q * static_cast<double>(sorted.size()) + 0.999999);
+        rank = std::clamp<std::size_t>(rank, 1, sorted.size());
+        return sorted[rank - 1];
+    };
+    auto n = sorted.size();
+    stats.median_ms = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+    stats.p95_ms = at(0.95);
+    stats.measured = static_cast<unsigned>(n);
+    return stats;
+}
+
+} // namespace edyn_bench

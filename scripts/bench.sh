@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs dependencies, builds edyn-bench in Release (build-release/) and runs the standard
+# scenes with edyn and with Bullet, one engine after the other. Writes bench/results/latest.json
+# (the records), latest.md (the table, also printed) and latest.png (ms/step against body count).
+# Arguments go to edyn-bench, e.g. scripts/bench.sh --scene pile --bodies 1024 4096.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+bash scripts/deps.sh
+cmake -S . -B build-release -DCMAKE_BUILD_TYPE=Release -DEDYN_BUILD_TESTS=OFF >/dev/null
+cmake --build build-release -j "$(nproc)" --target edyn-bench
+
+results=bench/results
+mkdir -p "$results"
+{
+  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
+  echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "command: edyn-bench --json $results/latest.json --markdown $results/latest.md $*"
+} >"$results/latest.txt"
+./build-release/bench/edyn-bench --json "$results/latest.json" --markdown "$results/latest.md" "$@"
+
+# One series file per (scene, engine) for gnuplot: "bodies median_ms p95_ms", by body count.
+# The JSON is edyn-bench's own, one record per line.
+series=$(mktemp -d)
+trap 'rm -rf "$series"' EXIT
+for scene in pile pyramid; do
+  for engine in edyn bullet; do
+    grep "\"scene\": \"$scene\"" "$results/latest.json" | grep "\"engine\": \"$engine\"" |
+      sed -E 's/.*"bodies": ([0-9]+).*"median_ms": ([-0-9.e+]+).*"p95_ms": ([-0-9.e+]+).*/\1 \2 \3/' |
+      sort -n >"$series/$scene-$engine.dat" || true
+  done
+done
+# The n log n reference goes through edyn's smallest pile.
+c=$(awk 'NR == 1 && $1 > 1 { printf "%.9g", $2 / ($1 * log($1)) }' "$series/pile-edyn.dat")
+if [ -n "$c" ]; then
+  gnuplot -e "dir='$series'; out='$results/latest.png'; c=$c" bench/plot.gp
+  echo "bench.sh: wrote $results/latest.json, $results/latest.md and $results/latest.png"
+else
+  echo "bench.sh: no edyn pile in this run, so no plot; wrote $results/latest.json and $results/latest.md"
+fi
