@@ -28,9 +28,26 @@ TEST_F(stacking, tower_of_30_boxes_stands_for_ten_seconds) {
     for (std::size_t i = 1; i < boxes.size(); ++i) {
         auto below = pos(boxes[i - 1]), above = pos(boxes[i]);
         auto offset = length(vector3{above.x - below.x, 0, above.z - below.z});
-        EXPECT_LT(offset, scalar(0.1)) << "box " << i << " is off the one below by " << offset << " m";
+        EXPECT_LT(offset, scalar(0.01)) << "box " << i << " is off the one below by " << offset << " m";
         EXPECT_NEAR(above.y - below.y, 1, scalar(0.01)) << "box " << i;
     }
     auto top = pos(boxes.back());
     EXPECT_NEAR(top.y, start.y, scalar(0.05)) << "top box sank " << start.y - top.y << " m";
+    auto sideways = length(vector3{top.x - start.x, 0, top.z - start.z});
+    EXPECT_LT(sideways, scalar(0.01)) << "top box crept sideways by " << sideways << " m";
+    // Still, so it sleeps.
+    EXPECT_TRUE(reg.all_of<sleeping_tag>(boxes.back()));
+}
+
+// A pyramid four times the size: the top settles by the springs' compression and does not creep.
+TEST_F(stacking, pyramid_of_820_boxes_does_not_creep) {
+    scenes::make_ground(reg);
+    auto boxes = scenes::make_pyramid(reg, 40);
+    auto top = boxes.back();
+    auto start = pos(top);
+    run_for(10);
+    auto now = pos(top);
+    auto sideways = length(vector3{now.x - start.x, 0, now.z - start.z});
+    EXPECT_LT(sideways, scalar(0.02)) << "top box crept sideways by " << sideways << " m";
+    EXPECT_NEAR(now.y, start.y, scalar(0.03)) << "top box sank " << start.y - now.y << " m";
 }

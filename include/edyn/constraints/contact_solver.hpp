@@ -57,7 +57,11 @@ struct contact_solver_settings {
     // Stiffness of contacts as a spring frequency. A loaded contact sinks by load / (m w^2),
     // so stacks stand taller the stiffer it is; it is capped below for stability.
     scalar contact_hertz{120};
-    scalar contact_damping_ratio{10};
+    // Damping ratio of the contact spring. Measured with the 30-box tower and the 40-wide
+    // pyramid over 10 s: ratios of 1 to 2 leave the top box within 3 mm (tower) and 1.4 cm
+    // (pyramid, mostly the springs' compression), while 5 to 10 let stacks wobble and creep by
+    // 5 to 30 cm and never sleep.
+    scalar contact_damping_ratio{2};
     // Contact frequency is capped at this fraction of the sub-step rate.
     scalar max_hertz_ratio{scalar(0.25)};
     // Cap on the speed at which overlap is pushed out, m/s.
