@@ -3,6 +3,35 @@
 
 namespace edyn {
 
+namespace {
+
+contact_row make_row(const solver_body &a, const solver_body &b, const vector3 &d, const vector3 &rA,
+                     const vector3 &rB) {
+    contact_row row;
+    row.angularA = cross(rA, d);
+    row.angularB = cross(rB, d);
+    row.inv_angularA = a.inv_inertia * row.angularA;
+    row.inv_angularB = b.inv_inertia * row.angularB;
+    return row;
+}
+
+// Relative velocity of the row's points along d.
+inline scalar row_velocity(const contact_row &row, const vector3 &d, const solver_body &a,
+                           const solver_body &b) {
+    return dot(d, a.linvel - b.linvel) + dot(row.angularA, a.angvel) - dot(row.angularB, b.angvel);
+}
+
+// Applies `impulse` along the row: +impulse d to A, -impulse d to B.
+inline void apply_row(const contact_row &row, const vector3 &d, scalar impulse, solver_body &a,
+                      solver_body &b) {
+    a.linvel += d * (a.inv_mass * impulse);
+    a.angvel += row.inv_angularA * impulse;
+    b.linvel -= d * (b.inv_mass * impulse);
+    b.angvel -= row.inv_angularB * impulse;
+}
+
+} // namespace
+
 void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<const solver_body> bodies) {
     for (auto &c : contacts) {
         auto &a = bodies[c.body[0]];
@@ -10,6 +39,9 @@ void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<c
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = c.points[i];
             plane_space(p.normal, p.tangent[0], p.tangent[1]);
+            p.normal_row = make_row(a, b, p.normal, p.rA, p.rB);
+            p.tangent_row[0] = make_row(a, b, p.tangent[0], p.rA, p.rB);
+            p.tangent_row[1] = make_row(a, b, p.tangent[1], p.rA, p.rB);
             p.normal_mass = effective_mass(a, b, p.normal, p.rA, p.rB);
             p.tangent_mass[0] = effective_mass(a, b, p.tangent[0], p.rA, p.rB);
             p.tangent_mass[1] = effective_mass(a, b, p.tangent[1], p.rA, p.rB);
@@ -32,9 +64,9 @@ void warm_start_contacts(std::span<contact_solver_constraint> contacts, std::spa
 
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = c.points[i];
-            auto impulse = p.normal * p.normal_impulse + p.tangent[0] * p.tangent_impulse[0] +
-                           p.tangent[1] * p.tangent_impulse[1];
-            apply_impulse(a, b, impulse, p.rA, p.rB);
+            apply_row(p.normal_row, p.normal, p.normal_impulse, a, b);
+            apply_row(p.tangent_row[0], p.tangent[0], p.tangent_impulse[0], a, b);
+            apply_row(p.tangent_row[1], p.tangent[1], p.tangent_impulse[1], a, b);
         }
 
         auto angular = c.normal * c.spin_impulse;
@@ -59,16 +91,12 @@ void solve_friction(contact_solver_constraint &c, solver_body &a, solver_body &b
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &p = c.points[i];
         auto max_impulse = c.friction * p.normal_impulse;
-        auto vrel = relative_velocity(a, b, p.rA, p.rB);
-
         for (int t = 0; t < 2; ++t) {
-            auto vt = dot(p.tangent[t], vrel);
-            auto impulse = -p.tangent_mass[t] * vt;
-            auto new_impulse = std::clamp(p.tangent_impulse[t] + impulse, -max_impulse, max_impulse);
-            impulse = new_impulse - p.tangent_impulse[t];
+            auto vt = row_velocity(p.tangent_row[t], p.tangent[t], a, b);
+            auto new_impulse =
+                std::clamp(p.tangent_impulse[t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
+            apply_row(p.tangent_row[t], p.tangent[t], new_impulse - p.tangent_impulse[t], a, b);
             p.tangent_impulse[t] = new_impulse;
-            apply_impulse(a, b, p.tangent[t] * impulse, p.rA, p.rB);
-            vrel = relative_velocity(a, b, p.rA, p.rB);
         }
     }
 }
@@ -122,12 +150,11 @@ void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<sol
                 impulse_scale = soft.impulse_scale;
             }
 
-            auto vn = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
+            auto vn = row_velocity(p.normal_row, p.normal, a, b);
             auto impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
             auto new_impulse = std::max(p.normal_impulse + impulse, scalar(0));
-            impulse = new_impulse - p.normal_impulse;
+            apply_row(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
             p.normal_impulse = new_impulse;
-            apply_impulse(a, b, p.normal * impulse, p.rA, p.rB);
             total_normal += new_impulse;
         }
 
@@ -165,20 +192,19 @@ bool solve_restitution_individually(contact_solver_constraint &c, solver_body &a
     for (unsigned k = 0; k < iterations; ++k) {
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = c.points[i];
-            auto vn = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
-            auto impulse = p.normal_mass * (target[i] - vn);
-            auto new_impulse = std::max(normal[i] + impulse, scalar(0));
-            apply_impulse(a, b, p.normal * (new_impulse - normal[i]), p.rA, p.rB);
+            auto vn = row_velocity(p.normal_row, p.normal, a, b);
+            auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
+            apply_row(p.normal_row, p.normal, new_impulse - normal[i], a, b);
             normal[i] = new_impulse;
         }
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = c.points[i];
             auto max_impulse = c.friction * normal[i];
             for (int t = 0; t < 2; ++t) {
-                auto vt = dot(p.tangent[t], relative_velocity(a, b, p.rA, p.rB));
+                auto vt = row_velocity(p.tangent_row[t], p.tangent[t], a, b);
                 auto new_impulse =
                     std::clamp(tangent[i][t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
-                apply_impulse(a, b, p.tangent[t] * (new_impulse - tangent[i][t]), p.rA, p.rB);
+                apply_row(p.tangent_row[t], p.tangent[t], new_impulse - tangent[i][t], a, b);
                 tangent[i][t] = new_impulse;
             }
         }

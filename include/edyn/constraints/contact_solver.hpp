@@ -8,6 +8,14 @@
 
 namespace edyn {
 
+// A velocity constraint row along the unit direction d at offsets rA, rB: its angular parts and
+// those parts premultiplied by each body's inverse inertia, computed once per step so that the
+// iterations apply and measure impulses with dot products and no matrix products.
+struct contact_row {
+    vector3 angularA{vector3_zero}, angularB{vector3_zero};         // rA x d, rB x d
+    vector3 inv_angularA{vector3_zero}, inv_angularB{vector3_zero}; // inverse inertia times those
+};
+
 // One point of a contact as the solver sees it. Geometry is captured at the start of the step
 // (narrowphase output); the current separation is recovered from the bodies' accumulated motion.
 struct contact_solver_point {
@@ -22,6 +30,8 @@ struct contact_solver_point {
     scalar restitution_impulse{0};
     scalar tangent_restitution_impulse[2]{0, 0};
     scalar relative_velocity{0}; // normal relative velocity when the step began
+    contact_row normal_row;
+    contact_row tangent_row[2];
 };
 
 // A manifold's contact ready to be solved: up to four points (each with its own normal, as
