@@ -40,6 +40,11 @@
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 
+#include "edyn/constraints/constraint_solver.hpp"
+#include "edyn/constraints/constraints.hpp"
+#include "edyn/constraints/external_entity.hpp"
+#include "edyn/constraints/make_constraint.hpp"
+
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/execution_mode.hpp"
 #include "edyn/simulation/island.hpp"

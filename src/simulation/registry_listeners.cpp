@@ -1,6 +1,9 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/constraints/constraint_solver.hpp"
+#include "edyn/constraints/constraints.hpp"
+#include "edyn/constraints/external_entity.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/orientation.hpp"
@@ -28,14 +31,40 @@ void on_construct_rigidbody(registry &registry, entity e) {
     if (registry.all_of<dynamic_tag>(e)) world(registry).islands.add_node(registry, e);
 }
 
+// A constraint does not outlive its bodies.
+void destroy_constraints_of(registry &registry, entity e) {
+    for (auto &ref : constraints_of(registry, e)) {
+        if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
+    }
+}
+
 void on_destroy_rigidbody(registry &registry, entity e) {
+    destroy_constraints_of(registry, e);
     world(registry).islands.remove_node(registry, e);
     registry.remove<previous_transform>(e);
+}
+
+template<typename T>
+void on_construct_constraint(registry &registry, entity e) {
+    auto &con = registry.get<T>(e);
+    world(registry).islands.link_edge(registry, e, con.body[0], con.body[1]);
+}
+
+void on_destroy_constraint(registry &registry, entity e) { world(registry).islands.unlink_edge(registry, e); }
+
+// Links the constraints of a body that just became a node: while none of their bodies was
+// dynamic they had no island to join.
+void link_constraints_of(registry &registry, entity e) {
+    for (auto &ref : constraints_of(registry, e)) {
+        if (registry.all_of<island_resident>(ref.constraint)) continue;
+        world(registry).islands.link_edge(registry, ref.constraint, ref.body[0], ref.body[1]);
+    }
 }
 
 void on_construct_dynamic(registry &registry, entity e) {
     if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<island_resident>(e)) {
         world(registry).islands.add_node(registry, e);
+        link_constraints_of(registry, e);
     }
 }
 
@@ -97,6 +126,8 @@ void on_update_transform(registry &registry, entity e) {
     w.islands.wake_entity(registry, e);
 }
 
+void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(registry, e); }
+
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
 void on_change_filter(registry &registry, entity e) {
@@ -119,6 +150,38 @@ using edyn_components =
 template<typename... Components>
 void clear_all(registry &registry, component_list<Components...>) {
     (registry.clear<Components>(), ...);
+}
+
+template<typename... Constraints>
+void connect_constraints(registry &registry, constraint_type_list<Constraints...>) {
+    (registry.on_construct<Constraints>().template connect<&on_construct_constraint<Constraints>>(), ...);
+    (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint>(), ...);
+}
+
+template<typename... Constraints>
+void disconnect_constraints(registry &registry, constraint_type_list<Constraints...>) {
+    (registry.on_construct<Constraints>().template disconnect<&on_construct_constraint<Constraints>>(), ...);
+    (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint>(), ...);
+}
+
+// Constraints stay on the program's entities as plain components when edyn lets go.
+template<typename... Constraints>
+void clear_constraints(registry &registry, constraint_type_list<Constraints...>) {
+    (registry.clear<Constraints>(), ...);
+}
+
+template<typename... Constraints>
+void adopt_constraints(registry &registry, constraint_type_list<Constraints...>) {
+    auto adopt = [&](auto *tag) {
+        using component = std::remove_pointer_t<decltype(tag)>;
+        std::vector<entity> entities;
+        for (auto e : registry.view<component>())
+            entities.push_back(e);
+        std::reverse(entities.begin(), entities.end());
+        for (auto e : entities)
+            on_construct_constraint<component>(registry, e);
+    };
+    (adopt(static_cast<Constraints *>(nullptr)), ...);
 }
 
 template<auto Fn, typename... Components>
@@ -155,6 +218,8 @@ void connect_registry_listeners(registry &registry) {
     registry.on_update<collision_filter>().connect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
+    connect_constraints(registry, constraint_types{});
+    registry.on_destroy<external_tag>().connect<&on_destroy_external>();
 }
 
 void disconnect_registry_listeners(registry &registry) {
@@ -174,6 +239,8 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_update<collision_filter>().disconnect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();
+    disconnect_constraints(registry, constraint_types{});
+    registry.on_destroy<external_tag>().disconnect<&on_destroy_external>();
 }
 
 void adopt_existing_bodies(registry &registry) {
@@ -186,6 +253,7 @@ void adopt_existing_bodies(registry &registry) {
         on_construct_rigidbody(registry, e);
         if (registry.all_of<AABB>(e)) on_construct_aabb(registry, e);
     }
+    adopt_constraints(registry, constraint_types{});
 }
 
 void remove_edyn_components(registry &registry) {
@@ -197,6 +265,8 @@ void remove_edyn_components(registry &registry) {
     for (auto e : internal)
         registry.destroy(e);
     clear_all(registry, edyn_components{});
+    clear_constraints(registry, constraint_types{});
+    registry.clear<external_tag>();
 }
 
 } // namespace edyn

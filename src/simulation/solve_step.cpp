@@ -145,16 +145,24 @@ void solve_constraints(world_state &world, const settings &settings) {
     std::span<solver_body> bodies(world.bodies);
     std::span<contact_solver_constraint> contacts(world.contacts);
 
+    auto biased = make_constraint_solve_context(settings.joint, h, true);
+    auto relax = make_constraint_solve_context(settings.joint, h, false);
+
     prepare_contacts(contacts, bodies);
 
     for (unsigned i = 0; i < substeps; ++i) {
         integrate_velocities(bodies, h);
         solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
                           settings.num_individual_restitution_iterations);
+        // Joints before contacts in each pass: contacts, solved last, keep bodies apart.
+        warm_start_constraints(world.joints, bodies);
         warm_start_contacts(contacts, bodies);
+        solve_joint_constraints(world.joints, bodies, biased);
         solve_contacts(contacts, bodies, h, settings.contact, true);
         integrate_positions(bodies, h);
+        project_joint_positions(world.joints, bodies, settings.joint);
         for (unsigned k = 0; k < settings.num_relax_iterations; ++k) {
+            solve_joint_constraints(world.joints, bodies, relax);
             solve_contacts(contacts, bodies, h, settings.contact, false);
         }
     }
@@ -203,6 +211,7 @@ void write_back(registry &registry, world_state &world, scalar dt) {
                                         c.roll_impulse[1] / scalar(c.num_points)};
         }
     }
+    store_constraint_impulses(registry, world.joints);
 }
 
 } // namespace edyn

@@ -1,6 +1,7 @@
 #ifndef EDYN_SIMULATION_SETTINGS_HPP
 #define EDYN_SIMULATION_SETTINGS_HPP
 
+#include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/ecs/fwd.hpp"
 #include "edyn/simulation/execution_mode.hpp"
@@ -25,6 +26,7 @@ struct settings {
     // frame cannot make the next one slower still.
     unsigned max_steps_per_update{10};
     contact_solver_settings contact{};
+    constraint_solver_settings joint{};
     // A body whose speeds stay below these for time_to_sleep seconds may sleep with its island.
     scalar sleep_linear_velocity{scalar(0.05)};
     scalar sleep_angular_velocity{scalar(0.0872665)}; // 5 degrees per second

@@ -21,7 +21,7 @@ void solve_constraints(world_state &world, const settings &settings);
 
 // Phase 6: writes the solved velocities, positions and orientations back to the registry,
 // refreshes world-space inertia and AABBs (swept over the next step of length dt), and stores
-// impulses in the manifolds.
+// impulses in the manifolds and constraints.
 void write_back(registry &registry, world_state &world, scalar dt);
 
 } // namespace edyn

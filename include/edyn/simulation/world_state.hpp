@@ -3,6 +3,7 @@
 
 #include "edyn/collision/broadphase.hpp"
 #include "edyn/collision/collision_result.hpp"
+#include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/simulation/island_manager.hpp"
@@ -33,6 +34,7 @@ struct world_state {
     std::vector<std::uint32_t> body_index;
     std::vector<contact_solver_constraint> contacts;
     std::vector<entity> contact_manifolds;
+    constraint_solver_state joints;
 
     // Manifold entities in the order the narrowphase visits them.
     std::vector<entity> manifolds;

@@ -1,0 +1,82 @@
+#ifndef EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP
+#define EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP
+
+#include "edyn/constraints/distance_constraint.hpp"
+#include "edyn/constraints/gravity_constraint.hpp"
+#include "edyn/constraints/hinge_constraint.hpp"
+#include "edyn/constraints/null_constraint.hpp"
+#include "edyn/constraints/point_constraint.hpp"
+#include "edyn/constraints/soft_distance_constraint.hpp"
+#include <cstdint>
+#include <span>
+#include <tuple>
+#include <vector>
+
+namespace edyn {
+
+// Tuning of joints, shared by every joint of a step.
+struct constraint_solver_settings {
+    // Rigid joints correct their position error as a spring of this frequency and damping
+    // ratio in the biased pass; stiffer than contacts, since joints carry whole chains.
+    scalar joint_hertz{60};
+    scalar joint_damping_ratio{1};
+    // The joint frequency is capped at this fraction of the sub-step rate, for stability.
+    scalar max_hertz_ratio{scalar(0.25)};
+    // A limit reached slower than this does not bounce (m/s or rad/s).
+    scalar restitution_threshold{scalar(0.1)};
+    // Fraction of the joints' pivot separation removed by moving the bodies after each
+    // sub-step's integration (see project_point); 0 leaves it to the soft correction alone.
+    scalar position_projection{1};
+};
+
+// The constraints of one type as the solver sees them this step, and where they came from.
+template<typename Solver>
+struct constraint_batch {
+    std::vector<Solver> solvers;
+    std::vector<entity> entities;
+};
+
+// Every joint of a step, packed per type in contiguous arrays reused from step to step.
+struct constraint_solver_state {
+    std::tuple<constraint_batch<point_constraint_solver>, constraint_batch<distance_constraint_solver>,
+               constraint_batch<soft_distance_constraint_solver>, constraint_batch<hinge_constraint_solver>,
+               constraint_batch<gravity_constraint_solver>>
+        batches;
+};
+
+// Maps an entity's index to its solver body (0, the static body, when it has none).
+using body_index_map = std::span<const std::uint32_t>;
+
+// Packs every awake constraint with at least one body in the solver, with its geometry at the
+// start of the step and last step's impulses.
+void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index);
+
+constraint_solve_context make_constraint_solve_context(const constraint_solver_settings &settings, scalar h,
+                                                       bool use_bias) noexcept;
+
+// Re-applies the accumulated impulses, at the start of each sub-step.
+void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies) noexcept;
+
+// One Gauss-Seidel pass over every joint row (biased or relax, as ctx says).
+void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
+                             const constraint_solve_context &ctx) noexcept;
+
+// Position projection of the joints that keep pivots together, after integrating positions.
+void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
+                             const constraint_solver_settings &settings) noexcept;
+
+// Stores the impulses in the components, for next step's warm start.
+void store_constraint_impulses(registry &registry, const constraint_solver_state &state);
+
+// A constraint entity and the two entities it joins.
+struct constraint_ref {
+    entity constraint;
+    entity body[2];
+};
+
+// Every constraint, of any type, that has `body` as one of its bodies, in a fixed type order.
+std::vector<constraint_ref> constraints_of(const registry &registry, entity body);
+
+} // namespace edyn
+
+#endif // EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP

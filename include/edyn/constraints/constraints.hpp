@@ -1,0 +1,23 @@
+#ifndef EDYN_CONSTRAINTS_CONSTRAINTS_HPP
+#define EDYN_CONSTRAINTS_CONSTRAINTS_HPP
+
+// Every constraint a program can make with make_constraint.
+#include "edyn/constraints/distance_constraint.hpp"
+#include "edyn/constraints/gravity_constraint.hpp"
+#include "edyn/constraints/hinge_constraint.hpp"
+#include "edyn/constraints/null_constraint.hpp"
+#include "edyn/constraints/point_constraint.hpp"
+#include "edyn/constraints/soft_distance_constraint.hpp"
+
+namespace edyn {
+
+template<typename... T>
+struct constraint_type_list {};
+
+// Every constraint component, in the order the solver visits them.
+using constraint_types = constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint,
+                                              hinge_constraint, gravity_constraint, null_constraint>;
+
+} // namespace edyn
+
+#endif // EDYN_CONSTRAINTS_CONSTRAINTS_HPP

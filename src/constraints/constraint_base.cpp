@@ -1,0 +1,93 @@
+#include "edyn/constraints/constraint_base.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/math/transform.hpp"
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace edyn {
+
+namespace {
+
+std::string str(scalar s) {
+    std::ostringstream out;
+    out << s;
+    return out.str();
+}
+
+std::string str(const vector3 &v) { return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ")"; }
+
+} // namespace
+
+void throw_constraint_error(const char *type, const char *field, const std::string &what) {
+    throw std::invalid_argument(std::string("make_constraint<") + type + ">: " + field + " " + what);
+}
+
+void check_constraint_finite(const char *type, const char *field, const vector3 &v) {
+    if (!isfinite(v)) throw_constraint_error(type, field, "must be finite, got " + str(v));
+}
+
+void check_constraint_finite(const char *type, const char *field, scalar s) {
+    if (!std::isfinite(s)) throw_constraint_error(type, field, "must be finite, got " + str(s));
+}
+
+void check_constraint_non_negative(const char *type, const char *field, scalar s) {
+    if (!(s >= 0) || !std::isfinite(s)) {
+        throw_constraint_error(type, field, "must be finite and not negative, got " + str(s));
+    }
+}
+
+void check_constraint_unit_interval(const char *type, const char *field, scalar s) {
+    if (!(s >= 0 && s <= 1)) throw_constraint_error(type, field, "must be in [0, 1], got " + str(s));
+}
+
+void check_constraint_orthonormal(const char *type, const char *field, const matrix3x3 &m) {
+    constexpr auto tolerance = scalar(1e-3);
+    auto c0 = m.column(0), c1 = m.column(1), c2 = m.column(2);
+    auto unit = [&](const vector3 &v) { return std::abs(length_sqr(v) - 1) < tolerance; };
+    bool ok = isfinite(c0) && isfinite(c1) && isfinite(c2) && unit(c0) && unit(c1) && unit(c2) &&
+              std::abs(dot(c0, c1)) < tolerance && std::abs(dot(c0, c2)) < tolerance &&
+              std::abs(dot(c1, c2)) < tolerance;
+    if (!ok) {
+        throw_constraint_error(type, field,
+                               "must be an orthonormal basis, got columns " + str(c0) + ", " + str(c1) +
+                                   ", " + str(c2));
+    }
+}
+
+void check_constraint_range(const char *type, const char *min_field, scalar min, const char *max_field,
+                            scalar max) {
+    check_constraint_finite(type, min_field, min);
+    check_constraint_finite(type, max_field, max);
+    if (min > max) {
+        throw_constraint_error(type, min_field,
+                               "must not exceed " + std::string(max_field) + ", got " + str(min) + " > " +
+                                   str(max));
+    }
+}
+
+joint_anchor make_joint_anchor(const registry &registry, const entity (&body)[2], const vector3 (&pivot)[2],
+                               constraint_body_indices indices) {
+    joint_anchor anchor;
+    anchor.body[0] = indices.a;
+    anchor.body[1] = indices.b;
+    vector3 world_pivot[2];
+    vector3 r[2];
+    for (int i = 0; i < 2; ++i) {
+        auto &orn = registry.get<orientation>(body[i]);
+        world_pivot[i] = to_world_space(pivot[i], get_rigidbody_origin(registry, body[i]), orn);
+        r[i] = world_pivot[i] - registry.get<position>(body[i]);
+    }
+    anchor.rA = r[0];
+    anchor.rB = r[1];
+    anchor.separation = world_pivot[0] - world_pivot[1];
+    return anchor;
+}
+
+matrix3x3 world_frame(const registry &registry, entity body, const matrix3x3 &frame) {
+    return to_matrix3x3(registry.get<orientation>(body)) * frame;
+}
+
+} // namespace edyn

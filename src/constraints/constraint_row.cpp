@@ -1,0 +1,114 @@
+#include "edyn/constraints/constraint_row.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace edyn {
+
+softness make_spring_softness(scalar k, scalar c, scalar mass, scalar h) noexcept {
+    // Implicit Euler of m x'' = -k x - c x': the impulse over h is
+    // -(h d / (1 + h d / m)) (x' + (k / d) x) with d = c + h k.
+    auto d = c + h * k;
+    if (!(d > 0) || !(mass > 0)) return {0, 0, 1};
+    auto a = h * d / mass;
+    return {k / d, a / (1 + a), 1 / (1 + a)};
+}
+
+void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
+                        const constraint_solve_context &ctx) noexcept {
+    auto mass = row_effective_mass(j, a, b);
+    if (mass == 0) return;
+    scalar bias = 0, mass_scale = 1, impulse_scale = 0;
+    if (ctx.use_bias) {
+        bias = ctx.joint.bias_rate * C;
+        mass_scale = ctx.joint.mass_scale;
+        impulse_scale = ctx.joint.impulse_scale;
+    }
+    auto v = row_velocity(j, a, b);
+    auto delta = -mass * mass_scale * (v + bias) - impulse_scale * impulse;
+    impulse += delta;
+    apply_row_impulse(j, a, b, delta);
+}
+
+void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
+                     const constraint_solve_context &ctx, scalar bounce_velocity) noexcept {
+    auto mass = row_effective_mass(j, a, b);
+    if (mass == 0) return;
+    scalar bias = 0, mass_scale = 1, impulse_scale = 0;
+    if (bounce_velocity > 0) {
+        bias = -bounce_velocity;
+    } else if (C > 0) {
+        // Speculative: the gap may close within this sub-step, no more.
+        bias = C * ctx.inv_h;
+    } else if (ctx.use_bias) {
+        bias = ctx.joint.bias_rate * C;
+        mass_scale = ctx.joint.mass_scale;
+        impulse_scale = ctx.joint.impulse_scale;
+    }
+    auto v = row_velocity(j, a, b);
+    auto delta = -mass * mass_scale * (v + bias) - impulse_scale * impulse;
+    auto new_impulse = std::max(impulse + delta, scalar(0));
+    delta = new_impulse - impulse;
+    impulse = new_impulse;
+    apply_row_impulse(j, a, b, delta);
+}
+
+void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, solver_body &a,
+                        solver_body &b) noexcept {
+    auto mass = row_effective_mass(j, a, b);
+    if (mass == 0) return;
+    auto v = row_velocity(j, a, b);
+    auto new_impulse = std::clamp(impulse - mass * v, -max_impulse, max_impulse);
+    auto delta = new_impulse - impulse;
+    impulse = new_impulse;
+    apply_row_impulse(j, a, b, delta);
+}
+
+void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
+                      solver_body &b, const constraint_solve_context &ctx, bool unilateral) noexcept {
+    // A spring is a force of the model: applied once per sub-step, in the biased pass. Solving
+    // it again in the relax pass would integrate it twice and damp it.
+    if (!ctx.use_bias) return;
+    auto mass = row_effective_mass(j, a, b);
+    if (mass == 0) return;
+    auto soft = make_spring_softness(k, c, mass, ctx.h);
+    auto v = row_velocity(j, a, b);
+    auto delta = -mass * soft.mass_scale * (v + soft.bias_rate * C) - soft.impulse_scale * impulse;
+    auto new_impulse = unilateral ? std::max(impulse + delta, scalar(0)) : impulse + delta;
+    delta = new_impulse - impulse;
+    impulse = new_impulse;
+    apply_row_impulse(j, a, b, delta);
+}
+
+namespace {
+
+// Moves A by +p and B by -p applied at the lever arms, as a position-level impulse.
+void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
+                            const vector3 &rB) noexcept {
+    a.delta_position += p * a.inv_mass;
+    a.delta_rotation = normalize(integrate(a.delta_rotation, a.inv_inertia * cross(rA, p), 1));
+    b.delta_position -= p * b.inv_mass;
+    b.delta_rotation = normalize(integrate(b.delta_rotation, b.inv_inertia * cross(rB, -p), 1));
+}
+
+} // namespace
+
+void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction) noexcept {
+    auto pose = current_pose(anchor, a, b);
+    auto sA = skew_matrix(pose.rA), sB = skew_matrix(pose.rB);
+    auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) - sA * a.inv_inertia * sA -
+             sB * b.inv_inertia * sB;
+    if (!(std::abs(determinant(k)) > scalar(1e-12))) return;
+    apply_position_impulse(a, b, -(inverse(k) * pose.d) * fraction, pose.rA, pose.rB);
+}
+
+void project_distance(const joint_anchor &anchor, scalar distance, solver_body &a, solver_body &b,
+                      scalar fraction) noexcept {
+    auto pose = current_pose(anchor, a, b);
+    auto len = length(pose.d);
+    if (!(len > scalar(1e-9))) return;
+    auto n = pose.d / len;
+    auto mass = row_effective_mass(linear_jacobian(n, pose.rA, pose.rB), a, b);
+    apply_position_impulse(a, b, n * (-mass * (len - distance) * fraction), pose.rA, pose.rB);
+}
+
+} // namespace edyn

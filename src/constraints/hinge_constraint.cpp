@@ -1,0 +1,245 @@
+#include "edyn/constraints/hinge_constraint.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include <cmath>
+
+namespace edyn {
+
+void hinge_constraint::set_axes(const vector3 &axisA, const vector3 &axisB) {
+    vector3 p, q;
+    auto a = normalize(axisA);
+    plane_space(a, p, q);
+    frame[0] = matrix3x3_columns(a, p, q);
+    auto b = normalize(axisB);
+    plane_space(b, p, q);
+    frame[1] = matrix3x3_columns(b, p, q);
+}
+
+void validate_constraint(const hinge_constraint &c) {
+    constexpr auto type = constraint_type_name<hinge_constraint>;
+    check_constraint_finite(type, "pivot[0]", c.pivot[0]);
+    check_constraint_finite(type, "pivot[1]", c.pivot[1]);
+    check_constraint_orthonormal(type, "frame[0]", c.frame[0]);
+    check_constraint_orthonormal(type, "frame[1]", c.frame[1]);
+    // Infinite limits are allowed (no limit); NaN and an empty range are not.
+    if (std::isnan(c.angle_min) || std::isnan(c.angle_max) || c.angle_min > c.angle_max) {
+        throw_constraint_error(type, "angle_min",
+                               "must not exceed angle_max, got " + std::to_string(c.angle_min) + " > " +
+                                   std::to_string(c.angle_max));
+    }
+    check_constraint_unit_interval(type, "limit_restitution", c.limit_restitution);
+    check_constraint_non_negative(type, "friction_torque", c.friction_torque);
+    check_constraint_non_negative(type, "damping", c.damping);
+    check_constraint_non_negative(type, "bump_stop_angle", c.bump_stop_angle);
+    check_constraint_non_negative(type, "bump_stop_stiffness", c.bump_stop_stiffness);
+    check_constraint_finite(type, "rest_angle", c.rest_angle);
+    check_constraint_non_negative(type, "stiffness", c.stiffness);
+}
+
+scalar relative_angle(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept {
+    auto axis = frameA.column(0);
+    auto a1 = frameA.column(1);
+    auto b1 = frameB.column(1);
+    return std::atan2(dot(cross(a1, b1), axis), dot(a1, b1));
+}
+
+void warm_start_angular_limit(const angular_limit &limit, const vector3 &axis, solver_body &a,
+                              solver_body &b) noexcept {
+    // Rows of the lower limit and lower bump stop push along -axis (raising the angle); the
+    // upper ones along +axis.
+    auto lower = limit.impulse[0] + limit.bump_impulse[0];
+    auto upper = limit.impulse[1] + limit.bump_impulse[1];
+    apply_angular_impulse(a, b, axis * (upper - lower));
+}
+
+bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
+                       const solver_body &b, const constraint_solve_context &ctx,
+                       scalar (&bounce)[2]) noexcept {
+    bounce[0] = bounce[1] = 0;
+    if (limit.restitution <= 0) return false;
+    auto rate = dot(axis, b.angvel - a.angvel);
+    const scalar gaps[2]{angle - limit.min, limit.max - angle};
+    const scalar rates[2]{rate, -rate};
+    const scalar start_rates[2]{limit.start_rate, -limit.start_rate};
+    bool any = false;
+    for (int i = 0; i < 2; ++i) {
+        if (limit.bounced[i] || !std::isfinite(gaps[i])) continue;
+        // The approach is the faster of now and when the step began: in between, the limit
+        // may have braked the motion speculatively.
+        auto approach = std::min(rates[i], start_rates[i]);
+        if (approach < -ctx.restitution_threshold && gaps[i] + rates[i] * ctx.h <= 0) {
+            bounce[i] = -limit.restitution * approach;
+            limit.bounced[i] = true;
+            any = true;
+        }
+    }
+    return any;
+}
+
+void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (&impulse)[2], solver_body &a,
+                        solver_body &b) noexcept {
+    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    for (int i = 0; i < 2; ++i) {
+        if (bounce[i] <= 0) continue;
+        auto mass = row_effective_mass(rows[i], a, b);
+        auto new_impulse = std::max(impulse[i] + mass * (bounce[i] - row_velocity(rows[i], a, b)), scalar(0));
+        apply_row_impulse(rows[i], a, b, new_impulse - impulse[i]);
+        impulse[i] = new_impulse;
+    }
+}
+
+void solve_angular_limit(angular_limit &limit, const vector3 &axis, scalar angle, solver_body &a,
+                         solver_body &b, const constraint_solve_context &ctx) noexcept {
+    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    const scalar gaps[2]{angle - limit.min, limit.max - angle};
+    for (int i = 0; i < 2; ++i) {
+        if (!std::isfinite(gaps[i])) continue;
+        if (limit.bump_angle > 0 && limit.bump_stiffness > 0) {
+            // A spring that only pushes, compressed by how far the angle is into the zone.
+            if (gaps[i] < limit.bump_angle) {
+                solve_spring_row(rows[i], gaps[i] - limit.bump_angle, limit.bump_stiffness, 0,
+                                 limit.bump_impulse[i], a, b, ctx, true);
+            } else {
+                limit.bump_impulse[i] = 0;
+            }
+        }
+        solve_limit_row(rows[i], gaps[i], limit.impulse[i], a, b, ctx);
+    }
+}
+
+void solve_axis_alignment(const matrix3x3 &frameA, const vector3 &axisB, scalar (&impulse)[2], solver_body &a,
+                          solver_body &b, const constraint_solve_context &ctx) noexcept {
+    // C_i = dot(uA_i, axisB) is zero when the axes are parallel; its rate is
+    // dot(uA_i x axisB, wA - wB).
+    for (int i = 0; i < 2; ++i) {
+        auto u = frameA.column(i + 1);
+        solve_equality_row(angular_jacobian(cross(u, axisB)), dot(u, axisB), impulse[i], a, b, ctx);
+    }
+}
+
+hinge_constraint_solver make_constraint_solver(const registry &registry, const hinge_constraint &c,
+                                               constraint_body_indices indices) {
+    hinge_constraint_solver s;
+    s.anchor = make_joint_anchor(registry, c.body, c.pivot, indices);
+    s.frameA = world_frame(registry, c.body[0], c.frame[0]);
+    s.frameB = world_frame(registry, c.body[1], c.frame[1]);
+    s.angle = unwrap_angle(c.angle, relative_angle(s.frameA, s.frameB));
+    s.friction_torque = c.friction_torque;
+    s.damping = c.damping;
+    s.rest_angle = c.rest_angle;
+    s.stiffness = c.stiffness;
+    s.limit.min = c.angle_min;
+    s.limit.max = c.angle_max;
+    s.limit.bump_angle = c.bump_stop_angle;
+    s.limit.bump_stiffness = c.bump_stop_stiffness;
+    s.limit.restitution = c.limit_restitution;
+    auto axis = s.frameA.column(0);
+    s.limit.start_rate =
+        dot(axis, vector3(registry.get<angvel>(c.body[1])) - vector3(registry.get<angvel>(c.body[0])));
+    for (int i = 0; i < 2; ++i) {
+        s.limit.impulse[i] = c.limit_impulse[i];
+        s.limit.bump_impulse[i] = c.bump_stop_impulse[i];
+        s.align_impulse[i] = c.align_impulse[i];
+    }
+    s.impulse = c.impulse;
+    s.friction_impulse = c.friction_impulse;
+    s.spring_impulse = c.spring_impulse;
+    return s;
+}
+
+namespace {
+
+struct hinge_pose {
+    matrix3x3 frameA;
+    vector3 axisB;
+    scalar angle;
+};
+
+hinge_pose current_hinge(const hinge_constraint_solver &s, const solver_body &a, const solver_body &b) {
+    auto frameA = rotate_frame(a.delta_rotation, s.frameA);
+    auto frameB = rotate_frame(b.delta_rotation, s.frameB);
+    return {frameA, frameB.column(0), unwrap_angle(s.angle, relative_angle(frameA, frameB))};
+}
+
+// A limit hit with restitution is solved as an isolated collision: the bounce row, the axis
+// and the pivot iterated together from zero impulses until they agree, so that the bounce is
+// the rate the hinge leaves the limit with (the angular row alone does not see that the pivot
+// constrains the body to turn about the hinge).
+void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], solver_body &a, solver_body &b,
+                        const constraint_solve_context &ctx) {
+    constexpr int iterations = 32;
+    auto rigid = ctx;
+    rigid.use_bias = false;
+    auto hinge = current_hinge(s, a, b);
+    auto axis = hinge.frameA.column(0);
+    // The limit's warm-started push is part of the approach being answered: take it back, or
+    // the limit row would remove it from the bounce once the hinge separates.
+    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    for (int i = 0; i < 2; ++i) {
+        if (bounce[i] <= 0) continue;
+        apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
+        s.limit.impulse[i] = 0;
+    }
+    scalar limit_impulse[2]{0, 0}, align_impulse[2]{0, 0};
+    vector3 point_impulse = vector3_zero;
+    for (int k = 0; k < iterations; ++k) {
+        solve_limit_bounce(axis, bounce, limit_impulse, a, b);
+        solve_axis_alignment(hinge.frameA, hinge.axisB, align_impulse, a, b, rigid);
+        solve_point_block(s.anchor, point_impulse, a, b, rigid);
+    }
+}
+
+} // namespace
+
+void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto pose = current_pose(s.anchor, a, b);
+    auto hinge = current_hinge(s, a, b);
+    auto axis = hinge.frameA.column(0);
+    apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
+    for (int i = 0; i < 2; ++i) {
+        apply_angular_impulse(a, b, cross(hinge.frameA.column(i + 1), hinge.axisB) * s.align_impulse[i]);
+    }
+    // Friction and spring rows act on the rate dot(axis, wA - wB).
+    apply_angular_impulse(a, b, axis * (s.friction_impulse + s.spring_impulse));
+    warm_start_angular_limit(s.limit, axis, a, b);
+}
+
+void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
+           const constraint_solve_context &ctx) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto hinge = current_hinge(s, a, b);
+    auto axis = hinge.frameA.column(0);
+    auto row = angular_jacobian(axis);
+
+    // Motion-resisting rows first; the limits and the joint itself have the final word.
+    if (s.friction_torque > 0) solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);
+    if (s.stiffness > 0 || s.damping > 0) {
+        // The row's rate is minus the angle's rate, so its position error is rest - angle.
+        solve_spring_row(row, s.rest_angle - hinge.angle, s.stiffness, s.damping, s.spring_impulse, a, b,
+                         ctx);
+    }
+    scalar bounce[2];
+    if (detect_limit_hits(s.limit, axis, hinge.angle, a, b, ctx, bounce)) {
+        solve_hinge_bounce(s, bounce, a, b, ctx);
+    }
+    solve_angular_limit(s.limit, axis, hinge.angle, a, b, ctx);
+    solve_axis_alignment(hinge.frameA, hinge.axisB, s.align_impulse, a, b, ctx);
+    solve_point_block(s.anchor, s.impulse, a, b, ctx);
+    if (!ctx.use_bias) s.angle = current_hinge(s, a, b).angle;
+}
+
+void store_impulses(const hinge_constraint_solver &s, hinge_constraint &c) noexcept {
+    c.angle = s.angle;
+    c.impulse = s.impulse;
+    for (int i = 0; i < 2; ++i) {
+        c.align_impulse[i] = s.align_impulse[i];
+        c.limit_impulse[i] = s.limit.impulse[i];
+        c.bump_stop_impulse[i] = s.limit.bump_impulse[i];
+    }
+    c.friction_impulse = s.friction_impulse;
+    c.spring_impulse = s.spring_impulse;
+}
+
+} // namespace edyn

@@ -1,0 +1,87 @@
+#include "edyn/constraints/point_constraint.hpp"
+#include <cmath>
+
+namespace edyn {
+
+void validate_constraint(const point_constraint &c) {
+    constexpr auto type = constraint_type_name<point_constraint>;
+    check_constraint_finite(type, "pivot[0]", c.pivot[0]);
+    check_constraint_finite(type, "pivot[1]", c.pivot[1]);
+    check_constraint_non_negative(type, "friction_torque", c.friction_torque);
+}
+
+point_constraint_solver make_constraint_solver(const registry &registry, const point_constraint &c,
+                                               constraint_body_indices indices) {
+    point_constraint_solver s;
+    s.anchor = make_joint_anchor(registry, c.body, c.pivot, indices);
+    s.friction_torque = c.friction_torque;
+    s.impulse = c.impulse;
+    s.friction_impulse = c.friction_torque > 0 ? c.friction_impulse : vector3_zero;
+    return s;
+}
+
+void warm_start(point_constraint_solver &s, std::span<solver_body> bodies) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto pose = current_pose(s.anchor, a, b);
+    apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
+    apply_angular_impulse(a, b, s.friction_impulse);
+}
+
+void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body &a, solver_body &b,
+                       const constraint_solve_context &ctx) noexcept {
+    auto pose = current_pose(anchor, a, b);
+    // K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB]: the pivots' relative velocity
+    // change per unit impulse. Solved as a block, so the three directions do not fight.
+    auto sA = skew_matrix(pose.rA), sB = skew_matrix(pose.rB);
+    auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) - sA * a.inv_inertia * sA -
+             sB * b.inv_inertia * sB;
+    auto det = determinant(k);
+    if (!(std::abs(det) > scalar(1e-12))) return;
+    auto mass = inverse(k);
+
+    scalar mass_scale = 1, impulse_scale = 0;
+    vector3 bias = vector3_zero;
+    if (ctx.use_bias && !ctx.rigid_pivots) {
+        bias = pose.d * ctx.joint.bias_rate;
+        mass_scale = ctx.joint.mass_scale;
+        impulse_scale = ctx.joint.impulse_scale;
+    }
+    auto v = relative_velocity(a, b, pose.rA, pose.rB);
+    auto delta = -(mass * (v + bias)) * mass_scale - impulse * impulse_scale;
+    impulse += delta;
+    apply_impulse(a, b, delta, pose.rA, pose.rB);
+}
+
+namespace {
+
+// Friction torque on all three axes, bounded as a vector so that it is isotropic.
+void solve_angular_friction(point_constraint_solver &s, solver_body &a, solver_body &b,
+                            const constraint_solve_context &ctx) {
+    auto k = a.inv_inertia + b.inv_inertia;
+    if (!(std::abs(determinant(k)) > scalar(1e-12))) return;
+    auto max_impulse = s.friction_torque * ctx.h;
+    auto new_impulse = s.friction_impulse - inverse(k) * (a.angvel - b.angvel);
+    auto len_sqr = length_sqr(new_impulse);
+    if (len_sqr > max_impulse * max_impulse) new_impulse *= max_impulse / std::sqrt(len_sqr);
+    apply_angular_impulse(a, b, new_impulse - s.friction_impulse);
+    s.friction_impulse = new_impulse;
+}
+
+} // namespace
+
+void solve(point_constraint_solver &s, std::span<solver_body> bodies,
+           const constraint_solve_context &ctx) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    // Friction first: the positional constraint, solved last, has the final word.
+    if (s.friction_torque > 0) solve_angular_friction(s, a, b, ctx);
+    solve_point_block(s.anchor, s.impulse, a, b, ctx);
+}
+
+void store_impulses(const point_constraint_solver &s, point_constraint &c) noexcept {
+    c.impulse = s.impulse;
+    c.friction_impulse = s.friction_impulse;
+}
+
+} // namespace edyn

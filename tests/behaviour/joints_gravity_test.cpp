@@ -1,0 +1,42 @@
+// Gravity constraint: a circular orbit with the period Kepler's third law gives.
+#include "joints_support.hpp"
+
+using namespace edyn;
+using edyn::test::crossing_timer;
+using edyn::test::world_fixture;
+
+using gravity_joint = world_fixture;
+
+TEST_F(gravity_joint, circular_orbit_has_keplers_period) {
+    set_gravity(reg, vector3_zero);
+    const scalar big_mass = scalar(1e12), small_mass = 1, radius = 10;
+    auto mu = gravitational_constant * (big_mass + small_mass);
+    auto speed = std::sqrt(mu / radius);
+    auto big_def = edyn::test::sphere_def(1, vector3_zero, big_mass);
+    // Momentum zero, so that the centre of mass stays put.
+    big_def.linvel = {0, -speed * small_mass / (big_mass + small_mass), 0};
+    auto planet = make_rigidbody(reg, big_def);
+    auto moon_def = edyn::test::sphere_def(scalar(0.1), {radius, 0, 0}, small_mass);
+    moon_def.linvel = {0, speed * big_mass / (big_mass + small_mass), 0};
+    auto moon = make_rigidbody(reg, moon_def);
+    make_constraint<gravity_constraint>(reg, planet, moon);
+
+    crossing_timer timer;
+    scalar min_r = radius, max_r = radius;
+    auto expected = 2 * pi * std::sqrt(radius * radius * radius / mu);
+    auto steps = int(2.2 * double(expected) * 60);
+    for (int i = 0; i < steps; ++i) {
+        step_simulation(reg);
+        auto rel = pos(moon) - pos(planet);
+        timer.sample(get_simulation_time(reg), rel.y);
+        min_r = std::min(min_r, length(rel));
+        max_r = std::max(max_r, length(rel));
+    }
+    ASSERT_GE(timer.times.size(), 2u);
+    auto measured = timer.mean_period();
+    EXPECT_NEAR(measured, expected, 0.02 * expected)
+        << "measured period " << measured << " s, expected " << expected << " s";
+    // Circular: the distance stays within 2% of the radius.
+    EXPECT_NEAR(min_r, radius, scalar(0.02) * radius) << "closest " << min_r;
+    EXPECT_NEAR(max_r, radius, scalar(0.02) * radius) << "farthest " << max_r;
+}

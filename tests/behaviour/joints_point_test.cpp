@@ -1,0 +1,182 @@
+// Point, distance, soft distance and null constraints against closed-form physics.
+#include "joints_support.hpp"
+
+using namespace edyn;
+using edyn::test::crossing_timer;
+using edyn::test::world_fixture;
+
+using point_joint = world_fixture;
+using distance_joint = world_fixture;
+using soft_distance_joint = world_fixture;
+using null_joint = world_fixture;
+
+TEST_F(point_joint, pendulum_period_is_two_pi_sqrt_l_over_g) {
+    const scalar length = 1, radius = scalar(0.05), g = scalar(9.8);
+    const scalar theta0 = to_radians(5);
+    auto anchor = edyn::test::make_anchor(reg, {0, 2, 0});
+    auto def = edyn::test::sphere_def(radius, {length * std::sin(theta0), 2 - length * std::cos(theta0), 0});
+    def.orientation = quaternion_axis_angle(vector3_z, theta0);
+    auto bob = make_rigidbody(reg, def);
+    make_constraint<point_constraint>(reg, anchor, bob, [&](point_constraint &c) {
+        c.pivot[0] = vector3_zero;
+        c.pivot[1] = {0, length, 0};
+    });
+
+    crossing_timer timer;
+    for (int i = 0; i < 60 * 12; ++i) {
+        step_simulation(reg);
+        timer.sample(get_simulation_time(reg), pos(bob).x);
+    }
+    // A sphere on a massless rod is a physical pendulum: I = m L^2 + 2/5 m r^2 about the pivot.
+    // The finite amplitude lengthens the period by theta0^2 / 16.
+    auto inertia_ratio = (length * length + scalar(0.4) * radius * radius) / length;
+    auto expected = 2 * pi * std::sqrt(inertia_ratio / g) * (1 + theta0 * theta0 / 16);
+    auto measured = timer.mean_period();
+    ASSERT_GE(timer.times.size(), 5u);
+    EXPECT_NEAR(measured, expected, 0.01 * expected)
+        << "measured period " << measured << " s, expected " << expected << " s";
+    // The bob stays on its circle.
+    auto r = distance(pos(bob), vector3{0, 2, 0});
+    EXPECT_NEAR(r, length, scalar(0.002)) << "measured radius " << r << ", expected " << length;
+}
+
+TEST_F(point_joint, pivots_are_relative_to_the_origin_not_the_centre_of_mass) {
+    auto anchor = edyn::test::make_anchor(reg, {0, 3, 0});
+    auto def = edyn::test::box_def({scalar(0.1), scalar(0.5), scalar(0.1)}, {0, 2, 0});
+    def.center_of_mass = vector3{0, scalar(-0.3), 0};
+    auto bar = make_rigidbody(reg, def);
+    const vector3 pivot{0, scalar(0.5), 0};
+    make_constraint<point_constraint>(reg, anchor, bar, [&](point_constraint &c) {
+        c.pivot[0] = {0, -scalar(0.5), 0};
+        c.pivot[1] = pivot;
+    });
+    rigidbody_apply_impulse(reg, bar, {2, 0, 1}, vector3_zero);
+    run_for(2);
+    auto gap = distance(edyn::test::world_pivot(reg, bar, pivot), vector3{0, scalar(2.5), 0});
+    EXPECT_LT(gap, scalar(0.005)) << "pivot separation " << gap << " m, expected 0";
+}
+
+TEST_F(point_joint, friction_torque_stops_a_spinning_body_at_the_rate_it_sets) {
+    set_gravity(reg, vector3_zero);
+    auto anchor = edyn::test::make_anchor(reg, {0, 0, 0});
+    auto def = edyn::test::sphere_def(scalar(0.5), {0, 0, 0}, 2);
+    def.angvel = {0, 4, 0};
+    auto ball = make_rigidbody(reg, def);
+    const scalar torque = scalar(0.2);
+    make_constraint<point_constraint>(reg, anchor, ball,
+                                      [&](point_constraint &c) { c.friction_torque = torque; });
+    // I = 2/5 m r^2 = 0.2: the spin decelerates at torque / I = 1 rad/s^2.
+    run_for(2);
+    auto inertia = scalar(0.4) * 2 * scalar(0.25);
+    auto expected = 4 - torque / inertia * 2;
+    EXPECT_NEAR(angular(ball).y, expected, scalar(0.02))
+        << "measured " << angular(ball).y << " rad/s, expected " << expected;
+    run_for(3);
+    EXPECT_NEAR(angular(ball).y, 0, scalar(1e-3));
+}
+
+TEST_F(distance_joint, chain_of_twenty_keeps_every_length_within_half_a_percent) {
+    // A straight chain released 30 degrees from the vertical, swinging for 5 s.
+    const int links = 20;
+    const scalar spacing = scalar(0.5), angle = to_radians(30);
+    auto anchor = edyn::test::make_anchor(reg, {0, 20, 0});
+    std::vector<entity> bodies{anchor};
+    for (int i = 1; i <= links; ++i) {
+        auto along = spacing * scalar(i);
+        bodies.push_back(make_rigidbody(
+            reg,
+            edyn::test::sphere_def(scalar(0.1), {along * std::sin(angle), 20 - along * std::cos(angle), 0})));
+        make_constraint<distance_constraint>(reg, bodies[i - 1], bodies[i],
+                                             [&](distance_constraint &c) { c.distance = spacing; });
+    }
+    scalar worst = 0, lowest_x = 0;
+    for (int step = 0; step < 60 * 5; ++step) {
+        step_simulation(reg);
+        for (int i = 1; i <= links; ++i) {
+            auto error = std::abs(distance(pos(bodies[i - 1]), pos(bodies[i])) - spacing) / spacing;
+            worst = std::max(worst, error);
+        }
+        lowest_x = std::min(lowest_x, pos(bodies.back()).x);
+    }
+    EXPECT_LT(worst, scalar(0.005)) << "worst relative length error " << worst << ", expected below 0.005";
+    // It swung through the vertical to the other side.
+    EXPECT_LT(lowest_x, scalar(-1));
+}
+
+TEST_F(soft_distance_joint, oscillates_at_sqrt_k_over_m) {
+    set_gravity(reg, vector3_zero);
+    const scalar k = 200, m = 2, rest = 1;
+    auto anchor = edyn::test::make_anchor(reg, {0, 0, 0});
+    auto body = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {rest + scalar(0.1), 0, 0}, m));
+    make_constraint<soft_distance_constraint>(reg, anchor, body, [&](soft_distance_constraint &c) {
+        c.distance = rest;
+        c.stiffness = k;
+        c.damping = 0;
+    });
+    crossing_timer timer;
+    for (int i = 0; i < 60 * 5; ++i) {
+        step_simulation(reg);
+        timer.sample(get_simulation_time(reg), vel(body).x);
+    }
+    auto expected = 2 * pi / std::sqrt(k / m);
+    auto measured = timer.mean_period();
+    ASSERT_GE(timer.times.size(), 3u);
+    EXPECT_NEAR(measured, expected, 0.03 * expected)
+        << "measured period " << measured << " s, expected " << expected << " s";
+    // The implicit spring loses (h w)^2 / 2 of its amplitude per sub-step, no more.
+    auto h = get_fixed_dt(reg) / scalar(get_solver_velocity_iterations(reg));
+    auto hw = h * std::sqrt(k / m);
+    auto substeps = scalar(60 * 5) * scalar(get_solver_velocity_iterations(reg));
+    auto expected_amplitude = scalar(0.1) * std::pow(1 + hw * hw, -substeps / 2);
+    auto amplitude = std::hypot(pos(body).x - rest, vel(body).x / std::sqrt(k / m));
+    EXPECT_NEAR(amplitude, expected_amplitude, scalar(0.1) * expected_amplitude)
+        << "measured amplitude " << amplitude << ", expected " << expected_amplitude;
+}
+
+TEST_F(soft_distance_joint, damping_decays_the_amplitude_exponentially) {
+    set_gravity(reg, vector3_zero);
+    const scalar k = 200, m = 2, c = 8, rest = 1;
+    auto anchor = edyn::test::make_anchor(reg, {0, 0, 0});
+    auto body = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {rest + scalar(0.1), 0, 0}, m));
+    make_constraint<soft_distance_constraint>(reg, anchor, body, [&](soft_distance_constraint &s) {
+        s.distance = rest;
+        s.stiffness = k;
+        s.damping = c;
+    });
+    run_for(1);
+    // x(t) envelope: 0.1 exp(-c t / 2m); energy-like amplitude from position and velocity.
+    auto omega = std::sqrt(k / m);
+    auto amplitude = std::sqrt(std::pow(pos(body).x - rest, 2) + std::pow(vel(body).x / omega, 2));
+    // Physical decay exp(-c t / 2m); implicit integration damps a little more, (h w)^2 / 2 per
+    // sub-step at most (8% over this second), hence the tolerance.
+    auto expected = scalar(0.1) * std::exp(-c / (2 * m));
+    EXPECT_NEAR(amplitude, expected, scalar(0.1) * expected)
+        << "measured amplitude " << amplitude << ", expected " << expected;
+}
+
+TEST_F(null_joint, keeps_two_distant_bodies_in_one_island) {
+    auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, 5, 0}));
+    auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {50, 5, 0}));
+    EXPECT_NE(reg.get<island_resident>(a).island_entity, reg.get<island_resident>(b).island_entity);
+    auto edge = make_constraint<null_constraint>(reg, a, b);
+    EXPECT_EQ(reg.get<island_resident>(a).island_entity, reg.get<island_resident>(b).island_entity);
+    EXPECT_EQ(reg.get<island_resident>(edge).island_entity, reg.get<island_resident>(a).island_entity);
+    run_for(1);
+    // They fall freely: no force between them.
+    EXPECT_NEAR(pos(b).x, 50, scalar(1e-5));
+    EXPECT_EQ(reg.get<island_resident>(a).island_entity, reg.get<island_resident>(b).island_entity);
+    // Destroying a body destroys its constraints.
+    reg.destroy(b);
+    EXPECT_FALSE(reg.valid(edge));
+}
+
+TEST_F(null_joint, connects_an_external_entity_to_a_body_island) {
+    auto body = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, 5, 0}));
+    auto external = reg.create();
+    tag_external_entity(reg, external);
+    auto edge = make_constraint<null_constraint>(reg, body, external);
+    EXPECT_EQ(reg.get<island_resident>(edge).island_entity, reg.get<island_resident>(body).island_entity);
+    reg.destroy(external);
+    EXPECT_FALSE(reg.valid(edge));
+    run_for(scalar(0.1));
+}
