@@ -1,0 +1,247 @@
+// Closed-form checks of rolling and spinning friction and of material mixing overrides.
+//
+// The contact solver limits the rolling and spinning resistance of a contact to a torque of
+// coefficient x normal force (the coefficient is a torque per unit weight, in metres; see the
+// manual's "Friction"). For a sphere of mass m, radius r and I = 2/5 m r^2 on flat ground:
+//  - rolling without slipping under a resisting torque c m g decelerates at
+//    a = c m g / (r m (1 + I / (m r^2))) = c g / (1.4 r);
+//  - spinning about the normal under a torque s m g decelerates at alpha = s m g / I, and stops
+//    after t = w0 I / (s m g).
+#include "behaviour_support.hpp"
+#include <edyn_scenes/scenes.hpp>
+
+using namespace edyn;
+using edyn::test::world_fixture;
+
+namespace {
+
+constexpr scalar g = scalar(9.8);
+
+struct friction : world_fixture {
+    // A sphere touching the ground at the origin, rolling along +x at speed v without slipping.
+    entity make_rolling_sphere(scalar radius, scalar v, scalar roll_friction) {
+        auto def = edyn::test::sphere_def(radius, {0, radius, 0});
+        def.material->friction = 1;
+        def.material->roll_friction = roll_friction;
+        def.linvel = {v, 0, 0};
+        def.angvel = {0, 0, -v / radius};
+        def.sleeping_disabled = true;
+        return make_rigidbody(reg, def);
+    }
+
+    entity make_spinning_sphere(scalar radius, scalar w, scalar spin_friction) {
+        auto def = edyn::test::sphere_def(radius, {0, radius, 0});
+        def.material->friction = 1;
+        def.material->spin_friction = spin_friction;
+        def.angvel = {0, w, 0};
+        def.sleeping_disabled = true;
+        return make_rigidbody(reg, def);
+    }
+};
+
+} // namespace
+
+TEST_F(friction, rolling_friction_decelerates_a_rolling_sphere_at_c_g_over_1_4_r) {
+    // The ground's coefficient is 0: the default mixing takes the larger one, the sphere's.
+    scenes::make_ground(reg, 1, 0);
+    const scalar r = scalar(0.5), v0 = 5, c = scalar(0.05);
+    auto ball = make_rolling_sphere(r, v0, c);
+    // Let the contact settle for a step before measuring.
+    step_simulation(reg);
+    auto v_start = vel(ball).x;
+    auto seconds = scalar(2);
+    run_for(seconds);
+    auto v_end = vel(ball).x;
+
+    auto expected = c * g / (scalar(1.4) * r);
+    auto measured = (v_start - v_end) / seconds;
+    EXPECT_NEAR(measured, expected, scalar(0.03) * expected)
+        << "deceleration measured " << measured << " m/s^2, expected " << expected;
+    // Still rolling without slipping.
+    EXPECT_NEAR(-angular(ball).z * r, v_end, scalar(0.01) * v_end)
+        << "w r " << -angular(ball).z * r << " vs v " << v_end;
+    EXPECT_NEAR(pos(ball).y, r, scalar(0.01));
+}
+
+TEST_F(friction, rolling_friction_stops_a_slow_sphere_and_keeps_it_stopped) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar r = scalar(0.5), v0 = 1, c = scalar(0.05);
+    auto ball = make_rolling_sphere(r, v0, c);
+    auto a = c * g / (scalar(1.4) * r);
+    auto stop_time = v0 / a;
+    auto stop_distance = v0 * v0 / (2 * a);
+    run_for(stop_time + 1);
+    EXPECT_NEAR(vel(ball).x, 0, scalar(1e-3)) << "still moving after " << stop_time + 1 << " s";
+    EXPECT_NEAR(pos(ball).x, stop_distance, scalar(0.03) * stop_distance)
+        << "stopped after " << pos(ball).x << " m, expected " << stop_distance;
+}
+
+TEST_F(friction, without_rolling_friction_a_rolling_sphere_keeps_its_speed) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar r = scalar(0.5), v0 = 5;
+    auto ball = make_rolling_sphere(r, v0, 0);
+    run_for(2);
+    EXPECT_NEAR(vel(ball).x, v0, scalar(0.01) * v0)
+        << "speed " << vel(ball).x << " after 2 s, expected " << v0;
+    EXPECT_NEAR(pos(ball).x, 2 * v0, scalar(0.01) * 2 * v0);
+}
+
+TEST_F(friction, rolling_friction_slows_a_cylinder_rolling_about_its_axis_at_c_g_over_1_5_r) {
+    // I = 1/2 m r^2 about the axis: a = c m g / (r m (1 + 1/2)).
+    scenes::make_ground(reg, 1, 0);
+    const scalar r = scalar(0.5), v0 = 5, c = scalar(0.05);
+    rigidbody_def def;
+    def.shape = cylinder_shape{r, scalar(0.5), coordinate_axis::z};
+    def.position = {0, r, 0};
+    def.material->friction = 1;
+    def.material->roll_friction = c;
+    def.linvel = {v0, 0, 0};
+    def.angvel = {0, 0, -v0 / r};
+    def.sleeping_disabled = true;
+    auto wheel = make_rigidbody(reg, def);
+    step_simulation(reg);
+    auto v_start = vel(wheel).x;
+    auto seconds = scalar(2);
+    run_for(seconds);
+    auto expected = c * g / (scalar(1.5) * r);
+    auto measured = (v_start - vel(wheel).x) / seconds;
+    EXPECT_NEAR(measured, expected, scalar(0.03) * expected)
+        << "deceleration measured " << measured << " m/s^2, expected " << expected;
+    // The line contact's points may push it sideways a little: under 0.5% of the distance
+    // rolled (about 9 m).
+    EXPECT_NEAR(pos(wheel).z, 0, scalar(0.005) * pos(wheel).x)
+        << "the wheel drifted " << pos(wheel).z << " m along its axis over " << pos(wheel).x << " m";
+}
+
+TEST_F(friction, spinning_friction_stops_a_spinning_sphere_after_w0_i_over_s_m_g) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar r = scalar(0.5), m = 1, w0 = 10, s = scalar(0.05);
+    auto ball = make_spinning_sphere(r, w0, s);
+    auto I = scalar(0.4) * m * r * r;
+    auto alpha = s * m * g / I;
+    auto stop_time = w0 * I / (s * m * g);
+
+    step_simulation(reg);
+    auto w_start = angular(ball).y;
+    run_for(1);
+    auto measured = w_start - angular(ball).y;
+    EXPECT_NEAR(measured, alpha, scalar(0.03) * alpha)
+        << "angular deceleration measured " << measured << " rad/s^2, expected " << alpha;
+
+    // Find when it stops.
+    auto t = get_fixed_dt(reg) * 61;
+    while (angular(ball).y > scalar(1e-3) && t < 2 * stop_time) {
+        step_simulation(reg);
+        t += get_fixed_dt(reg);
+    }
+    EXPECT_NEAR(t, stop_time, scalar(0.03) * stop_time)
+        << "stopped after " << t << " s, expected " << stop_time;
+    run_for(1);
+    EXPECT_NEAR(angular(ball).y, 0, scalar(1e-3)) << "spins again";
+    // Spinning about the normal does not move the ball.
+    EXPECT_NEAR(pos(ball).x, 0, scalar(1e-3));
+    EXPECT_NEAR(pos(ball).z, 0, scalar(1e-3));
+}
+
+TEST_F(friction, without_spinning_friction_a_spinning_sphere_keeps_spinning) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar w0 = 10;
+    auto ball = make_spinning_sphere(scalar(0.5), w0, 0);
+    run_for(2);
+    EXPECT_NEAR(angular(ball).y, w0, scalar(0.01) * w0) << "spin " << angular(ball).y << " after 2 s";
+}
+
+// Material mixing: a pair entry replaces the default mixing for bodies with those ids.
+using material_mixing_override = world_fixture;
+
+namespace {
+
+constexpr material_id_type ground_id = 1;
+constexpr material_id_type box_id = 2;
+
+entity make_ground_with_id(registry &reg, scalar friction, scalar restitution) {
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_static;
+    def.material->friction = friction;
+    def.material->restitution = restitution;
+    def.material->id = ground_id;
+    def.shape = plane_shape{vector3_y, 0};
+    return make_rigidbody(reg, def);
+}
+
+entity make_sliding_box(registry &reg, scalar v, scalar friction) {
+    auto def = edyn::test::box_def({scalar(0.5), scalar(0.5), scalar(0.5)}, {0, scalar(0.5), 0});
+    def.material->friction = friction;
+    def.material->id = box_id;
+    def.linvel = {v, 0, 0};
+    return make_rigidbody(reg, def);
+}
+
+} // namespace
+
+TEST_F(material_mixing_override, default_mixing_stops_a_sliding_box_after_v_squared_over_2_mu_g) {
+    make_ground_with_id(reg, scalar(0.4), 0);
+    auto box = make_sliding_box(reg, 5, scalar(0.4));
+    run_for(3);
+    // Default mixing: sqrt(0.4 * 0.4) = 0.4.
+    auto expected = scalar(25) / (2 * scalar(0.4) * g);
+    EXPECT_NEAR(pos(box).x, expected, scalar(0.03) * expected)
+        << "slid " << pos(box).x << " m, expected " << expected;
+    EXPECT_NEAR(vel(box).x, 0, scalar(1e-3));
+}
+
+TEST_F(material_mixing_override, zero_friction_pair_lets_the_box_slide_without_slowing) {
+    material_base ice;
+    ice.friction = 0;
+    insert_material_mixing(reg, ground_id, box_id, ice);
+    make_ground_with_id(reg, scalar(0.4), 0);
+    auto box = make_sliding_box(reg, 5, scalar(0.4));
+    run_for(3);
+    EXPECT_NEAR(vel(box).x, 5, scalar(1e-3)) << "speed " << vel(box).x << " after 3 s, expected 5";
+    EXPECT_NEAR(pos(box).x, 15, scalar(0.01) * 15);
+}
+
+TEST_F(material_mixing_override, pair_friction_overrides_in_either_id_order) {
+    material_base rough;
+    rough.friction = scalar(0.8);
+    // Inserted as (box, ground): the contact is (ground, box) or (box, ground), both must match.
+    insert_material_mixing(reg, box_id, ground_id, rough);
+    make_ground_with_id(reg, scalar(0.1), 0);
+    auto box = make_sliding_box(reg, 5, scalar(0.1));
+    run_for(3);
+    auto expected = scalar(25) / (2 * scalar(0.8) * g);
+    EXPECT_NEAR(pos(box).x, expected, scalar(0.03) * expected)
+        << "slid " << pos(box).x << " m, expected " << expected << " (mixed default would give "
+        << scalar(25) / (2 * scalar(0.1) * g) << ")";
+}
+
+TEST_F(material_mixing_override, pair_restitution_overrides_the_bounce) {
+    // Both materials have restitution 0; the pair says 0.8, so the ball bounces to 0.64 h.
+    material_base bouncy;
+    bouncy.restitution = scalar(0.8);
+    const material_id_type ball_id = 3;
+    insert_material_mixing(reg, ground_id, ball_id, bouncy);
+    make_ground_with_id(reg, scalar(0.5), 0);
+    auto def = edyn::test::sphere_def(scalar(0.25), {0, scalar(2.25), 0});
+    def.material->id = ball_id;
+    auto ball = make_rigidbody(reg, def);
+
+    bool bounced = false;
+    scalar peak = 0;
+    for (int i = 0; i < 300; ++i) {
+        step_simulation(reg);
+        auto v = vel(ball).y;
+        if (!bounced && v > 0) bounced = true;
+        if (bounced) {
+            peak = std::max(peak, pos(ball).y - scalar(0.25));
+            if (v < 0) break;
+        }
+    }
+    ASSERT_TRUE(bounced) << "the ball did not bounce";
+    auto expected = 2 * scalar(0.64);
+    // As in the bounce test: the bounce may begin up to one sub-step of travel early.
+    auto impact_speed = std::sqrt(2 * g * 2);
+    auto substep = get_fixed_dt(reg) / scalar(get_solver_velocity_iterations(reg));
+    EXPECT_NEAR(peak, expected, impact_speed * substep + scalar(0.01) * expected)
+        << "peak " << peak << " m, expected " << expected;
+}

@@ -1,0 +1,129 @@
+// Default material mixing and pair overrides (material_mixing.hpp).
+#include <cmath>
+#include <edyn/edyn.hpp>
+#include <gtest/gtest.h>
+#include <limits>
+
+using namespace edyn;
+
+namespace {
+
+material make_material(scalar friction, scalar restitution, material_id_type id = invalid_material_id) {
+    material m;
+    m.friction = friction;
+    m.restitution = restitution;
+    m.id = id;
+    return m;
+}
+
+} // namespace
+
+TEST(material_mixing, default_functions_are_the_documented_ones) {
+    // Friction: geometric mean, so one frictionless surface makes the contact frictionless.
+    EXPECT_FLOAT_EQ(mix_friction(scalar(0.25), 1), scalar(0.5));
+    EXPECT_FLOAT_EQ(mix_friction(scalar(0.4), scalar(0.4)), scalar(0.4));
+    EXPECT_EQ(mix_friction(0, scalar(0.9)), 0);
+    // Restitution, rolling and spinning friction: the larger value.
+    EXPECT_EQ(mix_restitution(scalar(0.2), scalar(0.7)), scalar(0.7));
+    EXPECT_EQ(mix_restitution(scalar(0.7), scalar(0.2)), scalar(0.7));
+    EXPECT_EQ(mix_roll_friction(0, scalar(0.05)), scalar(0.05));
+    EXPECT_EQ(mix_spin_friction(scalar(0.03), 0), scalar(0.03));
+    // Stiffness: springs in series; a rigid side leaves the other's.
+    EXPECT_FLOAT_EQ(mix_stiffness(100, 300), 75);
+    EXPECT_EQ(mix_stiffness(large_scalar, 300), 300);
+    EXPECT_EQ(mix_stiffness(300, large_scalar), 300);
+    EXPECT_EQ(mix_stiffness(large_scalar, large_scalar), large_scalar);
+    EXPECT_FLOAT_EQ(mix_damping(10, 10), 5);
+}
+
+TEST(material_mixing, mix_materials_applies_each_function) {
+    material_base a, b;
+    a.friction = scalar(0.25);
+    b.friction = 1;
+    a.restitution = scalar(0.1);
+    b.restitution = scalar(0.6);
+    a.roll_friction = scalar(0.02);
+    b.spin_friction = scalar(0.01);
+    a.stiffness = 100;
+    b.stiffness = 300;
+    auto m = mix_materials(a, b);
+    EXPECT_FLOAT_EQ(m.friction, scalar(0.5));
+    EXPECT_EQ(m.restitution, scalar(0.6));
+    EXPECT_EQ(m.roll_friction, scalar(0.02));
+    EXPECT_EQ(m.spin_friction, scalar(0.01));
+    EXPECT_FLOAT_EQ(m.stiffness, 75);
+    EXPECT_EQ(m.damping, large_scalar);
+    // Symmetric.
+    EXPECT_EQ(mix_materials(b, a), m);
+}
+
+TEST(material_mixing, the_defaults_are_those_of_the_manual) {
+    material m;
+    EXPECT_EQ(m.friction, scalar(0.5));
+    EXPECT_EQ(m.restitution, 0);
+    EXPECT_EQ(m.roll_friction, 0);
+    EXPECT_EQ(m.spin_friction, 0);
+    EXPECT_EQ(m.id, invalid_material_id);
+}
+
+TEST(material_mixing, a_pair_entry_overrides_the_default_in_either_order) {
+    registry reg;
+    auto ball = make_material(scalar(0.3), scalar(0.2), 0);
+    auto table = make_material(scalar(0.8), scalar(0.1), 1);
+    // No entry yet: the default mixing.
+    EXPECT_EQ(get_mixed_material(reg, ball, table), mix_materials(ball, table));
+
+    material_base ball_table;
+    ball_table.friction = scalar(0.2);
+    ball_table.restitution = scalar(0.5);
+    insert_material_mixing(reg, 0, 1, ball_table);
+    EXPECT_EQ(get_mixed_material(reg, ball, table), ball_table);
+    EXPECT_EQ(get_mixed_material(reg, table, ball), ball_table);
+
+    // Pairs are distinct: ball-ball still mixes by default until it has its own entry.
+    EXPECT_EQ(get_mixed_material(reg, ball, ball), mix_materials(ball, ball));
+    material_base ball_ball;
+    ball_ball.friction = scalar(0.05);
+    ball_ball.restitution = scalar(0.95);
+    insert_material_mixing(reg, 0, 0, ball_ball);
+    EXPECT_EQ(get_mixed_material(reg, ball, ball), ball_ball);
+    EXPECT_EQ(get_mixed_material(reg, ball, table), ball_table);
+
+    // Inserting again replaces the entry, whatever the order of the ids.
+    ball_table.friction = scalar(0.7);
+    insert_material_mixing(reg, 1, 0, ball_table);
+    EXPECT_EQ(get_mixed_material(reg, ball, table).friction, scalar(0.7));
+
+    // A body without an id always mixes by default.
+    auto plain = make_material(scalar(0.3), scalar(0.2));
+    EXPECT_EQ(get_mixed_material(reg, plain, table), mix_materials(plain, table));
+}
+
+TEST(material_mixing, insert_rejects_invalid_ids_and_values_and_keeps_the_table) {
+    registry reg;
+    material_base good;
+    insert_material_mixing(reg, 2, 3, good);
+    auto bad = [](auto change) {
+        material_base m;
+        change(m);
+        return m;
+    };
+    constexpr auto qnan = std::numeric_limits<scalar>::quiet_NaN();
+    EXPECT_THROW(insert_material_mixing(reg, invalid_material_id, 3, good), std::invalid_argument);
+    EXPECT_THROW(insert_material_mixing(reg, 2, invalid_material_id, good), std::invalid_argument);
+    EXPECT_THROW(insert_material_mixing(reg, 2, 3, bad([](material_base &m) { m.friction = -1; })),
+                 std::invalid_argument);
+    EXPECT_THROW(insert_material_mixing(reg, 2, 3, bad([](material_base &m) { m.friction = qnan; })),
+                 std::invalid_argument);
+    EXPECT_THROW(
+        insert_material_mixing(reg, 2, 3, bad([](material_base &m) { m.restitution = scalar(1.1); })),
+        std::invalid_argument);
+    EXPECT_THROW(insert_material_mixing(reg, 2, 3, bad([](material_base &m) { m.roll_friction = -1; })),
+                 std::invalid_argument);
+    EXPECT_THROW(insert_material_mixing(reg, 2, 3, bad([](material_base &m) { m.spin_friction = qnan; })),
+                 std::invalid_argument);
+    // The entry made before is unchanged.
+    auto a = make_material(1, 1, 2), b = make_material(1, 1, 3);
+    EXPECT_EQ(get_mixed_material(reg, a, b), good);
+    EXPECT_EQ(reg.ctx().get<material_mix_table>().pairs.size(), 1u);
+}
