@@ -300,6 +300,9 @@ void rigidbody_set_shape(registry &registry, entity e, std::optional<shapes_vari
     auto *filter = registry.try_get<collision_filter>(e);
     auto filter_value = filter ? *filter : collision_filter{};
     remove_shape(registry, e);
+    // Signals the change through linvel, whose listeners wake the body: a sleeping body must
+    // move again when it loses the shape it rested on, or gets a new one.
+    registry.patch<linvel>(e);
     if (!shape) return;
 
     if (kind == rigidbody_kind::rb_dynamic) {

@@ -17,6 +17,8 @@
 #include "edyn/simulation/interpolation.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include <utility>
+#include <vector>
 
 namespace edyn {
 
@@ -131,8 +133,22 @@ void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
 void on_change_filter(registry &registry, entity e) {
-    auto &bp = world(registry).broadphase;
-    if (bp.contains(e)) bp.refilter(registry, e);
+    auto &w = world(registry);
+    if (!w.broadphase.contains(e)) return;
+    // Refiltering may destroy manifolds that sleeping bodies rest on, this body's or the other
+    // one's (a static floor filtered out from under them): those bodies must wake to fall.
+    // Filters change rarely, so looking through all manifolds is affordable.
+    std::vector<std::pair<entity, contact_manifold>> touching;
+    for (auto m : registry.view<contact_manifold>()) {
+        auto &manifold = registry.get<contact_manifold>(m);
+        if (manifold.body[0] == e || manifold.body[1] == e) touching.emplace_back(m, manifold);
+    }
+    w.broadphase.refilter(registry, e);
+    for (auto &[m, manifold] : touching) {
+        if (registry.valid(m)) continue;
+        w.islands.wake_entity(registry, manifold.body[0]);
+        w.islands.wake_entity(registry, manifold.body[1]);
+    }
 }
 
 template<typename... Components>

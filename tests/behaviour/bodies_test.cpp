@@ -1,0 +1,203 @@
+// Centre of mass shifts, and changing a body's kind and shape at run time.
+#include "behaviour_support.hpp"
+#include <edyn_scenes/scenes.hpp>
+
+using namespace edyn;
+using edyn::test::world_fixture;
+
+namespace {
+
+constexpr scalar g = scalar(9.8);
+const vector3 unit_half{scalar(0.5), scalar(0.5), scalar(0.5)};
+
+// Velocity of the body's material point at world position p.
+vector3 point_velocity(const registry &reg, entity e, const vector3 &p) {
+    return static_cast<vector3>(reg.get<linvel>(e)) + cross(reg.get<angvel>(e), p - reg.get<position>(e));
+}
+
+void expect_near(const vector3 &measured, const vector3 &expected, scalar tolerance, const char *what) {
+    EXPECT_LE(length(measured - expected), tolerance)
+        << what << ": measured (" << measured.x << ", " << measured.y << ", " << measured.z << "), expected ("
+        << expected.x << ", " << expected.y << ", " << expected.z << ")";
+}
+
+// How far a body falls freely in `seconds`: sub-stepped semi-implicit Euler falls
+// g h^2 n (n + 1) / 2 after n sub-steps of h (0.3% more than g t^2 / 2 after 1 s).
+scalar fall(const registry &reg, scalar seconds) {
+    auto n = std::round(seconds / get_fixed_dt(reg)) * scalar(get_solver_velocity_iterations(reg));
+    auto h = seconds / n;
+    return g * h * h * n * (n + 1) / 2;
+}
+
+} // namespace
+
+using center_of_mass_shift = world_fixture;
+
+// A sphere whose centre of mass is offset sideways lands on frictionless ground. The contact
+// acts at the point under the sphere's centre, off the centre of mass by r, so the normal
+// impulse J n gives dv = J n / m and dw = I^-1 (r x n) J: whatever J, dw_z / dv_y =
+// m (r x n)_z / I_zz. With radius 0.5, m = 1, offset 0.2: r = (-0.2, -0.5, 0), (r x n)_z = -0.2,
+// I_zz = 2/5 m R^2 + m 0.2^2 = 0.14, so the ratio is -1.4286. Without the offset it is 0.
+TEST_F(center_of_mass_shift, an_offset_centre_of_mass_turns_a_vertical_impact_into_rotation) {
+    rigidbody_def ground;
+    ground.kind = rigidbody_kind::rb_static;
+    ground.material->friction = 0;
+    ground.shape = plane_shape{vector3_y, 0};
+    make_rigidbody(reg, ground);
+
+    const scalar R = scalar(0.5), m = 1, d = scalar(0.2);
+    auto def = edyn::test::sphere_def(R, {0, R + scalar(0.01), 0}, m);
+    def.material->friction = 0;
+    def.gravity = vector3_zero;
+    def.linvel = {0, -2, 0};
+    def.center_of_mass = vector3{d, 0, 0};
+    auto ball = make_rigidbody(reg, def);
+    // The same ball, centred, far away.
+    def.center_of_mass.reset();
+    def.position.x = 10;
+    auto centred = make_rigidbody(reg, def);
+
+    EXPECT_NEAR(pos(ball).x, d, scalar(1e-6)) << "position is the centre of mass";
+    EXPECT_NEAR(get_rigidbody_origin(reg, ball).x, 0, scalar(1e-6));
+    auto I_zz = scalar(0.4) * m * R * R + m * d * d;
+    EXPECT_NEAR(reg.get<inertia>(ball).row[2].z, I_zz, scalar(1e-5)) << "parallel axis theorem";
+
+    step_simulation(reg);
+    auto dv = vel(ball).y + 2;
+    auto dw = angular(ball).z;
+    ASSERT_GT(dv, scalar(0.5)) << "the ball did not hit the ground in the first step";
+    auto expected_ratio = m * -d / I_zz;
+    EXPECT_NEAR(dw / dv, expected_ratio, scalar(0.03) * std::abs(expected_ratio))
+        << "dw_z / dv_y measured " << dw / dv << ", expected " << expected_ratio;
+    // Restitution 0: the contact point stops, v_y + (w x r)_y = v_y - 0.2 w_z = 0, which with the
+    // ratio above gives J = 2 / (1 + 0.2^2 / 0.14) and v_y = J - 2.
+    auto J = 2 / (1 + d * d / I_zz);
+    EXPECT_NEAR(vel(ball).y, J - 2, scalar(0.05)) << "rebound velocity, J = " << J;
+
+    EXPECT_NEAR(angular(centred).z, 0, scalar(1e-6)) << "a centred ball must not turn";
+    EXPECT_NEAR(vel(centred).y, 0, scalar(0.05));
+}
+
+TEST_F(center_of_mass_shift, moving_the_centre_of_mass_at_run_time_keeps_the_origin_and_its_motion) {
+    auto def = edyn::test::box_def(unit_half, {1, 2, 3}, 2);
+    def.orientation = normalize(quaternion{scalar(0.1), scalar(0.7), scalar(-0.2), scalar(0.6)});
+    def.linvel = {1, 2, 3};
+    def.angvel = {scalar(0.5), -1, 2};
+    def.gravity = vector3_zero;
+    auto box = make_rigidbody(reg, def);
+    run_for(scalar(0.25));
+
+    auto origin = get_rigidbody_origin(reg, box);
+    auto origin_velocity = point_velocity(reg, box, origin);
+    auto corner = origin + rotate(reg.get<orientation>(box), unit_half);
+    auto corner_velocity = point_velocity(reg, box, corner);
+
+    const vector3 com{scalar(0.1), scalar(-0.2), scalar(0.3)};
+    set_center_of_mass(reg, box, com);
+    expect_near(get_rigidbody_origin(reg, box), origin, scalar(1e-5), "origin");
+    expect_near(pos(box), origin + rotate(reg.get<orientation>(box), com), scalar(1e-5), "centre of mass");
+    expect_near(point_velocity(reg, box, origin), origin_velocity, scalar(1e-4), "origin velocity");
+    expect_near(point_velocity(reg, box, corner), corner_velocity, scalar(1e-4), "corner velocity");
+    ASSERT_TRUE(reg.all_of<center_of_mass>(box));
+    expect_near(reg.get<center_of_mass>(box), com, 0, "center_of_mass component");
+    // The box's inertia about the new centre: (m/3)(b^2 + c^2) + m (|d|^2 - d_x^2) and so on.
+    auto I = reg.get<inertia>(box);
+    auto m = scalar(2), base = m / 3 * (scalar(0.25) + scalar(0.25));
+    EXPECT_NEAR(I.row[0].x, base + m * (com.y * com.y + com.z * com.z), scalar(1e-5));
+    EXPECT_NEAR(I.row[0].y, -m * com.x * com.y, scalar(1e-5));
+
+    // Back to the centroid: the same again.
+    set_center_of_mass(reg, box, vector3_zero);
+    expect_near(get_rigidbody_origin(reg, box), origin, scalar(1e-5), "origin after reset");
+    expect_near(pos(box), origin, scalar(1e-5), "position after reset");
+    EXPECT_FALSE(reg.all_of<center_of_mass>(box));
+    expect_near(point_velocity(reg, box, corner), corner_velocity, scalar(1e-4),
+                "corner velocity after reset");
+}
+
+TEST_F(center_of_mass_shift, a_body_free_of_torque_spins_about_its_centre_of_mass) {
+    // Spinning about z at w, the shifted box's origin circles its centre of mass at radius
+    // |com| and speed w |com|; the centre of mass does not move.
+    auto def = edyn::test::box_def(unit_half, {0, 5, 0});
+    def.gravity = vector3_zero;
+    def.center_of_mass = vector3{scalar(0.3), 0, 0};
+    def.angvel = {0, 0, 2};
+    auto box = make_rigidbody(reg, def);
+    auto com_start = pos(box);
+    run_for(scalar(0.5));
+    expect_near(pos(box), com_start, scalar(1e-5), "centre of mass");
+    auto origin = get_rigidbody_origin(reg, box);
+    EXPECT_NEAR(length(origin - com_start), scalar(0.3), scalar(1e-4));
+    // After 0.5 s at 2 rad/s the origin has turned 1 rad about the centre of mass.
+    auto angle = std::atan2((origin - com_start).y, (origin - com_start).x);
+    EXPECT_NEAR(angle, -std::numbers::pi_v<scalar> + 1, scalar(2e-3)) << "origin angle " << angle;
+}
+
+using change_kind = world_fixture;
+
+TEST_F(change_kind, a_falling_body_made_static_stops_and_made_dynamic_again_falls) {
+    auto box = make_rigidbody(reg, edyn::test::box_def(unit_half, {0, 10, 0}, 2));
+    run_for(scalar(0.5));
+    ASSERT_LT(vel(box).y, -4);
+
+    rigidbody_set_kind(reg, box, rigidbody_kind::rb_static);
+    EXPECT_TRUE(reg.all_of<static_tag>(box));
+    EXPECT_FALSE((reg.any_of<dynamic_tag, kinematic_tag>(box)));
+    EXPECT_EQ(reg.get<mass_inv>(box).s, 0);
+    EXPECT_EQ(vel(box), vector3_zero);
+    auto frozen = pos(box);
+    // A ball dropped on it lands on it: the static body collides.
+    auto ball = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.25), frozen + vector3{0, 2, 0}));
+    run_for(2);
+    EXPECT_EQ(pos(box), frozen) << "a static body moved";
+    EXPECT_NEAR(pos(ball).y, frozen.y + scalar(0.75), scalar(0.01)) << "ball on the static box";
+
+    rigidbody_set_kind(reg, box, rigidbody_kind::rb_dynamic);
+    EXPECT_TRUE(reg.all_of<dynamic_tag>(box));
+    EXPECT_EQ(reg.get<mass>(box).s, 2) << "the mass it had before becoming static";
+    run_for(scalar(0.5));
+    EXPECT_NEAR(vel(box).y, -g / 2, scalar(1e-3)) << "the box falls freely again";
+    EXPECT_NEAR(pos(box).y, frozen.y - fall(reg, scalar(0.5)), scalar(1e-3));
+    // The ball resting on it falls with it.
+    EXPECT_NEAR(pos(ball).y - pos(box).y, scalar(0.75), scalar(0.02))
+        << "the ball was left behind at " << pos(ball).y << " while the box fell to " << pos(box).y;
+}
+
+TEST_F(change_kind, a_body_made_kinematic_follows_its_velocity) {
+    auto box = make_rigidbody(reg, edyn::test::box_def(unit_half, {0, 10, 0}));
+    rigidbody_set_kind(reg, box, rigidbody_kind::rb_kinematic);
+    EXPECT_TRUE(reg.all_of<kinematic_tag>(box));
+    reg.replace<linvel>(box, vector3{1, 0, 0});
+    run_for(1);
+    EXPECT_NEAR(pos(box).x, 1, scalar(1e-3));
+    EXPECT_NEAR(pos(box).y, 10, scalar(1e-6)) << "gravity moved a kinematic body";
+}
+
+using change_shape = world_fixture;
+
+TEST_F(change_shape, a_resting_sphere_given_a_smaller_radius_settles_lower) {
+    scenes::make_ground(reg, scalar(0.5), 0);
+    auto ball = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, scalar(0.5), 0}, 2));
+    // Long enough to fall asleep.
+    run_for(2);
+    EXPECT_NEAR(pos(ball).y, scalar(0.5), scalar(0.01));
+
+    rigidbody_set_shape(reg, ball, shapes_variant_t{sphere_shape{scalar(0.25)}});
+    auto I = scalar(0.4) * 2 * scalar(0.25) * scalar(0.25);
+    EXPECT_NEAR(reg.get<inertia>(ball).row[0].x, I, scalar(1e-6)) << "inertia of the new shape";
+    run_for(1);
+    EXPECT_NEAR(pos(ball).y, scalar(0.25), scalar(0.01)) << "ball centre at " << pos(ball).y;
+
+    // A box overlapping the ground is pushed out onto it.
+    rigidbody_set_shape(reg, ball, shapes_variant_t{box_shape{unit_half}});
+    EXPECT_TRUE(reg.all_of<box_shape>(ball));
+    EXPECT_FALSE(reg.all_of<sphere_shape>(ball));
+    run_for(1);
+    EXPECT_NEAR(pos(ball).y, scalar(0.5), scalar(0.01)) << "box centre at " << pos(ball).y;
+
+    // Amorphous: no collisions, it falls through the ground.
+    rigidbody_set_shape(reg, ball, std::nullopt);
+    EXPECT_FALSE((reg.any_of<box_shape, AABB>(ball)));
+    run_for(1);
+    EXPECT_NEAR(pos(ball).y, scalar(0.5) - fall(reg, 1), scalar(1e-3)) << "amorphous body at " << pos(ball).y;
+}
