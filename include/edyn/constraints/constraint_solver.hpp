@@ -1,6 +1,7 @@
 #ifndef EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP
 #define EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP
 
+#include "edyn/constraints/cone_constraint.hpp"
 #include "edyn/constraints/distance_constraint.hpp"
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/constraints/hinge_constraint.hpp"
@@ -40,7 +41,7 @@ struct constraint_batch {
 struct constraint_solver_state {
     std::tuple<constraint_batch<point_constraint_solver>, constraint_batch<distance_constraint_solver>,
                constraint_batch<soft_distance_constraint_solver>, constraint_batch<hinge_constraint_solver>,
-               constraint_batch<gravity_constraint_solver>>
+               constraint_batch<cone_constraint_solver>, constraint_batch<gravity_constraint_solver>>
         batches;
 };
 

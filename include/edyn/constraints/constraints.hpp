@@ -2,6 +2,7 @@
 #define EDYN_CONSTRAINTS_CONSTRAINTS_HPP
 
 // Every constraint a program can make with make_constraint.
+#include "edyn/constraints/cone_constraint.hpp"
 #include "edyn/constraints/distance_constraint.hpp"
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/constraints/hinge_constraint.hpp"
@@ -15,8 +16,9 @@ template<typename... T>
 struct constraint_type_list {};
 
 // Every constraint component, in the order the solver visits them.
-using constraint_types = constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint,
-                                              hinge_constraint, gravity_constraint, null_constraint>;
+using constraint_types =
+    constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint, hinge_constraint,
+                         cone_constraint, gravity_constraint, null_constraint>;
 
 } // namespace edyn
 

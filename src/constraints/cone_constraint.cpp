@@ -1,0 +1,142 @@
+#include "edyn/constraints/cone_constraint.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace edyn {
+
+void validate_constraint(const cone_constraint &c) {
+    constexpr auto type = constraint_type_name<cone_constraint>;
+    check_constraint_finite(type, "pivot[0]", c.pivot[0]);
+    check_constraint_finite(type, "pivot[1]", c.pivot[1]);
+    check_constraint_orthonormal(type, "frame", c.frame);
+    const char *spans[2]{"span_angle[0]", "span_angle[1]"};
+    for (int i = 0; i < 2; ++i) {
+        if (!(c.span_angle[i] > 0 && c.span_angle[i] < pi / 2)) {
+            throw_constraint_error(type, spans[i],
+                                   "must be in (0, pi/2), got " + std::to_string(c.span_angle[i]));
+        }
+    }
+    check_constraint_unit_interval(type, "restitution", c.restitution);
+    check_constraint_non_negative(type, "bump_stop_angle", c.bump_stop_angle);
+    check_constraint_non_negative(type, "bump_stop_stiffness", c.bump_stop_stiffness);
+}
+
+scalar cone_half_angle(scalar tan0, scalar tan1, scalar cos_phi, scalar sin_phi) noexcept {
+    auto p = tan1 * cos_phi, q = tan0 * sin_phi;
+    return std::atan(tan0 * tan1 / std::sqrt(p * p + q * q));
+}
+
+namespace {
+
+// The cone's row: C is the angle between the point's direction and the wall, measured in the
+// plane of the axis and the point (positive inside), and the jacobian is its rate.
+struct cone_row {
+    jacobian j;
+    scalar C;
+    bool valid;
+};
+
+cone_row current_row(const cone_constraint_solver &s, const solver_body &a, const solver_body &b) noexcept {
+    auto pose = current_pose(s.anchor, a, b);
+    auto frame = rotate_frame(a.delta_rotation, s.frame);
+    auto r = -pose.d; // apex to the point
+    auto e0 = frame.column(0), e1 = frame.column(1), e2 = frame.column(2);
+    auto x = dot(r, e0), y = dot(r, e1), z = dot(r, e2);
+    auto rho = std::sqrt(y * y + z * z);
+    auto len = length(r);
+    // At the apex or on the axis the wall is as far as the cone is wide: nothing to do.
+    if (!(len > scalar(1e-6)) || !(rho > scalar(1e-6) * len)) return {{}, 0, false};
+    auto cos_phi = y / rho, sin_phi = z / rho;
+    auto alpha = cone_half_angle(s.span_tan[0], s.span_tan[1], cos_phi, sin_phi);
+    auto theta = std::atan2(rho, x);
+    // d theta / d r = (cos theta u - sin theta e0) / |r| with u the radial direction; C = alpha
+    // - theta grows along n. The point is B's pivot; A's lever arm reaches the same point, since
+    // the cone turns with A.
+    auto u = (e1 * y + e2 * z) / rho;
+    auto n = (e0 * std::sin(theta) - u * std::cos(theta)) / len;
+    return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), alpha - theta, true};
+}
+
+} // namespace
+
+cone_constraint_solver make_constraint_solver(const registry &registry, const cone_constraint &c,
+                                              constraint_body_indices indices) {
+    cone_constraint_solver s;
+    s.anchor = make_joint_anchor(registry, c.body, c.pivot, indices);
+    s.frame = world_frame(registry, c.body[0], c.frame);
+    for (int i = 0; i < 2; ++i)
+        s.span_tan[i] = std::tan(c.span_angle[i]);
+    s.restitution = c.restitution;
+    s.bump_stop_angle = c.bump_stop_angle;
+    s.bump_stop_stiffness = c.bump_stop_stiffness;
+    s.impulse = c.impulse;
+    s.bump_stop_impulse = c.bump_stop_impulse;
+    if (c.restitution > 0) {
+        solver_body a, b;
+        a.linvel = registry.get<linvel>(c.body[0]);
+        a.angvel = registry.get<angvel>(c.body[0]);
+        b.linvel = registry.get<linvel>(c.body[1]);
+        b.angvel = registry.get<angvel>(c.body[1]);
+        auto row = current_row(s, a, b);
+        if (row.valid) s.start_rate = row_velocity(row.j, a, b);
+    }
+    return s;
+}
+
+void warm_start(cone_constraint_solver &s, std::span<solver_body> bodies) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto row = current_row(s, a, b);
+    if (!row.valid) {
+        s.impulse = s.bump_stop_impulse = 0;
+        return;
+    }
+    apply_row_impulse(row.j, a, b, s.impulse + s.bump_stop_impulse);
+}
+
+void solve(cone_constraint_solver &s, std::span<solver_body> bodies,
+           const constraint_solve_context &ctx) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto row = current_row(s, a, b);
+    if (!row.valid) return;
+
+    if (s.bump_stop_angle > 0 && s.bump_stop_stiffness > 0) {
+        if (row.C < s.bump_stop_angle) {
+            solve_spring_row(row.j, row.C - s.bump_stop_angle, s.bump_stop_stiffness, 0, s.bump_stop_impulse,
+                             a, b, ctx, true);
+        } else {
+            s.bump_stop_impulse = 0;
+        }
+    }
+
+    if (s.restitution > 0 && !s.bounced) {
+        // A wall hit in the coming sub-step faster than the threshold bounces once per step,
+        // with the approach speed it had before the wall started braking it. Checked in both
+        // passes: the relax pass after the step's last integration would otherwise brake the
+        // approach speculatively, and the next step would see no speed left to bounce with.
+        auto rate = row_velocity(row.j, a, b);
+        auto approach = std::min(rate, s.start_rate);
+        if (approach < -ctx.restitution_threshold && row.C + rate * ctx.h <= 0) {
+            s.bounced = true;
+            // The warm-started push is part of the approach being answered.
+            apply_row_impulse(row.j, a, b, -s.impulse);
+            s.impulse = 0;
+            auto mass = row_effective_mass(row.j, a, b);
+            auto bounce = -s.restitution * approach;
+            auto p = std::max(mass * (bounce - row_velocity(row.j, a, b)), scalar(0));
+            // Not accumulated in the wall's impulse, which would take it back once separating.
+            apply_row_impulse(row.j, a, b, p);
+            return;
+        }
+    }
+    solve_limit_row(row.j, row.C, s.impulse, a, b, ctx);
+}
+
+void store_impulses(const cone_constraint_solver &s, cone_constraint &c) noexcept {
+    c.impulse = s.impulse;
+    c.bump_stop_impulse = s.bump_stop_impulse;
+}
+
+} // namespace edyn

@@ -1,0 +1,184 @@
+// Cone constraint: a swing limit that holds under hard pushes, elliptical spans, restitution.
+#include "joints_support.hpp"
+
+using namespace edyn;
+using edyn::test::world_fixture;
+
+namespace {
+
+const vector3 apex{0, 2, 0};
+const scalar rod_half_length = scalar(0.5);
+
+// A 1 m rod hanging from a ball joint at `apex`, its lower end held inside a cone opening
+// downwards by span0 towards +x and span1 towards +z.
+struct cone_world : world_fixture {
+    entity anchor{null};
+    entity rod{null};
+
+    void make_rod(scalar span0, scalar span1) {
+        anchor = edyn::test::make_anchor(reg, apex);
+        rod = make_rigidbody(reg, edyn::test::box_def({scalar(0.05), rod_half_length, scalar(0.05)},
+                                                      apex - vector3{0, rod_half_length, 0}));
+        make_constraint<point_constraint>(reg, anchor, rod, [](point_constraint &c) {
+            c.pivot[0] = vector3_zero;
+            c.pivot[1] = {0, rod_half_length, 0};
+        });
+        make_constraint<cone_constraint>(reg, anchor, rod, [&](cone_constraint &c) {
+            c.pivot[0] = vector3_zero;
+            c.pivot[1] = {0, -rod_half_length, 0};
+            c.frame = matrix3x3_columns(-vector3_y, vector3_x, vector3_z);
+            c.span_angle[0] = span0;
+            c.span_angle[1] = span1;
+        });
+    }
+
+    // The lower end relative to the apex: tilt from the vertical, and how far beyond the wall
+    // of the elliptical cone it is (radians, positive outside), from the ellipse in closed form.
+    struct swing {
+        scalar tilt, excess;
+    };
+    swing measure(scalar span0, scalar span1) const {
+        auto r = edyn::test::world_pivot(reg, rod, {0, -rod_half_length, 0}) - apex;
+        auto down = -r.y, rho = std::hypot(r.x, r.z);
+        auto tilt = std::atan2(rho, down);
+        if (rho < scalar(1e-9)) return {tilt, -span0};
+        // Polar radius of the ellipse of semi-axes tan(span0), tan(span1) at the point's heading.
+        auto t0 = std::tan(span0), t1 = std::tan(span1);
+        auto c = r.x / rho, s = r.z / rho;
+        auto wall = std::atan(t0 * t1 / std::hypot(t1 * c, t0 * s));
+        return {tilt, tilt - wall};
+    }
+};
+
+using cone_joint = cone_world;
+
+} // namespace
+
+TEST_F(cone_joint, pendulum_pushed_hard_stays_inside_a_thirty_degree_cone) {
+    const auto span = to_radians(30);
+    make_rod(span, span);
+    // 4 N s at the lower end: enough to swing the 1 kg rod past the horizontal unconstrained.
+    rigidbody_apply_impulse(reg, rod, {4, 0, scalar(1.5)}, {0, -rod_half_length, 0});
+    scalar worst = -1, largest_tilt = 0;
+    for (int i = 0; i < 60 * 3; ++i) {
+        step_simulation(reg);
+        auto m = measure(span, span);
+        worst = std::max(worst, m.excess);
+        largest_tilt = std::max(largest_tilt, m.tilt);
+    }
+    EXPECT_GT(largest_tilt, span - to_radians(1)) << "the push should reach the wall";
+    EXPECT_LT(worst, to_radians(1)) << "largest tilt " << to_degrees(largest_tilt) << " deg, cone "
+                                    << to_degrees(span) << " deg; worst excess " << to_degrees(worst)
+                                    << " deg";
+    auto top = edyn::test::world_pivot(reg, rod, {0, rod_half_length, 0});
+    EXPECT_LT(distance(top, apex), scalar(0.005));
+}
+
+TEST_F(cone_joint, elliptical_cone_respects_each_span) {
+    const auto span0 = to_radians(20), span1 = to_radians(45);
+    // Pushed along each span's direction, the rod stops at that span; pushed between them, at
+    // the ellipse.
+    const vector3 pushes[3]{{5, 0, 0}, {0, 0, 5}, {4, 0, 4}};
+    const scalar expected[3]{span0, span1, -1};
+    for (int k = 0; k < 3; ++k) {
+        registry r;
+        std::swap(reg, r);
+        attach(reg);
+        make_rod(span0, span1);
+        rigidbody_apply_impulse(reg, rod, pushes[k], {0, -rod_half_length, 0});
+        scalar worst = -1, largest_tilt = 0;
+        for (int i = 0; i < 60 * 2; ++i) {
+            step_simulation(reg);
+            auto m = measure(span0, span1);
+            worst = std::max(worst, m.excess);
+            largest_tilt = std::max(largest_tilt, m.tilt);
+        }
+        EXPECT_LT(worst, to_radians(1)) << "push " << k << ": worst excess " << to_degrees(worst) << " deg";
+        if (expected[k] > 0) {
+            EXPECT_NEAR(largest_tilt, expected[k], to_radians(1))
+                << "push " << k << ": largest tilt " << to_degrees(largest_tilt) << " deg, expected "
+                << to_degrees(expected[k]);
+        }
+        detach(reg);
+        std::swap(reg, r);
+    }
+}
+
+TEST_F(cone_joint, wall_reflects_the_normal_velocity_with_restitution) {
+    set_gravity(reg, vector3_zero);
+    const auto span = to_radians(30);
+    const scalar e = scalar(0.5);
+    anchor = edyn::test::make_anchor(reg, vector3_zero);
+    // A ball 1 m along the cone's axis (+x) moving sideways at 1 m/s: it meets the wall at
+    // 30 degrees, where the inward normal is (sin 30, -cos 30, 0).
+    auto def = edyn::test::sphere_def(scalar(0.1), {1, 0, 0});
+    def.linvel = {0, 1, 0};
+    auto ball = make_rigidbody(reg, def);
+    make_constraint<cone_constraint>(reg, anchor, ball, [&](cone_constraint &c) {
+        c.span_angle[0] = c.span_angle[1] = span;
+        c.restitution = e;
+    });
+    run_for(1);
+    const vector3 n{std::sin(span), -std::cos(span), 0};
+    const vector3 v0{0, 1, 0};
+    auto expected = v0 - n * ((1 + e) * dot(v0, n));
+    auto v = vel(ball);
+    EXPECT_LT(distance(v, expected), scalar(0.03))
+        << "measured (" << v.x << ", " << v.y << ", " << v.z << "), expected (" << expected.x << ", "
+        << expected.y << ", " << expected.z << ")";
+}
+
+TEST_F(cone_joint, bump_stop_slows_the_swing_before_the_wall) {
+    set_gravity(reg, vector3_zero);
+    const auto span = to_radians(30);
+    anchor = edyn::test::make_anchor(reg, vector3_zero);
+    auto def = edyn::test::sphere_def(scalar(0.1), {1, 0, 0});
+    def.linvel = {0, scalar(0.3), 0};
+    auto ball = make_rigidbody(reg, def);
+    // The ball's 1 kg at 1 m swings about the apex with I = 1 (plus the ball's own): a spring
+    // of 50 Nm/rad over the last 10 degrees stores 0.5 k a^2 = 0.76 J, far more than the
+    // 0.045 J of the swing, so the ball turns back before touching the wall.
+    make_constraint<cone_constraint>(reg, anchor, ball, [&](cone_constraint &c) {
+        c.span_angle[0] = c.span_angle[1] = span;
+        c.bump_stop_angle = to_radians(10);
+        c.bump_stop_stiffness = 50;
+    });
+    scalar largest = 0;
+    for (int i = 0; i < 60 * 3; ++i) {
+        step_simulation(reg);
+        largest = std::max(largest, std::atan2(std::abs(pos(ball).y), pos(ball).x));
+    }
+    // Energy: 0.5 m v^2 = 0.5 k (theta - 20 deg)^2 with the lever of 1 m.
+    auto expected = to_radians(20) + std::sqrt(scalar(0.3) * scalar(0.3) / 50);
+    EXPECT_NEAR(largest, expected, to_radians(1))
+        << "largest swing " << to_degrees(largest) << " deg, expected " << to_degrees(expected);
+    EXPECT_LT(vel(ball).y, 0) << "it should be moving back";
+}
+
+TEST(cone_validation, rejects_spans_outside_zero_to_a_right_angle) {
+    registry reg;
+    attach(reg);
+    auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), vector3_zero));
+    auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {2, 0, 0}));
+    auto alive = reg.alive();
+    try {
+        make_constraint<cone_constraint>(reg, a, b, [](cone_constraint &c) { c.span_angle[1] = 2; });
+        ADD_FAILURE() << "expected std::invalid_argument";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("make_constraint<cone_constraint>: span_angle[1]"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(make_constraint<cone_constraint>(reg, a, b, [](cone_constraint &c) { c.span_angle[0] = 0; }),
+                 std::invalid_argument);
+    EXPECT_THROW(make_constraint<cone_constraint>(reg, a, b, [](cone_constraint &c) { c.restitution = 2; }),
+                 std::invalid_argument);
+    EXPECT_THROW(make_constraint<cone_constraint>(reg, a, b,
+                                                  [](cone_constraint &c) {
+                                                      c.frame =
+                                                          matrix3x3_columns(vector3_x, vector3_x, vector3_z);
+                                                  }),
+                 std::invalid_argument);
+    EXPECT_EQ(reg.alive(), alive);
+    detach(reg);
+}
