@@ -1,3 +1,4 @@
+#include "collide_bench_support.hpp"
 #include "edyn/collision/collide.hpp"
 #include "edyn/math/math.hpp"
 #include <benchmark/benchmark.h>
@@ -34,11 +35,7 @@ void run_compound_box(benchmark::State &state, const compound_shape &compound, c
     auto box = box_shape{{0.2, 0.2, 0.2}};
     collision_context ctx{vector3_zero, quaternion_identity, top + vector3{0, scalar(0.19), 0},
                           quaternion_axis_angle(vector3_y, scalar(0.3)), scalar(0.02)};
-    for (auto _ : state) {
-        collision_result result;
-        collide(compound, box, ctx, result);
-        benchmark::DoNotOptimize(result);
-    }
+    bench::run_collide(state, compound, box, ctx);
 }
 
 void compound_2_boxes_vs_box(benchmark::State &state) {
@@ -58,11 +55,7 @@ void compound_vs_compound(benchmark::State &state) {
                           vector3_zero,
                           quaternion_identity,
                           scalar(0.02)};
-    for (auto _ : state) {
-        collision_result result;
-        collide(l, grid, ctx, result);
-        benchmark::DoNotOptimize(result);
-    }
+    bench::run_collide(state, l, grid, ctx);
 }
 
 } // namespace

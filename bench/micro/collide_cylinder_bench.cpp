@@ -1,3 +1,4 @@
+#include "collide_bench_support.hpp"
 #include "edyn/collision/collide.hpp"
 #include <benchmark/benchmark.h>
 #include <random>
@@ -10,45 +11,29 @@ namespace {
 
 using namespace edyn;
 
-struct placement {
-    collision_context ctx;
-};
-
-std::vector<placement> random_placements(scalar reach, unsigned seed) {
+std::vector<collision_context> random_placements(scalar reach, unsigned seed) {
     std::mt19937 rng(seed);
     std::normal_distribution<scalar> g(0, 1);
     std::uniform_real_distribution<scalar> offset(scalar(0.5), scalar(0.95));
-    std::vector<placement> out;
+    std::vector<collision_context> out;
     for (int i = 0; i < 64; ++i) {
         auto orn_a = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
         auto orn_b = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
         auto dir = normalize(vector3{g(rng), g(rng), g(rng)});
-        out.push_back({{dir * (offset(rng) * reach), orn_a, vector3_zero, orn_b, scalar(0.02)}});
+        out.push_back({dir * (offset(rng) * reach), orn_a, vector3_zero, orn_b, scalar(0.02)});
     }
     return out;
 }
 
 template<typename A, typename B>
 void run_resting(benchmark::State &state, const A &a, const B &b, const collision_context &ctx) {
-    for (auto _ : state) {
-        collision_result result;
-        collide(a, b, ctx, result);
-        benchmark::DoNotOptimize(result);
-    }
+    bench::run_collide(state, a, b, ctx);
 }
 
 template<typename A, typename B>
 void run_random(benchmark::State &state, const A &a, const B &b, scalar reach) {
     auto placements = random_placements(reach, 5);
-    std::size_t i = 0, points = 0;
-    for (auto _ : state) {
-        collision_result result;
-        collide(a, b, placements[i].ctx, result);
-        points += result.num_points;
-        benchmark::DoNotOptimize(result);
-        i = (i + 1) % placements.size();
-    }
-    state.counters["points"] = benchmark::Counter(double(points), benchmark::Counter::kAvgIterations);
+    bench::run_collide(state, a, b, std::span<const collision_context>(placements));
 }
 
 const cylinder_shape cylinder{scalar(0.3), scalar(0.5), coordinate_axis::y};

@@ -1,3 +1,4 @@
+#include "collide_bench_support.hpp"
 #include "edyn/collision/collide.hpp"
 #include <array>
 #include <benchmark/benchmark.h>
@@ -73,14 +74,7 @@ void run(benchmark::State &state, std::size_t ia, std::size_t ib) {
         (deepest(mid) < scalar(-0.01) ? low : high) = mid;
     }
     ctx.posB.y = low;
-    std::size_t points = 0;
-    for (auto _ : state) {
-        collision_result result;
-        collide(a, b, ctx, result);
-        points += result.num_points;
-        benchmark::DoNotOptimize(result);
-    }
-    state.counters["points"] = benchmark::Counter(double(points) / double(state.iterations()));
+    bench::run_collide(state, a, b, ctx);
 }
 
 const bool registered = [] {

@@ -1,3 +1,4 @@
+#include "collide_bench_support.hpp"
 #include "edyn/collision/collide.hpp"
 #include <benchmark/benchmark.h>
 #include <cmath>
@@ -50,28 +51,13 @@ std::vector<collision_context> random_placements(scalar reach, unsigned seed) {
 
 template<typename A, typename B>
 void run_resting(benchmark::State &state, const A &a, const B &b, const collision_context &ctx) {
-    std::size_t points = 0;
-    for (auto _ : state) {
-        collision_result result;
-        collide(a, b, ctx, result);
-        points += result.num_points;
-        benchmark::DoNotOptimize(result);
-    }
-    state.counters["points"] = benchmark::Counter(double(points), benchmark::Counter::kAvgIterations);
+    bench::run_collide(state, a, b, ctx);
 }
 
 template<typename A, typename B>
 void run_random(benchmark::State &state, const A &a, const B &b, scalar reach) {
     auto placements = random_placements(reach, 5);
-    std::size_t i = 0, points = 0;
-    for (auto _ : state) {
-        collision_result result;
-        collide(a, b, placements[i], result);
-        points += result.num_points;
-        benchmark::DoNotOptimize(result);
-        i = (i + 1) % placements.size();
-    }
-    state.counters["points"] = benchmark::Counter(double(points), benchmark::Counter::kAvgIterations);
+    bench::run_collide(state, a, b, std::span<const collision_context>(placements));
 }
 
 const vector3 cube_he{0.5f, 0.3f, 0.4f};
