@@ -80,8 +80,9 @@ void island_manager::on_resident_destroyed(registry &registry, entity e) {
         erase_resident(registry, isle.edges, e);
         isle.may_split = true;
     } else if (index < isle.nodes.size() && isle.nodes[index] == e) {
-        wake_island(registry, island_entity);
+        // Out of the list before waking: the registry may already have removed its sleep_timer.
         erase_resident(registry, isle.nodes, e);
+        wake_island(registry, island_entity);
         isle.may_split = true;
         if (isle.nodes.empty()) dissolve_empty(registry, island_entity);
     }
