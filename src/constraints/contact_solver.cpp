@@ -47,9 +47,13 @@ void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<c
             p.tangent_mass[1] = effective_mass(a, b, p.tangent[1], p.rA, p.rB);
             p.relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
             p.restitution_impulse = 0;
+            p.total_normal_impulse = 0;
+            p.total_tangent_impulse[0] = p.total_tangent_impulse[1] = 0;
             p.tangent_restitution_impulse[0] = p.tangent_restitution_impulse[1] = 0;
         }
 
+        c.total_spin_impulse = 0;
+        c.total_roll_impulse[0] = c.total_roll_impulse[1] = 0;
         c.spin_mass = c.spin_friction > 0 ? effective_angular_mass(a, b, c.normal) : scalar(0);
         for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
             c.roll_mass[i] = effective_angular_mass(a, b, c.roll_axis[i]);
@@ -160,6 +164,20 @@ void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<sol
 
         solve_friction(c, a, b);
         solve_spin_and_roll(c, a, b, total_normal);
+    }
+}
+
+void accumulate_contact_impulses(std::span<contact_solver_constraint> contacts) {
+    for (auto &c : contacts) {
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = c.points[i];
+            p.total_normal_impulse += p.normal_impulse;
+            p.total_tangent_impulse[0] += p.tangent_impulse[0];
+            p.total_tangent_impulse[1] += p.tangent_impulse[1];
+        }
+        c.total_spin_impulse += c.spin_impulse;
+        c.total_roll_impulse[0] += c.roll_impulse[0];
+        c.total_roll_impulse[1] += c.roll_impulse[1];
     }
 }
 

@@ -119,12 +119,12 @@ void gather_contacts(registry &registry, world_state &world) {
             p.rB = to_world_space(cp.pivotB, originB, ornB) - posB;
             p.normal = cp.normal;
             p.adjusted_separation = cp.distance - dot(cp.normal, p.rA - p.rB);
-            p.normal_impulse = cp.normal_impulse;
-            p.tangent_impulse[0] = cp.friction_impulse[0];
-            p.tangent_impulse[1] = cp.friction_impulse[1];
-            spin_impulse += cp.spin_friction_impulse;
-            roll_impulse[0] += cp.roll_friction_impulse[0];
-            roll_impulse[1] += cp.roll_friction_impulse[1];
+            p.normal_impulse = cp.warm_start.normal;
+            p.tangent_impulse[0] = cp.warm_start.friction[0];
+            p.tangent_impulse[1] = cp.warm_start.friction[1];
+            spin_impulse += cp.warm_start.spin;
+            roll_impulse[0] += cp.warm_start.roll[0];
+            roll_impulse[1] += cp.warm_start.roll[1];
         }
         c.spin_impulse = spin_impulse;
         if (c.roll_friction > 0) {
@@ -165,6 +165,7 @@ void solve_constraints(world_state &world, const settings &settings) {
             solve_joint_constraints(world.joints, bodies, relax);
             solve_contacts(contacts, bodies, h, settings.contact, false);
         }
+        accumulate_contact_impulses(contacts);
     }
 }
 
@@ -200,15 +201,19 @@ void write_back(registry &registry, world_state &world, scalar dt) {
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = c.points[i];
             auto &cp = manifold.point[manifold.ids[i]];
-            cp.normal_impulse = p.normal_impulse;
-            cp.friction_impulse = {p.tangent_impulse[0], p.tangent_impulse[1]};
+            auto share = scalar(1) / scalar(c.num_points);
+            cp.warm_start.normal = p.normal_impulse;
+            cp.warm_start.friction = {p.tangent_impulse[0], p.tangent_impulse[1]};
+            cp.warm_start.spin = c.spin_impulse * share;
+            cp.warm_start.roll = {c.roll_impulse[0] * share, c.roll_impulse[1] * share};
+            cp.normal_impulse = p.total_normal_impulse;
+            cp.friction_impulse = {p.total_tangent_impulse[0], p.total_tangent_impulse[1]};
             cp.normal_restitution_impulse = p.restitution_impulse;
             cp.friction_restitution_impulse = {p.tangent_restitution_impulse[0],
                                                p.tangent_restitution_impulse[1]};
             // Torsional and rolling impulses are shared evenly by the points for reporting.
-            cp.spin_friction_impulse = c.spin_impulse / scalar(c.num_points);
-            cp.roll_friction_impulse = {c.roll_impulse[0] / scalar(c.num_points),
-                                        c.roll_impulse[1] / scalar(c.num_points)};
+            cp.spin_friction_impulse = c.total_spin_impulse * share;
+            cp.roll_friction_impulse = {c.total_roll_impulse[0] * share, c.total_roll_impulse[1] * share};
         }
     }
     store_constraint_impulses(registry, world.joints);

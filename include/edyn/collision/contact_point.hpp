@@ -22,16 +22,25 @@ struct contact_point {
     // Signed distance between the pivots along `normal`; negative while penetrating.
     scalar distance{0};
 
-    // Impulses applied by the constraint solver in the last step. Friction and rolling
-    // friction act along the two tangents given by plane_space(normal), spin friction about
-    // the normal. The restitution solver's share is kept apart (see the manual's "Restitution"):
-    // add both to get the full impulse.
+    // Impulses applied by the constraint solver over the whole last step (all its sub-steps).
+    // Friction and rolling friction act along the two tangents given by plane_space(normal),
+    // spin friction about the normal. The restitution solver's share is kept apart (see the
+    // manual's "Restitution"): add both to get the full impulse.
     scalar normal_impulse{0};
     scalar normal_restitution_impulse{0};
     std::array<scalar, 2> friction_impulse{0, 0};
     std::array<scalar, 2> friction_restitution_impulse{0, 0};
     std::array<scalar, 2> roll_friction_impulse{0, 0};
     scalar spin_friction_impulse{0};
+
+    // The impulses of the last step's final sub-step: the solver's first guess for the next
+    // step (warm starting). Internal; read the impulses above.
+    struct warm_start_impulses {
+        scalar normal{0};
+        std::array<scalar, 2> friction{0, 0};
+        scalar spin{0};
+        std::array<scalar, 2> roll{0, 0};
+    } warm_start;
 
     // Material values mixed for this point (per point because triangle meshes may carry
     // per-vertex materials). Stiffness and damping are infinite for rigid contacts.

@@ -30,6 +30,9 @@ struct contact_solver_point {
     scalar restitution_impulse{0};
     scalar tangent_restitution_impulse[2]{0, 0};
     scalar relative_velocity{0}; // normal relative velocity when the step began
+    // Sums over the step's sub-steps of the impulses above, for reporting.
+    scalar total_normal_impulse{0};
+    scalar total_tangent_impulse[2]{0, 0};
     contact_row normal_row;
     contact_row tangent_row[2];
 };
@@ -57,6 +60,8 @@ struct contact_solver_constraint {
     vector3 roll_axis[2]{vector3_zero, vector3_zero};
     scalar roll_mass[2]{0, 0};
     scalar roll_impulse[2]{0, 0};
+    scalar total_spin_impulse{0};
+    scalar total_roll_impulse[2]{0, 0};
 
     // Where the impulses go back when the step ends (index into the caller's manifold list).
     std::uint32_t source{0};
@@ -92,6 +97,11 @@ void warm_start_contacts(std::span<contact_solver_constraint> contacts, std::spa
 // velocity so that it does not turn into bounce.
 void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias);
+
+// Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
+// every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
+// from the last one's, warm starting), so their sum is what the contact gave over the step.
+void accumulate_contact_impulses(std::span<contact_solver_constraint> contacts);
 
 // Restitution, run at the start of each sub-step before the contact solve: a point approaching
 // faster than the threshold that touches, or will within the sub-step h, gets an impulse making
