@@ -59,7 +59,8 @@ TEST_F(sleeping, a_body_dropped_on_a_sleeping_stack_wakes_it) {
     }
     EXPECT_TRUE(woke);
     // One island now: the new contact joined it to the stack.
-    EXPECT_EQ(reg.get<island_resident>(dropped).island_entity, reg.get<island_resident>(bottom).island_entity);
+    EXPECT_EQ(reg.get<island_resident>(dropped).island_entity,
+              reg.get<island_resident>(bottom).island_entity);
     // And it all settles and sleeps again.
     run_for(5.0);
     EXPECT_TRUE(asleep(bottom));
