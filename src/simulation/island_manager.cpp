@@ -197,11 +197,13 @@ void island_manager::split(registry &registry, entity island_entity) {
             i = parent[i] = parent[parent[i]];
         return i;
     };
+    // Membership is read from `nodes`, not from island_resident: the nodes move to their new
+    // islands before the edges are placed, and an edge must still find its node then.
     auto node_of = [&](entity body) -> std::int64_t {
-        if (!registry.valid(body) || !registry.all_of<island_resident, dynamic_tag>(body)) return -1;
-        auto &res = registry.get<island_resident>(body);
-        if (res.island_entity != island_entity) return -1;
-        return local_index[to_index(body)];
+        auto index = to_index(body);
+        if (body == null || index >= local_index.size()) return -1;
+        auto local = local_index[index];
+        return local < nodes.size() && nodes[local] == body ? std::int64_t(local) : -1;
     };
     for (auto edge : edges) {
         auto &ends = registry.get<island_edge>(edge);

@@ -72,69 +72,90 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
     }
 }
 
-void gather_contacts(registry &registry, world_state &world) {
-    world.contacts.clear();
-    world.contact_manifolds.clear();
+namespace {
 
+// Bodies resting against a moving kinematic body must not fall asleep, nor stay asleep.
+void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
     for (auto manifold_entity : world.manifolds) {
         auto &manifold = registry.get<contact_manifold>(manifold_entity);
         if (manifold.num_points == 0) continue;
         auto a = manifold.body[0], b = manifold.body[1];
-        auto *matA = registry.try_get<material>(a);
-        auto *matB = registry.try_get<material>(b);
-        if (!matA || !matB) continue; // a sensor
-        auto ia = body_index_of(world, a), ib = body_index_of(world, b);
-        if (ia == 0 && ib == 0) continue;
-
-        // Bodies resting against a moving kinematic body must not fall asleep.
         for (auto [body, other] : {std::pair{a, b}, std::pair{b, a}}) {
             if (registry.all_of<kinematic_tag>(other) && (registry.get<linvel>(other) != vector3_zero ||
                                                           registry.get<angvel>(other) != vector3_zero)) {
                 world.islands.wake_entity(registry, body);
             }
         }
+    }
+}
 
-        auto mixed = get_mixed_material(registry, *matA, *matB);
-        auto originA = get_rigidbody_origin(registry, a), originB = get_rigidbody_origin(registry, b);
-        auto &ornA = registry.get<orientation>(a), &ornB = registry.get<orientation>(b);
-        auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
+void gather_contact(registry &registry, world_state &world, entity manifold_entity,
+                    const contact_manifold &manifold) {
+    if (manifold.num_points == 0) return;
+    auto a = manifold.body[0], b = manifold.body[1];
+    auto *matA = registry.try_get<material>(a);
+    auto *matB = registry.try_get<material>(b);
+    if (!matA || !matB) return; // a sensor
+    auto ia = body_index_of(world, a), ib = body_index_of(world, b);
+    if (ia == 0 && ib == 0) return;
 
-        contact_solver_constraint c;
-        c.body[0] = ia;
-        c.body[1] = ib;
-        c.friction = mixed.friction;
-        c.restitution = mixed.restitution;
-        c.roll_friction = mixed.roll_friction;
-        c.spin_friction = mixed.spin_friction;
-        c.num_points = manifold.num_points;
-        c.normal = manifold.point[manifold.ids[0]].normal;
-        c.source = std::uint32_t(world.contact_manifolds.size());
+    auto mixed = get_mixed_material(registry, *matA, *matB);
+    auto originA = get_rigidbody_origin(registry, a), originB = get_rigidbody_origin(registry, b);
+    auto &ornA = registry.get<orientation>(a), &ornB = registry.get<orientation>(b);
+    auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
 
-        scalar spin_impulse = 0;
-        std::array<scalar, 2> roll_impulse{0, 0};
-        for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
-            auto &cp = manifold.point[manifold.ids[i]];
-            auto &p = c.points[i];
-            p.rA = to_world_space(cp.pivotA, originA, ornA) - posA;
-            p.rB = to_world_space(cp.pivotB, originB, ornB) - posB;
-            p.normal = cp.normal;
-            p.adjusted_separation = cp.distance - dot(cp.normal, p.rA - p.rB);
-            p.normal_impulse = cp.warm_start.normal;
-            p.tangent_impulse[0] = cp.warm_start.friction[0];
-            p.tangent_impulse[1] = cp.warm_start.friction[1];
-            spin_impulse += cp.warm_start.spin;
-            roll_impulse[0] += cp.warm_start.roll[0];
-            roll_impulse[1] += cp.warm_start.roll[1];
+    contact_solver_constraint c;
+    c.body[0] = ia;
+    c.body[1] = ib;
+    c.friction = mixed.friction;
+    c.restitution = mixed.restitution;
+    c.roll_friction = mixed.roll_friction;
+    c.spin_friction = mixed.spin_friction;
+    c.num_points = manifold.num_points;
+    c.normal = manifold.point[manifold.ids[0]].normal;
+    c.source = std::uint32_t(world.contact_manifolds.size());
+
+    scalar spin_impulse = 0;
+    std::array<scalar, 2> roll_impulse{0, 0};
+    for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
+        auto &cp = manifold.point[manifold.ids[i]];
+        auto &p = c.points[i];
+        p.rA = to_world_space(cp.pivotA, originA, ornA) - posA;
+        p.rB = to_world_space(cp.pivotB, originB, ornB) - posB;
+        p.normal = cp.normal;
+        p.adjusted_separation = cp.distance - dot(cp.normal, p.rA - p.rB);
+        p.normal_impulse = cp.warm_start.normal;
+        p.tangent_impulse[0] = cp.warm_start.friction[0];
+        p.tangent_impulse[1] = cp.warm_start.friction[1];
+        spin_impulse += cp.warm_start.spin;
+        roll_impulse[0] += cp.warm_start.roll[0];
+        roll_impulse[1] += cp.warm_start.roll[1];
+    }
+    c.spin_impulse = spin_impulse;
+    if (c.roll_friction > 0) {
+        c.num_roll_axes = roll_axes(registry, a, c.normal, c.roll_axis);
+        if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(registry, b, c.normal, c.roll_axis);
+        c.roll_impulse[0] = roll_impulse[0];
+        c.roll_impulse[1] = roll_impulse[1];
+    }
+    world.contacts.push_back(c);
+    world.contact_manifolds.push_back(manifold_entity);
+}
+
+} // namespace
+
+void gather_contacts(registry &registry, world_state &world) {
+    world.contacts.clear();
+    world.contact_manifolds.clear();
+    wake_bodies_on_moving_kinematics(registry, world);
+
+    // Island by island, so that each island's rows lie together in the arrays.
+    for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) {
+        for (auto edge : registry.get<island>(island_entity).edges) {
+            if (auto *manifold = registry.try_get<contact_manifold>(edge)) {
+                gather_contact(registry, world, edge, *manifold);
+            }
         }
-        c.spin_impulse = spin_impulse;
-        if (c.roll_friction > 0) {
-            c.num_roll_axes = roll_axes(registry, a, c.normal, c.roll_axis);
-            if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(registry, b, c.normal, c.roll_axis);
-            c.roll_impulse[0] = roll_impulse[0];
-            c.roll_impulse[1] = roll_impulse[1];
-        }
-        world.contacts.push_back(c);
-        world.contact_manifolds.push_back(manifold_entity);
     }
 }
 

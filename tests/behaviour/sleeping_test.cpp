@@ -13,6 +13,21 @@ struct sleeping : world_fixture {
         ground = make_rigidbody(reg, def);
     }
     bool asleep(entity e) const { return reg.all_of<sleeping_tag>(e); }
+
+    // The graph invariant islands rest on: every manifold in contact with a dynamic body is an
+    // edge of that body's island.
+    void expect_contacts_are_island_edges() const {
+        for (auto e : reg.view<contact_manifold>()) {
+            auto &m = reg.get<contact_manifold>(e);
+            if (m.num_points == 0) continue;
+            for (auto body : m.body) {
+                if (!reg.all_of<dynamic_tag>(body)) continue;
+                auto *edge = reg.try_get<island_resident>(e);
+                ASSERT_NE(edge, nullptr) << "manifold " << to_integral(e) << " in contact is in no island";
+                EXPECT_EQ(edge->island_entity, reg.get<island_resident>(body).island_entity);
+            }
+        }
+    }
 };
 
 TEST_F(sleeping, a_resting_box_falls_asleep_with_its_island) {
@@ -65,6 +80,7 @@ TEST_F(sleeping, a_body_dropped_on_a_sleeping_stack_wakes_it) {
     run_for(5.0);
     EXPECT_TRUE(asleep(bottom));
     EXPECT_TRUE(asleep(dropped));
+    expect_contacts_are_island_edges();
 }
 
 TEST_F(sleeping, changes_through_the_registry_or_edyns_functions_wake_a_body) {
@@ -126,6 +142,8 @@ TEST_F(sleeping, an_island_that_comes_apart_splits_and_sleeps_in_parts) {
     EXPECT_TRUE(asleep(left));
     EXPECT_TRUE(asleep(right));
     EXPECT_NE(reg.get<island_resident>(left).island_entity, reg.get<island_resident>(right).island_entity);
+    // Each box keeps its contact with the ground as an edge of its own island.
+    expect_contacts_are_island_edges();
 }
 
 } // namespace
