@@ -17,6 +17,21 @@ bool pivot_direction(const vector3 &d, vector3 &direction, scalar &length) noexc
     return true;
 }
 
+bool current_pivot_axis(const joint_anchor &anchor, const solver_body &a, const solver_body &b,
+                        pivot_axis &axis) noexcept {
+    axis.pose = current_pose(anchor, a, b);
+    return pivot_direction(axis.pose.d, axis.direction, axis.length);
+}
+
+void warm_start_pivot_axis(const joint_anchor &anchor, scalar impulse,
+                           std::span<solver_body> bodies) noexcept {
+    auto &a = bodies[anchor.body[0]];
+    auto &b = bodies[anchor.body[1]];
+    pivot_axis axis;
+    if (!current_pivot_axis(anchor, a, b, axis)) return;
+    apply_impulse(a, b, axis.direction * impulse, axis.pose.rA, axis.pose.rB);
+}
+
 distance_constraint_solver make_constraint_solver(const registry &registry, const distance_constraint &c,
                                                   constraint_body_indices indices) {
     distance_constraint_solver s;
@@ -27,26 +42,19 @@ distance_constraint_solver make_constraint_solver(const registry &registry, cons
 }
 
 void warm_start(distance_constraint_solver &s, std::span<solver_body> bodies) noexcept {
-    auto &a = bodies[s.anchor.body[0]];
-    auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
-    vector3 n;
-    scalar len;
-    if (!pivot_direction(pose.d, n, len)) return;
-    apply_impulse(a, b, n * s.impulse, pose.rA, pose.rB);
+    warm_start_pivot_axis(s.anchor, s.impulse, bodies);
 }
 
 void solve(distance_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
-    vector3 n;
-    scalar len;
-    if (!pivot_direction(pose.d, n, len)) return;
+    pivot_axis axis;
+    if (!current_pivot_axis(s.anchor, a, b, axis)) return;
     auto row_ctx = ctx;
     if (ctx.rigid_pivots) row_ctx.use_bias = false;
-    solve_equality_row(linear_jacobian(n, pose.rA, pose.rB), len - s.distance, s.impulse, a, b, row_ctx);
+    solve_equality_row(linear_jacobian(axis.direction, axis.pose.rA, axis.pose.rB), axis.length - s.distance,
+                       s.impulse, a, b, row_ctx);
 }
 
 void store_impulses(const distance_constraint_solver &s, distance_constraint &c) noexcept {

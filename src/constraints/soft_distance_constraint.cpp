@@ -25,25 +25,17 @@ soft_distance_constraint_solver make_constraint_solver(const registry &registry,
 }
 
 void warm_start(soft_distance_constraint_solver &s, std::span<solver_body> bodies) noexcept {
-    auto &a = bodies[s.anchor.body[0]];
-    auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
-    vector3 n;
-    scalar len;
-    if (!pivot_direction(pose.d, n, len)) return;
-    apply_impulse(a, b, n * s.impulse, pose.rA, pose.rB);
+    warm_start_pivot_axis(s.anchor, s.impulse, bodies);
 }
 
 void solve(soft_distance_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
-    vector3 n;
-    scalar len;
-    if (!pivot_direction(pose.d, n, len)) return;
-    solve_spring_row(linear_jacobian(n, pose.rA, pose.rB), len - s.distance, s.stiffness, s.damping,
-                     s.impulse, a, b, ctx);
+    pivot_axis axis;
+    if (!current_pivot_axis(s.anchor, a, b, axis)) return;
+    solve_spring_row(linear_jacobian(axis.direction, axis.pose.rA, axis.pose.rB), axis.length - s.distance,
+                     s.stiffness, s.damping, s.impulse, a, b, ctx);
 }
 
 void store_impulses(const soft_distance_constraint_solver &s, soft_distance_constraint &c) noexcept {

@@ -41,6 +41,22 @@ inline void project_positions(distance_constraint_solver &s, std::span<solver_bo
 // Direction and length of d; false when the pivots coincide and no direction exists.
 bool pivot_direction(const vector3 &d, vector3 &direction, scalar &length) noexcept;
 
+// The pivots of a distance-like joint now, and the unit direction and length between them.
+struct pivot_axis {
+    joint_pose pose;
+    vector3 direction;
+    scalar length;
+};
+
+// False when the pivots coincide and no direction exists.
+bool current_pivot_axis(const joint_anchor &anchor, const solver_body &a, const solver_body &b,
+                        pivot_axis &axis) noexcept;
+
+// Re-applies an impulse along the current direction between the pivots (distance and soft
+// distance joints).
+void warm_start_pivot_axis(const joint_anchor &anchor, scalar impulse,
+                           std::span<solver_body> bodies) noexcept;
+
 } // namespace edyn
 
 #endif // EDYN_CONSTRAINTS_DISTANCE_CONSTRAINT_HPP
