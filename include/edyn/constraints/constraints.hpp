@@ -3,6 +3,7 @@
 
 // Every constraint a program can make with make_constraint.
 #include "edyn/constraints/cone_constraint.hpp"
+#include "edyn/constraints/cvjoint_constraint.hpp"
 #include "edyn/constraints/distance_constraint.hpp"
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/constraints/hinge_constraint.hpp"
@@ -18,7 +19,7 @@ struct constraint_type_list {};
 // Every constraint component, in the order the solver visits them.
 using constraint_types =
     constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint, hinge_constraint,
-                         cone_constraint, gravity_constraint, null_constraint>;
+                         cvjoint_constraint, cone_constraint, gravity_constraint, null_constraint>;
 
 } // namespace edyn
 

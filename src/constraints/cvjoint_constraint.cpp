@@ -1,0 +1,169 @@
+#include "edyn/constraints/cvjoint_constraint.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include <cmath>
+#include <string>
+
+namespace edyn {
+
+void cvjoint_constraint::set_axes(const vector3 &axisA, const vector3 &axisB) {
+    vector3 p, q;
+    auto a = normalize(axisA);
+    plane_space(a, p, q);
+    frame[0] = matrix3x3_columns(a, p, q);
+    auto b = normalize(axisB);
+    plane_space(b, p, q);
+    frame[1] = matrix3x3_columns(b, p, q);
+}
+
+void validate_constraint(const cvjoint_constraint &c) {
+    constexpr auto type = constraint_type_name<cvjoint_constraint>;
+    check_constraint_finite(type, "pivot[0]", c.pivot[0]);
+    check_constraint_finite(type, "pivot[1]", c.pivot[1]);
+    check_constraint_orthonormal(type, "frame[0]", c.frame[0]);
+    check_constraint_orthonormal(type, "frame[1]", c.frame[1]);
+    if (std::isnan(c.twist_min) || std::isnan(c.twist_max) || c.twist_min > c.twist_max) {
+        throw_constraint_error(type, "twist_min",
+                               "must not exceed twist_max, got " + std::to_string(c.twist_min) + " > " +
+                                   std::to_string(c.twist_max));
+    }
+    check_constraint_unit_interval(type, "twist_restitution", c.twist_restitution);
+    check_constraint_non_negative(type, "twist_friction_torque", c.twist_friction_torque);
+    check_constraint_non_negative(type, "twist_damping", c.twist_damping);
+    check_constraint_finite(type, "twist_rest_angle", c.twist_rest_angle);
+    check_constraint_non_negative(type, "twist_stiffness", c.twist_stiffness);
+    check_constraint_non_negative(type, "twist_bump_stop_angle", c.twist_bump_stop_angle);
+    check_constraint_non_negative(type, "twist_bump_stop_stiffness", c.twist_bump_stop_stiffness);
+}
+
+scalar cvjoint_twist(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept {
+    auto axisB = frameB.column(0);
+    auto swing = shortest_arc(frameA.column(0), axisB);
+    auto p = rotate(swing, frameA.column(1));
+    auto q = frameB.column(1);
+    return std::atan2(dot(cross(p, q), axisB), dot(p, q));
+}
+
+vector3 cvjoint_twist_axis(const vector3 &axisA, const vector3 &axisB) noexcept {
+    // Bent by nearly half a turn the twist is undefined; keep the row bounded.
+    auto c = std::max(1 + dot(axisA, axisB), scalar(1e-3));
+    return (axisA + axisB) / c;
+}
+
+cvjoint_constraint_solver make_constraint_solver(const registry &registry, const cvjoint_constraint &c,
+                                                 constraint_body_indices indices) {
+    cvjoint_constraint_solver s;
+    s.anchor = make_joint_anchor(registry, c.body, c.pivot, indices);
+    s.frameA = world_frame(registry, c.body[0], c.frame[0]);
+    s.frameB = world_frame(registry, c.body[1], c.frame[1]);
+    s.twist = unwrap_angle(c.twist_angle, cvjoint_twist(s.frameA, s.frameB));
+    s.locked = c.twist_min == c.twist_max;
+    s.friction_torque = c.twist_friction_torque;
+    s.damping = c.twist_damping;
+    s.rest_angle = c.twist_rest_angle;
+    s.stiffness = c.twist_stiffness;
+    s.limit.min = c.twist_min;
+    s.limit.max = c.twist_max;
+    s.limit.bump_angle = c.twist_bump_stop_angle;
+    s.limit.bump_stiffness = c.twist_bump_stop_stiffness;
+    s.limit.restitution = c.twist_restitution;
+    auto axis = cvjoint_twist_axis(s.frameA.column(0), s.frameB.column(0));
+    s.limit.start_rate =
+        dot(axis, vector3(registry.get<angvel>(c.body[1])) - vector3(registry.get<angvel>(c.body[0])));
+    for (int i = 0; i < 2; ++i) {
+        s.limit.impulse[i] = s.locked ? 0 : c.limit_impulse[i];
+        s.limit.bump_impulse[i] = s.locked ? 0 : c.bump_stop_impulse[i];
+    }
+    s.impulse = c.impulse;
+    s.twist_impulse = s.locked ? c.twist_impulse : 0;
+    s.friction_impulse = c.friction_impulse;
+    s.spring_impulse = c.spring_impulse;
+    return s;
+}
+
+namespace {
+
+struct cv_pose {
+    vector3 axis; // twist rate axis
+    scalar twist;
+};
+
+cv_pose current_cv(const cvjoint_constraint_solver &s, const solver_body &a, const solver_body &b) noexcept {
+    auto frameA = rotate_frame(a.delta_rotation, s.frameA);
+    auto frameB = rotate_frame(b.delta_rotation, s.frameB);
+    return {cvjoint_twist_axis(frameA.column(0), frameB.column(0)),
+            unwrap_angle(s.twist, cvjoint_twist(frameA, frameB))};
+}
+
+// A twist limit hit with restitution, solved as an isolated collision of the limit and the
+// pivot, iterated from zero impulses until they agree.
+void solve_twist_bounce(cvjoint_constraint_solver &s, const vector3 &axis, const scalar (&bounce)[2],
+                        solver_body &a, solver_body &b, const constraint_solve_context &ctx) {
+    constexpr int iterations = 16;
+    auto rigid = ctx;
+    rigid.use_bias = false;
+    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    for (int i = 0; i < 2; ++i) {
+        if (bounce[i] <= 0) continue;
+        apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
+        s.limit.impulse[i] = 0;
+    }
+    scalar limit_impulse[2]{0, 0};
+    vector3 point_impulse = vector3_zero;
+    for (int k = 0; k < iterations; ++k) {
+        solve_limit_bounce(axis, bounce, limit_impulse, a, b);
+        solve_point_block(s.anchor, point_impulse, a, b, rigid);
+    }
+}
+
+} // namespace
+
+void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto pose = current_pose(s.anchor, a, b);
+    auto cv = current_cv(s, a, b);
+    apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
+    apply_row_impulse(angular_jacobian(-cv.axis), a, b, s.twist_impulse);
+    apply_angular_impulse(a, b, cv.axis * (s.friction_impulse + s.spring_impulse));
+    warm_start_angular_limit(s.limit, cv.axis, a, b);
+}
+
+void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
+           const constraint_solve_context &ctx) noexcept {
+    auto &a = bodies[s.anchor.body[0]];
+    auto &b = bodies[s.anchor.body[1]];
+    auto cv = current_cv(s, a, b);
+    auto row = angular_jacobian(cv.axis); // its rate is minus the twist rate
+
+    if (s.locked) {
+        solve_equality_row(angular_jacobian(-cv.axis), cv.twist - s.limit.min, s.twist_impulse, a, b, ctx);
+    } else {
+        if (s.friction_torque > 0)
+            solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);
+        if (s.stiffness > 0 || s.damping > 0) {
+            solve_spring_row(row, s.rest_angle - cv.twist, s.stiffness, s.damping, s.spring_impulse, a, b,
+                             ctx);
+        }
+        scalar bounce[2];
+        if (detect_limit_hits(s.limit, cv.axis, cv.twist, a, b, ctx, bounce)) {
+            solve_twist_bounce(s, cv.axis, bounce, a, b, ctx);
+        }
+        solve_angular_limit(s.limit, cv.axis, cv.twist, a, b, ctx);
+    }
+    solve_point_block(s.anchor, s.impulse, a, b, ctx);
+    if (!ctx.use_bias) s.twist = current_cv(s, a, b).twist;
+}
+
+void store_impulses(const cvjoint_constraint_solver &s, cvjoint_constraint &c) noexcept {
+    c.twist_angle = s.twist;
+    c.impulse = s.impulse;
+    c.twist_impulse = s.twist_impulse;
+    for (int i = 0; i < 2; ++i) {
+        c.limit_impulse[i] = s.limit.impulse[i];
+        c.bump_stop_impulse[i] = s.limit.bump_impulse[i];
+    }
+    c.friction_impulse = s.friction_impulse;
+    c.spring_impulse = s.spring_impulse;
+}
+
+} // namespace edyn
