@@ -4,6 +4,7 @@
 #include "edyn/constraints/cone_constraint.hpp"
 #include "edyn/constraints/cvjoint_constraint.hpp"
 #include "edyn/constraints/distance_constraint.hpp"
+#include "edyn/constraints/generic_constraint.hpp"
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/constraints/hinge_constraint.hpp"
 #include "edyn/constraints/null_constraint.hpp"
@@ -43,7 +44,7 @@ struct constraint_solver_state {
     std::tuple<constraint_batch<point_constraint_solver>, constraint_batch<distance_constraint_solver>,
                constraint_batch<soft_distance_constraint_solver>, constraint_batch<hinge_constraint_solver>,
                constraint_batch<cvjoint_constraint_solver>, constraint_batch<cone_constraint_solver>,
-               constraint_batch<gravity_constraint_solver>>
+               constraint_batch<generic_constraint_solver>, constraint_batch<gravity_constraint_solver>>
         batches;
 };
 

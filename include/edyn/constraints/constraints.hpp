@@ -5,6 +5,7 @@
 #include "edyn/constraints/cone_constraint.hpp"
 #include "edyn/constraints/cvjoint_constraint.hpp"
 #include "edyn/constraints/distance_constraint.hpp"
+#include "edyn/constraints/generic_constraint.hpp"
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/constraints/hinge_constraint.hpp"
 #include "edyn/constraints/null_constraint.hpp"
@@ -17,9 +18,9 @@ template<typename... T>
 struct constraint_type_list {};
 
 // Every constraint component, in the order the solver visits them.
-using constraint_types =
-    constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint, hinge_constraint,
-                         cvjoint_constraint, cone_constraint, gravity_constraint, null_constraint>;
+using constraint_types = constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint,
+                                              hinge_constraint, cvjoint_constraint, cone_constraint,
+                                              generic_constraint, gravity_constraint, null_constraint>;
 
 } // namespace edyn
 
