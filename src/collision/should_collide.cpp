@@ -76,6 +76,8 @@ void set_should_collide(registry &registry, should_collide_func_t func) {
     registry.ctx().emplace_or_replace<should_collide_context>(func);
 }
 
+void reset_should_collide(registry &registry) noexcept { registry.ctx().erase<should_collide_context>(); }
+
 should_collide_func_t get_should_collide(const registry &registry) noexcept {
     if (auto *ctx = registry.ctx().find<should_collide_context>()) return ctx->func;
     return &should_collide_default;

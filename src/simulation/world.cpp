@@ -66,7 +66,7 @@ void detach(registry &registry) {
     registry.ctx().erase<settings>();
     registry.ctx().erase<contact_events>();
     registry.ctx().erase<material_mix_table>();
-    set_should_collide(registry, &should_collide_default);
+    reset_should_collide(registry);
 }
 
 void step_simulation(registry &registry) {

@@ -23,6 +23,10 @@ void exclude_collision(registry &registry, entity first, entity second);
 // registry's context. Throws std::invalid_argument for a null function.
 void set_should_collide(registry &registry, should_collide_func_t func);
 
+// Forgets the function set by set_should_collide (back to should_collide_default), removing
+// its context variable.
+void reset_should_collide(registry &registry) noexcept;
+
 // The function set by set_should_collide, or should_collide_default.
 should_collide_func_t get_should_collide(const registry &registry) noexcept;
 

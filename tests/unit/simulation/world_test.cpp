@@ -30,8 +30,11 @@ TEST(world, attach_detach_attach_keeps_the_programs_entities) {
     step_simulation(reg); // a manifold entity now exists
     ASSERT_GT(reg.storage<contact_manifold>().size(), 0u);
 
+    set_should_collide(reg, [](const registry &, entity, entity) { return true; });
     detach(reg);
     EXPECT_FALSE(is_attached(reg));
+    EXPECT_TRUE(reg.ctx().empty()) << reg.ctx().size() << " context variables left after detach";
+    EXPECT_EQ(get_should_collide(reg), &should_collide_default);
     EXPECT_TRUE(reg.valid(ball));
     EXPECT_EQ(reg.get<user_data>(ball).value, 7);
     EXPECT_FALSE(reg.any_of<position>(ball));
