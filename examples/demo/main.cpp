@@ -1,5 +1,5 @@
-// edyn-demo: a pyramid, a pile of mixed shapes and bouncing balls on a floor, simulated for a
-// while in fixed steps, with a progress line and a summary of what happened.
+// edyn-demo: a pyramid, a pile of mixed shapes, bouncing balls, a chain and a bridge on a floor,
+// simulated for a while in fixed steps, with a progress line and a summary of what happened.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -48,8 +48,8 @@ summary summarize(edyn::registry &registry) {
 int main(int argc, char **argv) {
     options opt;
     CLI::App app{"edyn-demo: rigid bodies falling, stacking, bouncing and sleeping"};
-    app.add_option("--scene", opt.scene, "all, pyramid, pile or balls")
-        ->check(CLI::IsMember({"all", "pyramid", "pile", "balls"}));
+    app.add_option("--scene", opt.scene, "all, pyramid, pile, balls, chain or bridge")
+        ->check(CLI::IsMember({"all", "pyramid", "pile", "balls", "chain", "bridge"}));
     app.add_option("--pyramid-base", opt.pyramid_base, "boxes in the pyramid's bottom row")
         ->check(CLI::Range(1u, 200u));
     app.add_option("--pile-count", opt.pile_count, "bodies in the pile")->check(CLI::Range(1u, 100000u));
@@ -77,6 +77,18 @@ int main(int argc, char **argv) {
     if (all || opt.scene == "balls") {
         // Beside the pyramid, on the far side of the pile.
         edyn::scenes::make_bouncing_balls(registry, opt.balls, 4, {-8, 0, 30});
+    }
+    // Joints; a handful of bodies each, cheap enough for `all`. Placed apart from the others.
+    if (all || opt.scene == "chain") {
+        edyn::scenes::make_chain(registry, 20, edyn::scalar(0.5), {-30, 12, -30});
+    }
+    if (all || opt.scene == "bridge") {
+        auto bridge = edyn::scenes::make_bridge(registry, 16, edyn::scalar(0.5), 3, {30, 0, -30});
+        edyn::rigidbody_def box;
+        box.mass = 20;
+        box.shape = edyn::box_shape{{edyn::scalar(0.3), edyn::scalar(0.3), edyn::scalar(0.3)}};
+        box.position = {34, 5, -30};
+        edyn::make_rigidbody(registry, box);
     }
 
     auto dt = double(edyn::get_fixed_dt(registry));

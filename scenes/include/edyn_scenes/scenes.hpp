@@ -39,6 +39,31 @@ std::vector<entity> make_pile(registry &registry, unsigned count, unsigned width
 std::vector<entity> make_bouncing_balls(registry &registry, unsigned count, scalar height = 4,
                                         const vector3 &origin = vector3_zero);
 
+// A chain of `links` boxes `link_length` long, joined end to end by point constraints and
+// hanging from a static anchor at `top`. It is laid out horizontally along +x, so that it
+// swings down when the simulation starts. Neighbouring links do not collide with each other.
+struct chain_scene {
+    entity anchor{null};
+    std::vector<entity> links;
+    std::vector<entity> joints; // joints[i] holds links[i] to the anchor (i = 0) or to links[i - 1]
+};
+chain_scene make_chain(registry &registry, unsigned links, scalar link_length = scalar(0.5),
+                       const vector3 &top = {0, 10, 0});
+
+// A rope bridge: `planks` planks `plank_length` long (along x) and 1 m wide (along z), joined
+// by damped hinges about z at their ends, spanning between two static posts whose tops are at
+// `height`. The deck starts at `origin` + (0, height, 0) and runs along +x, hanging slack in a
+// shallow arc (2 degrees at each hinge), so it spans a little less than planks * plank_length.
+// Neighbouring planks
+// do not collide with each other nor the end planks with their posts.
+struct bridge_scene {
+    entity posts[2]{null, null};
+    std::vector<entity> planks;
+    std::vector<entity> hinges; // hinges[i] holds the start of planks[i]; the last one the end post
+};
+bridge_scene make_bridge(registry &registry, unsigned planks, scalar plank_length = scalar(0.5),
+                         scalar height = 3, const vector3 &origin = vector3_zero);
+
 } // namespace edyn::scenes
 
 #endif // EDYN_SCENES_SCENES_HPP

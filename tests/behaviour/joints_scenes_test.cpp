@@ -1,0 +1,62 @@
+// The chain and bridge scenes: joints that hold under load.
+#include "joints_support.hpp"
+#include <edyn_scenes/scenes.hpp>
+
+using namespace edyn;
+using edyn::test::world_fixture;
+
+using joint_scenes = world_fixture;
+
+namespace {
+
+// Largest separation of a hinge's pivots, in metres.
+scalar hinge_error(const registry &reg, entity e) {
+    auto &h = reg.get<hinge_constraint>(e);
+    return distance(edyn::test::world_pivot(reg, h.body[0], h.pivot[0]),
+                    edyn::test::world_pivot(reg, h.body[1], h.pivot[1]));
+}
+
+} // namespace
+
+TEST_F(joint_scenes, bridge_holds_a_box_dropped_onto_it) {
+    scenes::make_ground(reg);
+    const unsigned planks = 16;
+    const scalar plank_length = scalar(0.5), height = 3;
+    auto bridge = scenes::make_bridge(reg, planks, plank_length, height);
+    auto span = pos(bridge.posts[1]).x - pos(bridge.posts[0]).x - scalar(0.5);
+    // A 20 kg box dropped from 1 m onto the middle of the deck of 32 kg of planks.
+    auto box = make_rigidbody(
+        reg, edyn::test::box_def({scalar(0.3), scalar(0.3), scalar(0.3)}, {span / 2, height + 1, 0}, 20));
+    scalar worst = 0;
+    for (int i = 0; i < 60 * 4; ++i) {
+        step_simulation(reg);
+        for (auto e : bridge.hinges)
+            worst = std::max(worst, hinge_error(reg, e));
+    }
+    EXPECT_LT(worst, scalar(0.01)) << "largest hinge pivot error " << worst << " m";
+    // The box stays on the deck, in the middle, well above the ground.
+    EXPECT_GT(pos(box).y, height - 1) << "box at y = " << pos(box).y;
+    EXPECT_NEAR(pos(box).x, span / 2, scalar(0.5));
+    EXPECT_NEAR(pos(box).z, 0, scalar(0.2));
+}
+
+TEST_F(joint_scenes, chain_hangs_straight_down_with_its_links_joined) {
+    const unsigned links = 12;
+    const scalar link_length = scalar(0.5);
+    const vector3 top{0, 10, 0};
+    auto chain = scenes::make_chain(reg, links, link_length, top);
+    scalar worst = 0;
+    for (int i = 0; i < 60 * 10; ++i) {
+        step_simulation(reg);
+        for (auto e : chain.joints) {
+            auto &c = reg.get<point_constraint>(e);
+            worst = std::max(worst, distance(edyn::test::world_pivot(reg, c.body[0], c.pivot[0]),
+                                             edyn::test::world_pivot(reg, c.body[1], c.pivot[1])));
+        }
+    }
+    EXPECT_LT(worst, scalar(0.01)) << "largest pivot separation " << worst << " m";
+    // Released horizontally it swung down: its free end is below the anchor by most of its
+    // 6 m length (it is still swinging, less than 45 degrees out).
+    auto end = edyn::test::world_pivot(reg, chain.links.back(), {link_length / 2, 0, 0});
+    EXPECT_LT(end.y, top.y - link_length * links * scalar(0.7)) << "free end at y = " << end.y;
+}
