@@ -1,6 +1,7 @@
 #include "edyn/collision/manifold_update.hpp"
 #include "edyn/math/transform.hpp"
 #include <algorithm>
+#include <cmath>
 
 namespace edyn {
 
@@ -47,7 +48,9 @@ void refresh_points(contact_manifold &manifold, const manifold_transforms &tf,
     for (std::uint32_t pos = 0; pos < manifold.num_points;) {
         auto &cp = manifold.point[manifold.ids[pos]];
         ++cp.lifetime;
-        auto d = to_world_space(cp.pivotA, tf.posA, tf.ornA) - to_world_space(cp.pivotB, tf.posB, tf.ornB);
+        cp.positionA = to_world_space(cp.pivotA, tf.posA, tf.ornA);
+        cp.positionB = to_world_space(cp.pivotB, tf.posB, tf.ornB);
+        auto d = cp.positionA - cp.positionB;
         cp.distance = dot(d, cp.normal);
         auto tangential = d - cp.normal * cp.distance;
 
@@ -246,6 +249,10 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
     }
 
     insert_new_points(manifold, result, pending.data(), num_pending, changes);
+    manifold.each_point([&](contact_point &cp) {
+        cp.positionA = to_world_space(cp.pivotA, tf.posA, tf.ornA);
+        cp.positionB = to_world_space(cp.pivotB, tf.posB, tf.ornB);
+    });
     changes.num_points_after = manifold.num_points;
     return changes;
 }
@@ -256,6 +263,24 @@ contact_point_changes clear_contact_manifold(contact_manifold &manifold) {
     while (manifold.num_points > 0)
         remove_point_at(manifold, manifold.num_points - 1, changes);
     return changes;
+}
+
+bool can_reuse_contacts(const contact_manifold &manifold, const manifold_transforms &tf, scalar approach,
+                        std::uint32_t shape_epoch) noexcept {
+    auto &last = manifold.last_collide;
+    if (!last.valid || last.shape_epoch != shape_epoch || approach > contact_reuse_max_distance) return false;
+    const auto max_dist_sqr = contact_reuse_max_distance * contact_reuse_max_distance;
+    if (distance_sqr(tf.posA, last.posA) > max_dist_sqr || distance_sqr(tf.posB, last.posB) > max_dist_sqr) {
+        return false;
+    }
+    // Two unit quaternions differ by a rotation of angle a where |dot| = cos(a / 2).
+    static const auto min_cos = std::cos(contact_reuse_max_angle / 2);
+    return std::abs(dot(tf.ornA, last.ornA)) >= min_cos && std::abs(dot(tf.ornB, last.ornB)) >= min_cos;
+}
+
+void remember_collide(contact_manifold &manifold, const manifold_transforms &tf,
+                      std::uint32_t shape_epoch) noexcept {
+    manifold.last_collide = {tf.posA, tf.posB, tf.ornA, tf.ornB, shape_epoch, true};
 }
 
 } // namespace edyn

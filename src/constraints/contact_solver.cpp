@@ -5,6 +5,10 @@ namespace edyn {
 
 namespace {
 
+std::span<contact_solver_point> points_of(contact_solver_set &contacts, const contact_solver_constraint &c) {
+    return std::span(contacts.points).subspan(c.first_point, c.num_points);
+}
+
 contact_row make_row(const solver_body &a, const solver_body &b, const vector3 &d, const vector3 &rA,
                      const vector3 &rB) {
     contact_row row;
@@ -32,12 +36,21 @@ inline void apply_row(const contact_row &row, const vector3 &d, scalar impulse, 
 
 } // namespace
 
-void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<const solver_body> bodies) {
-    for (auto &c : contacts) {
+contact_solver_point *contact_solver_set::add(const contact_solver_constraint &c, std::uint32_t num_points) {
+    auto &added = constraints.emplace_back(c);
+    added.first_point = std::uint32_t(points.size());
+    added.num_points = num_points;
+    points.resize(points.size() + num_points);
+    totals.resize(points.size());
+    return &points[added.first_point];
+}
+
+void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies) {
+    for (auto &c : contacts.constraints) {
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
-        for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
+        for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
+            auto &p = contacts.points[i];
             plane_space(p.normal, p.tangent[0], p.tangent[1]);
             p.normal_row = make_row(a, b, p.normal, p.rA, p.rB);
             p.tangent_row[0] = make_row(a, b, p.tangent[0], p.rA, p.rB);
@@ -45,11 +58,8 @@ void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<c
             p.normal_mass = effective_mass(a, b, p.normal, p.rA, p.rB);
             p.tangent_mass[0] = effective_mass(a, b, p.tangent[0], p.rA, p.rB);
             p.tangent_mass[1] = effective_mass(a, b, p.tangent[1], p.rA, p.rB);
-            p.relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
-            p.restitution_impulse = 0;
-            p.total_normal_impulse = 0;
-            p.total_tangent_impulse[0] = p.total_tangent_impulse[1] = 0;
-            p.tangent_restitution_impulse[0] = p.tangent_restitution_impulse[1] = 0;
+            contacts.totals[i] = {};
+            contacts.totals[i].relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
         }
 
         c.total_spin_impulse = 0;
@@ -61,13 +71,12 @@ void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<c
     }
 }
 
-void warm_start_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies) {
-    for (auto &c : contacts) {
+void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies) {
+    for (auto &c : contacts.constraints) {
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
 
-        for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
+        for (auto &p : points_of(contacts, c)) {
             apply_row(p.normal_row, p.normal, p.normal_impulse, a, b);
             apply_row(p.tangent_row[0], p.tangent[0], p.tangent_impulse[0], a, b);
             apply_row(p.tangent_row[1], p.tangent[1], p.tangent_impulse[1], a, b);
@@ -91,9 +100,9 @@ scalar current_separation(const contact_solver_point &p, const solver_body &a, c
 }
 
 // Coulomb friction on both tangents of every point, limited by that point's normal impulse.
-void solve_friction(contact_solver_constraint &c, solver_body &a, solver_body &b) {
-    for (std::uint32_t i = 0; i < c.num_points; ++i) {
-        auto &p = c.points[i];
+void solve_friction(const contact_solver_constraint &c, std::span<contact_solver_point> points,
+                    solver_body &a, solver_body &b) {
+    for (auto &p : points) {
         auto max_impulse = c.friction * p.normal_impulse;
         for (int t = 0; t < 2; ++t) {
             auto vt = row_velocity(p.tangent_row[t], p.tangent[t], a, b);
@@ -127,20 +136,20 @@ void solve_spin_and_roll(contact_solver_constraint &c, solver_body &a, solver_bo
 
 } // namespace
 
-void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies, scalar h,
+void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias) {
     // A spring stiffer than a quarter of the sub-step rate cannot be integrated stably.
     auto hertz = std::min(settings.contact_hertz, settings.max_hertz_ratio / h);
     auto soft = make_softness(hertz, settings.contact_damping_ratio, h);
     auto inv_h = scalar(1) / h;
 
-    for (auto &c : contacts) {
+    for (auto &c : contacts.constraints) {
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
+        auto points = points_of(contacts, c);
         scalar total_normal = 0;
 
-        for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
+        for (auto &p : points) {
             auto s = current_separation(p, a, b);
             scalar bias = 0, mass_scale = 1, impulse_scale = 0;
 
@@ -162,19 +171,20 @@ void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<sol
             total_normal += new_impulse;
         }
 
-        solve_friction(c, a, b);
+        solve_friction(c, points, a, b);
         solve_spin_and_roll(c, a, b, total_normal);
     }
 }
 
-void accumulate_contact_impulses(std::span<contact_solver_constraint> contacts) {
-    for (auto &c : contacts) {
-        for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
-            p.total_normal_impulse += p.normal_impulse;
-            p.total_tangent_impulse[0] += p.tangent_impulse[0];
-            p.total_tangent_impulse[1] += p.tangent_impulse[1];
-        }
+void accumulate_contact_impulses(contact_solver_set &contacts) {
+    for (std::size_t i = 0; i < contacts.points.size(); ++i) {
+        auto &p = contacts.points[i];
+        auto &t = contacts.totals[i];
+        t.normal_impulse += p.normal_impulse;
+        t.tangent_impulse[0] += p.tangent_impulse[0];
+        t.tangent_impulse[1] += p.tangent_impulse[1];
+    }
+    for (auto &c : contacts.constraints) {
         c.total_spin_impulse += c.spin_impulse;
         c.total_roll_impulse[0] += c.roll_impulse[0];
         c.total_roll_impulse[1] += c.roll_impulse[1];
@@ -185,7 +195,9 @@ namespace {
 
 // Solves one manifold's bounce as an isolated collision: each call is a new collision event,
 // so its impulses start from zero. Returns whether any point was hit.
-bool solve_restitution_individually(contact_solver_constraint &c, solver_body &a, solver_body &b,
+bool solve_restitution_individually(const contact_solver_constraint &c,
+                                    std::span<contact_solver_point> points,
+                                    std::span<contact_point_totals> totals, solver_body &a, solver_body &b,
                                     scalar threshold, scalar h, unsigned iterations) {
     scalar target[contact_solver_constraint::max_points];
     scalar normal[contact_solver_constraint::max_points]{};
@@ -193,30 +205,31 @@ bool solve_restitution_individually(contact_solver_constraint &c, solver_body &a
     bool any = false;
 
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
-        auto &p = c.points[i];
+        auto &p = points[i];
         // The approach speed is the larger of now and when the step began: in between, the
         // speculative contact may have braked the point so that it lands exactly on the surface.
-        auto approach = std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), p.relative_velocity);
+        auto approach =
+            std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), totals[i].relative_velocity);
         // A point still apart bounces only when the gap closes within this sub-step, so that
         // the bounce starts at most one sub-step of travel early.
         auto hits = approach < -threshold && current_separation(p, a, b) + approach * h <= 0;
         target[i] = hits ? -c.restitution * approach : scalar(0);
         // The step's approach has been answered; later hits in this step are new collisions.
-        if (hits) p.relative_velocity = 0;
+        if (hits) totals[i].relative_velocity = 0;
         any |= hits;
     }
     if (!any) return false;
 
     for (unsigned k = 0; k < iterations; ++k) {
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
+            auto &p = points[i];
             auto vn = row_velocity(p.normal_row, p.normal, a, b);
             auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
             apply_row(p.normal_row, p.normal, new_impulse - normal[i], a, b);
             normal[i] = new_impulse;
         }
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
+            auto &p = points[i];
             auto max_impulse = c.friction * normal[i];
             for (int t = 0; t < 2; ++t) {
                 auto vt = row_velocity(p.tangent_row[t], p.tangent[t], a, b);
@@ -229,17 +242,17 @@ bool solve_restitution_individually(contact_solver_constraint &c, solver_body &a
     }
 
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
-        auto &p = c.points[i];
-        p.restitution_impulse += normal[i];
-        p.tangent_restitution_impulse[0] += tangent[i][0];
-        p.tangent_restitution_impulse[1] += tangent[i][1];
+        auto &t = totals[i];
+        t.restitution_impulse += normal[i];
+        t.tangent_restitution_impulse[0] += tangent[i][0];
+        t.tangent_restitution_impulse[1] += tangent[i][1];
     }
     return true;
 }
 
 } // namespace
 
-unsigned solve_restitution(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies,
+unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> bodies,
                            const contact_solver_settings &settings, scalar h, unsigned iterations,
                            unsigned individual_iterations) {
     if (iterations == 0 || individual_iterations == 0) return 0;
@@ -247,10 +260,12 @@ unsigned solve_restitution(std::span<contact_solver_constraint> contacts, std::s
     unsigned passes = 0;
     for (; passes < iterations; ++passes) {
         bool any = false;
-        for (auto &c : contacts) {
+        for (auto &c : contacts.constraints) {
             if (c.restitution <= 0) continue;
-            any |= solve_restitution_individually(c, bodies[c.body[0]], bodies[c.body[1]],
-                                                  settings.restitution_threshold, h, individual_iterations);
+            any |= solve_restitution_individually(
+                c, points_of(contacts, c), std::span(contacts.totals).subspan(c.first_point, c.num_points),
+                bodies[c.body[0]], bodies[c.body[1]], settings.restitution_threshold, h,
+                individual_iterations);
         }
         if (!any) break;
     }

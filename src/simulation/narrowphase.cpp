@@ -94,20 +94,26 @@ void run_narrowphase(registry &registry, world_state &world) {
                                ornB};
         // Points are looked for as far as the bodies can travel towards each other in a step,
         // so that the solver can stop them at the surface instead of inside it.
-        manifold.separation_threshold = contact_breaking_threshold + approach_speed(registry, a, b) * dt;
-        collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
-        result.num_points = 0;
-        visit_shape(registry, a, [&](const auto &shapeA) {
-            visit_shape(registry, b, [&](const auto &shapeB) {
-                using A = std::decay_t<decltype(shapeA)>;
-                using B = std::decay_t<decltype(shapeB)>;
-                if constexpr (!(std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>)) {
-                    collide(shapeA, shapeB, ctx, result);
-                }
+        auto approach = approach_speed(registry, a, b) * dt;
+        manifold.separation_threshold = contact_breaking_threshold + approach;
+        contact_point_changes changes;
+        if (can_reuse_contacts(manifold, tf, approach, world.shape_epoch)) {
+            changes = refresh_contact_manifold(manifold, tf);
+        } else {
+            collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
+            result.num_points = 0;
+            visit_shape(registry, a, [&](const auto &shapeA) {
+                visit_shape(registry, b, [&](const auto &shapeB) {
+                    using A = std::decay_t<decltype(shapeA)>;
+                    using B = std::decay_t<decltype(shapeB)>;
+                    if constexpr (!(std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>)) {
+                        collide(shapeA, shapeB, ctx, result);
+                    }
+                });
             });
-        });
-
-        auto changes = update_contact_manifold(manifold, tf, result);
+            changes = update_contact_manifold(manifold, tf, result);
+            remember_collide(manifold, tf, world.shape_epoch);
+        }
         fill_materials(registry, manifold, changes);
         if (record) record_events(events, manifold_entity, changes);
 

@@ -132,6 +132,8 @@ void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(
 
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
+void on_update_shape(registry &registry, entity) { ++world(registry).shape_epoch; }
+
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);
     if (!w.broadphase.contains(e)) return;
@@ -215,6 +217,10 @@ using waking_components =
     component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape, sphere_shape,
                    cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
 
+// Changes after which contact points computed with the old geometry must not be reused.
+using shape_components = component_list<shape_index, plane_shape, sphere_shape, cylinder_shape, capsule_shape,
+                                        box_shape, polyhedron_shape, compound_shape>;
+
 } // namespace
 
 void connect_registry_listeners(registry &registry) {
@@ -231,6 +237,7 @@ void connect_registry_listeners(registry &registry) {
     registry.on_update<position>().connect<&on_update_transform>();
     registry.on_update<orientation>().connect<&on_update_transform>();
     connect_update<&on_update_wake>(registry, waking_components{});
+    connect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<collision_filter>().connect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
@@ -252,6 +259,7 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_update<position>().disconnect<&on_update_transform>();
     registry.on_update<orientation>().disconnect<&on_update_transform>();
     disconnect_update<&on_update_wake>(registry, waking_components{});
+    disconnect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<collision_filter>().disconnect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();

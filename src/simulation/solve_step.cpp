@@ -100,8 +100,7 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
     if (ia == 0 && ib == 0) return;
 
     auto mixed = get_mixed_material(registry, *matA, *matB);
-    auto originA = get_rigidbody_origin(registry, a), originB = get_rigidbody_origin(registry, b);
-    auto &ornA = registry.get<orientation>(a), &ornB = registry.get<orientation>(b);
+    // The narrowphase left the pivots in world space; offsets are from the centres of mass.
     auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
 
     contact_solver_constraint c;
@@ -111,17 +110,17 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
     c.restitution = mixed.restitution;
     c.roll_friction = mixed.roll_friction;
     c.spin_friction = mixed.spin_friction;
-    c.num_points = manifold.num_points;
     c.normal = manifold.point[manifold.ids[0]].normal;
     c.source = std::uint32_t(world.contact_manifolds.size());
 
     scalar spin_impulse = 0;
     std::array<scalar, 2> roll_impulse{0, 0};
+    auto *points = world.contacts.add(c, manifold.num_points);
     for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
         auto &cp = manifold.point[manifold.ids[i]];
-        auto &p = c.points[i];
-        p.rA = to_world_space(cp.pivotA, originA, ornA) - posA;
-        p.rB = to_world_space(cp.pivotB, originB, ornB) - posB;
+        auto &p = points[i];
+        p.rA = cp.positionA - posA;
+        p.rB = cp.positionB - posB;
         p.normal = cp.normal;
         p.adjusted_separation = cp.distance - dot(cp.normal, p.rA - p.rB);
         p.normal_impulse = cp.warm_start.normal;
@@ -131,14 +130,15 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
         roll_impulse[0] += cp.warm_start.roll[0];
         roll_impulse[1] += cp.warm_start.roll[1];
     }
-    c.spin_impulse = spin_impulse;
-    if (c.roll_friction > 0) {
-        c.num_roll_axes = roll_axes(registry, a, c.normal, c.roll_axis);
-        if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(registry, b, c.normal, c.roll_axis);
-        c.roll_impulse[0] = roll_impulse[0];
-        c.roll_impulse[1] = roll_impulse[1];
+    auto &added = world.contacts.constraints.back();
+    added.spin_impulse = spin_impulse;
+    if (added.roll_friction > 0) {
+        added.num_roll_axes = roll_axes(registry, a, added.normal, added.roll_axis);
+        if (added.num_roll_axes == 0)
+            added.num_roll_axes = roll_axes(registry, b, added.normal, added.roll_axis);
+        added.roll_impulse[0] = roll_impulse[0];
+        added.roll_impulse[1] = roll_impulse[1];
     }
-    world.contacts.push_back(c);
     world.contact_manifolds.push_back(manifold_entity);
 }
 
@@ -164,7 +164,7 @@ void solve_constraints(world_state &world, const settings &settings) {
     auto substeps = std::max(settings.num_substeps, 1u);
     auto h = dt / scalar(substeps);
     std::span<solver_body> bodies(world.bodies);
-    std::span<contact_solver_constraint> contacts(world.contacts);
+    auto &contacts = world.contacts;
 
     auto biased = make_constraint_solve_context(settings.joint, h, true);
     auto relax = make_constraint_solve_context(settings.joint, h, false);
@@ -217,21 +217,22 @@ void write_back(registry &registry, world_state &world, scalar dt) {
         world.body_index[to_index(e)] = 0;
     }
 
-    for (auto &c : world.contacts) {
+    for (auto &c : world.contacts.constraints) {
         auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[c.source]);
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = c.points[i];
+            auto &p = world.contacts.points[c.first_point + i];
+            auto &t = world.contacts.totals[c.first_point + i];
             auto &cp = manifold.point[manifold.ids[i]];
             auto share = scalar(1) / scalar(c.num_points);
             cp.warm_start.normal = p.normal_impulse;
             cp.warm_start.friction = {p.tangent_impulse[0], p.tangent_impulse[1]};
             cp.warm_start.spin = c.spin_impulse * share;
             cp.warm_start.roll = {c.roll_impulse[0] * share, c.roll_impulse[1] * share};
-            cp.normal_impulse = p.total_normal_impulse;
-            cp.friction_impulse = {p.total_tangent_impulse[0], p.total_tangent_impulse[1]};
-            cp.normal_restitution_impulse = p.restitution_impulse;
-            cp.friction_restitution_impulse = {p.tangent_restitution_impulse[0],
-                                               p.tangent_restitution_impulse[1]};
+            cp.normal_impulse = t.normal_impulse;
+            cp.friction_impulse = {t.tangent_impulse[0], t.tangent_impulse[1]};
+            cp.normal_restitution_impulse = t.restitution_impulse;
+            cp.friction_restitution_impulse = {t.tangent_restitution_impulse[0],
+                                               t.tangent_restitution_impulse[1]};
             // Torsional and rolling impulses are shared evenly by the points for reporting.
             cp.spin_friction_impulse = c.total_spin_impulse * share;
             cp.roll_friction_impulse = {c.total_roll_impulse[0] * share, c.total_roll_impulse[1] * share};

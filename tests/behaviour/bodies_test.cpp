@@ -201,3 +201,18 @@ TEST_F(change_shape, a_resting_sphere_given_a_smaller_radius_settles_lower) {
     run_for(1);
     EXPECT_NEAR(pos(ball).y, scalar(0.5) - fall(reg, 1), scalar(1e-3)) << "amorphous body at " << pos(ball).y;
 }
+
+// A shape replaced in place keeps the body's manifolds: their points, which a body at rest
+// reuses from step to step, must be recomputed with the new shape.
+TEST_F(change_shape, a_resting_sphere_given_a_larger_radius_in_place_rises) {
+    scenes::make_ground(reg, scalar(0.5), 0);
+    auto def = edyn::test::sphere_def(scalar(0.5), {0, scalar(0.5), 0}, 2);
+    def.sleeping_disabled = true;
+    auto ball = make_rigidbody(reg, def);
+    run_for(1);
+    EXPECT_NEAR(pos(ball).y, scalar(0.5), scalar(0.01));
+
+    reg.replace<sphere_shape>(ball, sphere_shape{scalar(0.75)});
+    run_for(1);
+    EXPECT_NEAR(pos(ball).y, scalar(0.75), scalar(0.01)) << "ball centre at " << pos(ball).y;
+}

@@ -3,6 +3,8 @@
 
 #include "edyn/collision/contact_point.hpp"
 #include "edyn/ecs/entity.hpp"
+#include "edyn/math/quaternion.hpp"
+#include "edyn/math/vector3.hpp"
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +21,14 @@ inline constexpr scalar contact_drift_threshold = scalar(0.02);
 // either body lies within this distance of the existing pivot on that body (metres).
 inline constexpr scalar contact_caching_threshold = scalar(0.04);
 
+// A pair's points are reused without running collide() again while neither body has moved
+// farther than this since the last collide() (metres), nor turned more than
+// contact_reuse_max_angle (radians), and the bodies approach each other by less than this
+// within the coming step. Bodies at rest then cost a refresh of their points, not a new
+// closest-point search.
+inline constexpr scalar contact_reuse_max_distance = scalar(0.001);
+inline constexpr scalar contact_reuse_max_angle = scalar(0.0175); // about one degree
+
 // The contact between two bodies whose AABBs overlap: an entity with this component is created
 // by the broadphase and destroyed when the AABBs separate. It holds up to `max_contacts`
 // points. A point keeps its slot in `point` for its whole life and `ids` lists the live slots:
@@ -34,6 +44,16 @@ struct contact_manifold {
     std::uint32_t num_points{0};
     std::array<contact_point, max_contacts> point{};
     std::array<id_type, max_contacts> ids{0, 1, 2, 3};
+
+    // The bodies' origins and orientations when collide() last ran for this pair, and the
+    // shape epoch then (a counter the simulation advances whenever any shape changes), for
+    // deciding whether the points can be reused (see contact_reuse_max_distance).
+    struct collide_snapshot {
+        vector3 posA{vector3_zero}, posB{vector3_zero};
+        quaternion ornA{quaternion_identity}, ornB{quaternion_identity};
+        std::uint32_t shape_epoch{0};
+        bool valid{false};
+    } last_collide;
 
     // Calls fn(contact_point &) for each live point, in `ids` order.
     template<typename Fn>

@@ -21,6 +21,9 @@ struct contact_point {
     vector3 normal{vector3_y};
     // Signed distance between the pivots along `normal`; negative while penetrating.
     scalar distance{0};
+    // The pivots in world space when the manifold was last updated (for the solver).
+    vector3 positionA{vector3_zero};
+    vector3 positionB{vector3_zero};
 
     // Impulses applied by the constraint solver over the whole last step (all its sub-steps).
     // Friction and rolling friction act along the two tangents given by plane_space(normal),

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace edyn {
 
@@ -16,8 +17,11 @@ struct contact_row {
     vector3 inv_angularA{vector3_zero}, inv_angularB{vector3_zero}; // inverse inertia times those
 };
 
-// One point of a contact as the solver sees it. Geometry is captured at the start of the step
-// (narrowphase output); the current separation is recovered from the bodies' accumulated motion.
+// One point of a contact as the solver's iterations see it: only what every pass reads or
+// writes, so that the passes stream through as little memory as possible (a large pile has
+// tens of thousands of points, far more than the caches hold). Geometry is captured at the
+// start of the step (narrowphase output); the current separation is recovered from the
+// bodies' accumulated motion.
 struct contact_solver_point {
     vector3 rA, rB; // contact points relative to each centre of mass, world space
     vector3 normal; // from B towards A
@@ -27,31 +31,34 @@ struct contact_solver_point {
     scalar tangent_mass[2]{0, 0};
     scalar normal_impulse{0};
     scalar tangent_impulse[2]{0, 0};
-    scalar restitution_impulse{0};
-    scalar tangent_restitution_impulse[2]{0, 0};
-    scalar relative_velocity{0}; // normal relative velocity when the step began
-    // Sums over the step's sub-steps of the impulses above, for reporting.
-    scalar total_normal_impulse{0};
-    scalar total_tangent_impulse[2]{0, 0};
     contact_row normal_row;
     contact_row tangent_row[2];
 };
 
+// What a point needs only once per sub-step or step: restitution and the impulses reported
+// to the user. Kept apart from contact_solver_point, at the same index.
+struct contact_point_totals {
+    scalar relative_velocity{0}; // normal relative velocity when the step began
+    scalar restitution_impulse{0};
+    scalar tangent_restitution_impulse[2]{0, 0};
+    // Sums over the step's sub-steps of the point's impulses.
+    scalar normal_impulse{0};
+    scalar tangent_impulse[2]{0, 0};
+};
+
 // A manifold's contact ready to be solved: up to four points (each with its own normal, as
-// compound shapes may give several), their friction, and torsional (spin) and rolling friction
-// about the manifold's main normal.
+// compound shapes may give several), stored from `first_point` in the set's point arrays,
+// their friction, and torsional (spin) and rolling friction about the manifold's main normal.
 struct contact_solver_constraint {
     static constexpr std::size_t max_points = 4;
-
     solver_body_index body[2]{0, 0};
     vector3 normal{vector3_zero}; // main normal, for spinning and rolling friction
     scalar friction{0};
     scalar restitution{0};
     scalar roll_friction{0};
     scalar spin_friction{0};
+    std::uint32_t first_point{0};
     std::uint32_t num_points{0};
-    std::array<contact_solver_point, max_points> points{};
-
     // Spinning friction about the normal.
     scalar spin_mass{0};
     scalar spin_impulse{0};
@@ -62,9 +69,25 @@ struct contact_solver_constraint {
     scalar roll_impulse[2]{0, 0};
     scalar total_spin_impulse{0};
     scalar total_roll_impulse[2]{0, 0};
-
     // Where the impulses go back when the step ends (index into the caller's manifold list).
     std::uint32_t source{0};
+};
+
+// Every contact of a step: the constraints, and their points in two parallel arrays (hot and
+// cold). Reused from step to step, so that a step allocates nothing once the world stops
+// growing.
+struct contact_solver_set {
+    std::vector<contact_solver_constraint> constraints;
+    std::vector<contact_solver_point> points;
+    std::vector<contact_point_totals> totals;
+
+    void clear() noexcept {
+        constraints.clear();
+        points.clear();
+        totals.clear();
+    }
+    // Appends `c` with `num_points` default points and returns the first of them.
+    contact_solver_point *add(const contact_solver_constraint &c, std::uint32_t num_points);
 };
 
 // Tuning of the soft-step contact solver, shared by all contacts of a step.
@@ -87,28 +110,28 @@ struct contact_solver_settings {
 
 // Computes tangent frames, effective masses and starting normal velocities; call after the
 // points' rA, rB, normal and adjusted separation are set, and before any solve.
-void prepare_contacts(std::span<contact_solver_constraint> contacts, std::span<const solver_body> bodies);
+void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies);
 
 // Re-applies last step's impulses (scaled) as the initial guess.
-void warm_start_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies);
+void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies);
 
 // One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
 // without it (relax pass) only the velocity constraints are enforced, removing the push-out
 // velocity so that it does not turn into bounce.
-void solve_contacts(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies, scalar h,
+void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias);
 
 // Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
 // every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
 // from the last one's, warm starting), so their sum is what the contact gave over the step.
-void accumulate_contact_impulses(std::span<contact_solver_constraint> contacts);
+void accumulate_contact_impulses(contact_solver_set &contacts);
 
 // Restitution, run at the start of each sub-step before the contact solve: a point approaching
 // faster than the threshold that touches, or will within the sub-step h, gets an impulse making
 // it separate at restitution times its approach speed. Manifolds are solved one at a time for
 // `individual_iterations`, the whole set up to `iterations` times, until no point is hit, so
 // that a shock travels along a chain of bodies. Returns the number of passes that found a hit.
-unsigned solve_restitution(std::span<contact_solver_constraint> contacts, std::span<solver_body> bodies,
+unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> bodies,
                            const contact_solver_settings &settings, scalar h, unsigned iterations,
                            unsigned individual_iterations);
 
