@@ -29,6 +29,7 @@ void validate_constraint(const cvjoint_constraint &c) {
     check_constraint_unit_interval(type, "twist_restitution", c.twist_restitution);
     check_constraint_non_negative(type, "twist_friction_torque", c.twist_friction_torque);
     check_constraint_non_negative(type, "twist_damping", c.twist_damping);
+    check_constraint_non_negative(type, "bend_friction_torque", c.bend_friction_torque);
     check_constraint_finite(type, "twist_rest_angle", c.twist_rest_angle);
     check_constraint_non_negative(type, "twist_stiffness", c.twist_stiffness);
     check_constraint_non_negative(type, "twist_bump_stop_angle", c.twist_bump_stop_angle);
@@ -77,6 +78,10 @@ cvjoint_constraint_solver make_constraint_solver(const registry &registry, const
     s.twist_impulse = s.locked ? c.twist_impulse : 0;
     s.friction_impulse = c.friction_impulse;
     s.spring_impulse = c.spring_impulse;
+    s.bend_friction_torque = c.bend_friction_torque;
+    // The bend plane has turned since the impulse was stored: keep only what still bends.
+    s.bend_friction_impulse =
+        c.bend_friction_torque > 0 ? project_plane(c.bend_friction_impulse, normalize(axis)) : vector3_zero;
     return s;
 }
 
@@ -115,6 +120,22 @@ void solve_twist_bounce(cvjoint_constraint_solver &s, const vector3 &axis, const
     }
 }
 
+// Friction torque across the twist axis, bounded as a vector so that it is the same in every
+// direction of bending.
+void solve_bend_friction(cvjoint_constraint_solver &s, const vector3 &twist_axis, solver_body &a,
+                         solver_body &b, const constraint_solve_context &ctx) noexcept {
+    auto k = a.inv_inertia + b.inv_inertia;
+    if (!(std::abs(determinant(k)) > scalar(1e-12))) return;
+    auto u = normalize(twist_axis);
+    auto max_impulse = s.bend_friction_torque * ctx.h;
+    auto bend_rate = project_plane(a.angvel - b.angvel, u);
+    auto new_impulse = project_plane(s.bend_friction_impulse - inverse(k) * bend_rate, u);
+    auto len_sqr = length_sqr(new_impulse);
+    if (len_sqr > max_impulse * max_impulse) new_impulse *= max_impulse / std::sqrt(len_sqr);
+    apply_angular_impulse(a, b, new_impulse - s.bend_friction_impulse);
+    s.bend_friction_impulse = new_impulse;
+}
+
 } // namespace
 
 void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noexcept {
@@ -124,7 +145,7 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
     auto cv = current_cv(s, a, b);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     apply_row_impulse(angular_jacobian(-cv.axis), a, b, s.twist_impulse);
-    apply_angular_impulse(a, b, cv.axis * (s.friction_impulse + s.spring_impulse));
+    apply_angular_impulse(a, b, cv.axis * (s.friction_impulse + s.spring_impulse) + s.bend_friction_impulse);
     warm_start_angular_limit(s.limit, cv.axis, a, b);
 }
 
@@ -135,6 +156,7 @@ void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
     auto cv = current_cv(s, a, b);
     auto row = angular_jacobian(cv.axis); // its rate is minus the twist rate
 
+    if (s.bend_friction_torque > 0) solve_bend_friction(s, cv.axis, a, b, ctx);
     if (s.locked) {
         solve_equality_row(angular_jacobian(-cv.axis), cv.twist - s.limit.min, s.twist_impulse, a, b, ctx);
     } else {
@@ -164,6 +186,7 @@ void store_impulses(const cvjoint_constraint_solver &s, cvjoint_constraint &c) n
     }
     c.friction_impulse = s.friction_impulse;
     c.spring_impulse = s.spring_impulse;
+    c.bend_friction_impulse = s.bend_friction_impulse;
 }
 
 } // namespace edyn

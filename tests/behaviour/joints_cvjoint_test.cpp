@@ -1,5 +1,5 @@
 // CV joint: rotation transmitted at constant velocity through a bend, twist limits, springs
-// and friction about the twist, free bending.
+// and friction about the twist, free bending unless bend friction slows it.
 #include "joints_support.hpp"
 
 using namespace edyn;
@@ -148,6 +148,35 @@ TEST_F(cvjoint, twist_friction_decelerates_at_torque_over_inertia) {
     auto expected = 4 - torque / ball_inertia * 2;
     EXPECT_NEAR(angular(ball).x, expected, 0.02)
         << "measured " << angular(ball).x << " rad/s, expected " << expected;
+}
+
+TEST_F(cvjoint, bend_friction_decelerates_at_torque_over_inertia_and_leaves_the_twist_alone) {
+    set_gravity(reg, vector3_zero);
+    auto anchor = edyn::test::make_anchor(reg, vector3_zero);
+    const scalar torque = scalar(0.2);
+    auto make_ball = [&](const vector3 &position, const vector3 &angvel) {
+        auto def = ball_def(position);
+        def.angvel = angvel;
+        auto ball = make_rigidbody(reg, def);
+        make_constraint<cvjoint_constraint>(reg, anchor, ball, [&](cvjoint_constraint &c) {
+            c.pivot[0] = position;
+            c.twist_min = -std::numeric_limits<scalar>::infinity();
+            c.twist_max = std::numeric_limits<scalar>::infinity();
+            c.bend_friction_torque = torque;
+        });
+        return ball;
+    };
+    // One ball bends about y (across the joint's x axis), the other twists about x.
+    auto bending = make_ball(vector3_zero, {0, 1, 0});
+    auto twisting = make_ball({3, 0, 0}, {2, 0, 0});
+    run_for(0.5);
+    auto expected = 1 - torque / ball_inertia * scalar(0.5);
+    EXPECT_NEAR(angular(bending).y, expected, 0.02)
+        << "bend rate " << angular(bending).y << " rad/s, expected " << expected;
+    EXPECT_NEAR(angular(twisting).x, 2, 1e-3) << "twist rate " << angular(twisting).x << " rad/s, expected 2";
+    // Friction stops the bend and does not reverse it.
+    run_for(1);
+    EXPECT_LT(length(angular(bending)), scalar(1e-3)) << "still bending at " << length(angular(bending));
 }
 
 TEST_F(cvjoint, twist_limit_bounces_with_restitution) {

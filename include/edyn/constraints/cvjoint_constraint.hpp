@@ -28,6 +28,9 @@ struct cvjoint_constraint {
     scalar twist_friction_torque{0};
     // Torque per twist rate, Nm/(rad/s).
     scalar twist_damping{0};
+    // Torque opposing bending (relative rotation about any axis across the twist axis), Nm: what
+    // lets a swinging joint, such as a rag doll's shoulder, come to rest.
+    scalar bend_friction_torque{0};
     // A spring of twist_stiffness (Nm/rad) pulls the twist towards twist_rest_angle.
     scalar twist_rest_angle{0};
     scalar twist_stiffness{0};
@@ -45,6 +48,7 @@ struct cvjoint_constraint {
     scalar bump_stop_impulse[2]{0, 0};
     scalar friction_impulse{0};
     scalar spring_impulse{0};
+    vector3 bend_friction_impulse{vector3_zero};
 
     // Sets both frames from each body's axis (object space), completing each into an
     // orthonormal basis.
@@ -72,11 +76,13 @@ struct cvjoint_constraint_solver {
     scalar twist{0};
     bool locked{true};
     scalar friction_torque, damping, rest_angle, stiffness;
+    scalar bend_friction_torque;
     angular_limit limit;
     vector3 impulse;
     scalar twist_impulse;
     scalar friction_impulse;
     scalar spring_impulse;
+    vector3 bend_friction_impulse;
 };
 
 cvjoint_constraint_solver make_constraint_solver(const registry &registry, const cvjoint_constraint &c,
