@@ -89,13 +89,17 @@ void solve_joint_constraints(constraint_solver_state &state, std::span<solver_bo
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
                              const constraint_solver_settings &settings) noexcept {
     if (settings.position_projection <= 0) return;
-    for_each_batch(state, [&](auto &batch) {
-        for (auto &s : batch.solvers) {
-            if constexpr (requires { project_positions(s, bodies, settings.position_projection); }) {
-                project_positions(s, bodies, settings.position_projection);
+    // Each joint's projection moves bodies that other joints share: in a chain one pass leaves
+    // the error spread along it, and a few passes gather it out.
+    for (unsigned pass = 0; pass < settings.position_projection_iterations; ++pass) {
+        for_each_batch(state, [&](auto &batch) {
+            for (auto &s : batch.solvers) {
+                if constexpr (requires { project_positions(s, bodies, settings.position_projection); }) {
+                    project_positions(s, bodies, settings.position_projection);
+                }
             }
-        }
-    });
+        });
+    }
 }
 
 void store_constraint_impulses(registry &registry, const constraint_solver_state &state) {

@@ -180,3 +180,43 @@ TEST_F(null_joint, connects_an_external_entity_to_a_body_island) {
     EXPECT_FALSE(reg.valid(edge));
     run_for(scalar(0.1));
 }
+
+TEST_F(point_joint, a_light_link_between_heavy_bodies_holds_when_they_hit_the_ground) {
+    // Heavy, light, heavy in a row joined end to end, like a torso, a neck and a head, falling
+    // 4 m and landing on one end: the light link is pulled from both sides at once.
+    rigidbody_def ground;
+    ground.kind = rigidbody_kind::rb_static;
+    ground.shape = plane_shape{vector3_y, 0};
+    make_rigidbody(reg, ground);
+    const scalar half = scalar(0.15);
+    const scalar masses[3]{16, scalar(1.6), 5};
+    const auto tilt = quaternion_axis_angle(vector3_z, to_radians(60));
+    entity bodies[3];
+    for (int i = 0; i < 3; ++i) {
+        auto def = edyn::test::box_def(
+            {half, scalar(0.08), scalar(0.08)},
+            vector3{0, 4, 0} + rotate(tilt, vector3{2 * half * scalar(i - 1), 0, 0}), masses[i]);
+        def.orientation = tilt;
+        bodies[i] = make_rigidbody(reg, def);
+    }
+    std::vector<entity> joints;
+    for (int i = 0; i < 2; ++i) {
+        joints.push_back(
+            make_constraint<point_constraint>(reg, bodies[i], bodies[i + 1], [&](point_constraint &c) {
+                c.pivot[0] = {half, 0, 0};
+                c.pivot[1] = {-half, 0, 0};
+            }));
+        exclude_collision(reg, bodies[i], bodies[i + 1]);
+    }
+    scalar worst = 0;
+    for (int step = 0; step < 90; ++step) {
+        step_simulation(reg);
+        for (auto e : joints) {
+            auto &c = reg.get<point_constraint>(e);
+            worst = std::max(worst, distance(edyn::test::world_pivot(reg, c.body[0], c.pivot[0]),
+                                             edyn::test::world_pivot(reg, c.body[1], c.pivot[1])));
+        }
+    }
+    EXPECT_LT(pos(bodies[0]).y, 1) << "did not land";
+    EXPECT_LT(worst, scalar(0.005)) << "largest pivot separation " << worst << " m";
+}

@@ -30,6 +30,10 @@ struct constraint_solver_settings {
     // Fraction of the joints' pivot separation removed by moving the bodies after each
     // sub-step's integration (see project_point); 0 leaves it to the soft correction alone.
     scalar position_projection{1};
+    // Passes of that projection over all the joints. Joined bodies of very different masses
+    // (a rag doll's head on its neck) stretch their joints by centimetres under impacts with
+    // one pass at 60 Hz, by millimetres with four.
+    unsigned position_projection_iterations{4};
 };
 
 // The constraints of one type as the solver sees them this step, and where they came from.
