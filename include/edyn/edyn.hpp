@@ -52,4 +52,6 @@
 #include "edyn/simulation/settings.hpp"
 #include "edyn/simulation/world.hpp"
 
+#include "edyn/util/ragdoll.hpp"
+
 #endif // EDYN_EDYN_HPP
