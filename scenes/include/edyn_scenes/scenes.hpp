@@ -64,6 +64,13 @@ struct bridge_scene {
 bridge_scene make_bridge(registry &registry, unsigned planks, scalar plank_length = scalar(0.5),
                          scalar height = 3, const vector3 &origin = vector3_zero);
 
+// `count` rag dolls of 1.8 m and 80 kg dropped onto the ground: standing, each leaning a little
+// its own way, `columns` by `columns` to a layer 2.8 m apart around `origin`, the lowest layer's
+// feet `height` above it and each layer 2.2 m above the one below, turned a quarter turn.
+std::vector<ragdoll_entities> make_ragdoll_pile(registry &registry, unsigned count, unsigned columns = 2,
+                                                scalar height = scalar(0.5),
+                                                const vector3 &origin = vector3_zero);
+
 } // namespace edyn::scenes
 
 #endif // EDYN_SCENES_SCENES_HPP
