@@ -1,4 +1,5 @@
-// edyn-demo: a pyramid, a pile of mixed shapes, bouncing balls, a chain and a bridge on a floor,
+// edyn-demo: a pyramid, a pile of mixed shapes, bouncing balls, a chain, a bridge and a pile of
+// rag dolls on a floor,
 // simulated for a while in fixed steps, with a progress line and a summary of what happened.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -16,6 +17,7 @@ struct options {
     unsigned pyramid_base{20};
     unsigned pile_count{512};
     unsigned balls{8};
+    unsigned ragdolls{10};
     double seconds{10};
     bool quiet{false};
 };
@@ -27,6 +29,33 @@ struct summary {
     std::size_t islands{0};
     std::size_t sleeping_islands{0};
 };
+
+// Largest distance between the two pivots of the rag dolls' hinges and CV joints, in metres:
+// how far their joints are pulled apart.
+template<typename Joint>
+double pivot_separation(const edyn::registry &registry, const Joint &c) {
+    edyn::vector3 pivots[2];
+    for (int i = 0; i < 2; ++i) {
+        pivots[i] = edyn::get_rigidbody_origin(registry, c.body[i]) +
+                    edyn::rotate(registry.get<edyn::orientation>(c.body[i]), c.pivot[i]);
+    }
+    return double(edyn::distance(pivots[0], pivots[1]));
+}
+
+double worst_joint_separation(const edyn::registry &registry,
+                              const std::vector<edyn::ragdoll_entities> &ragdolls) {
+    double worst = 0;
+    for (auto &ragdoll : ragdolls) {
+        for (auto e : ragdoll.constraints()) {
+            if (auto *hinge = registry.try_get<edyn::hinge_constraint>(e)) {
+                worst = std::max(worst, pivot_separation(registry, *hinge));
+            } else if (auto *cv = registry.try_get<edyn::cvjoint_constraint>(e)) {
+                worst = std::max(worst, pivot_separation(registry, *cv));
+            }
+        }
+    }
+    return worst;
+}
 
 summary summarize(edyn::registry &registry) {
     summary s;
@@ -48,12 +77,13 @@ summary summarize(edyn::registry &registry) {
 int main(int argc, char **argv) {
     options opt;
     CLI::App app{"edyn-demo: rigid bodies falling, stacking, bouncing and sleeping"};
-    app.add_option("--scene", opt.scene, "all, pyramid, pile, balls, chain or bridge")
-        ->check(CLI::IsMember({"all", "pyramid", "pile", "balls", "chain", "bridge"}));
+    app.add_option("--scene", opt.scene, "all, pyramid, pile, balls, chain, bridge or ragdolls")
+        ->check(CLI::IsMember({"all", "pyramid", "pile", "balls", "chain", "bridge", "ragdolls"}));
     app.add_option("--pyramid-base", opt.pyramid_base, "boxes in the pyramid's bottom row")
         ->check(CLI::Range(1u, 200u));
     app.add_option("--pile-count", opt.pile_count, "bodies in the pile")->check(CLI::Range(1u, 100000u));
     app.add_option("--balls", opt.balls, "bouncing balls")->check(CLI::Range(1u, 1000u));
+    app.add_option("--ragdolls", opt.ragdolls, "rag dolls in their pile")->check(CLI::Range(1u, 1000u));
     app.add_option("--seconds", opt.seconds, "simulated time")->check(CLI::Range(0.0, 3600.0));
     app.add_flag("--quiet", opt.quiet, "no progress line");
     CLI11_PARSE(app, argc, argv);
@@ -90,11 +120,17 @@ int main(int argc, char **argv) {
         box.position = {34, 5, -30};
         edyn::make_rigidbody(registry, box);
     }
+    std::vector<edyn::ragdoll_entities> ragdolls;
+    if (all || opt.scene == "ragdolls") {
+        // Twenty bodies each; beyond the bridge, on the side away from the pile.
+        ragdolls = edyn::scenes::make_ragdoll_pile(registry, opt.ragdolls, 2, edyn::scalar(0.5), {30, 0, 30});
+    }
 
     auto dt = double(edyn::get_fixed_dt(registry));
     auto steps = static_cast<std::size_t>(opt.seconds / dt + 0.5);
     std::vector<double> step_ms;
     step_ms.reserve(steps);
+    double worst_separation = 0;
     std::printf("edyn-demo: %zu bodies, %zu steps of %.4f s\n",
                 registry.storage<edyn::rigidbody_tag>().size(), steps, dt);
 
@@ -103,6 +139,9 @@ int main(int argc, char **argv) {
         edyn::step_simulation(registry);
         auto end = std::chrono::steady_clock::now();
         step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        if (!ragdolls.empty()) {
+            worst_separation = std::max(worst_separation, worst_joint_separation(registry, ragdolls));
+        }
         if (!opt.quiet && (i % 30 == 29 || i + 1 == steps)) {
             auto s = summarize(registry);
             std::printf("\r  t = %6.2f s  contacts %6zu  islands %5zu (%5zu asleep)  last step %7.3f ms",
@@ -126,6 +165,10 @@ int main(int argc, char **argv) {
         auto moved = edyn::length(registry.get<edyn::position>(top) - top_start);
         std::printf("  pyramid           %s (top box moved %.2f cm in %.1f s)\n",
                     moved < 0.01 ? "stood" : "did not stand", moved * 100, opt.seconds);
+    }
+    if (!ragdolls.empty()) {
+        std::printf("  rag dolls         %zu, joints %s (pivots at most %.2f mm apart)\n", ragdolls.size(),
+                    worst_separation < 0.01 ? "held" : "were pulled apart", worst_separation * 1000);
     }
     edyn::detach(registry);
     return 0;
