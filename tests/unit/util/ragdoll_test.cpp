@@ -128,6 +128,25 @@ TEST_F(ragdoll, shoulders_and_arm_twists_are_amorphous_and_joined_as_described) 
     EXPECT_TRUE(joined(cone_constraint{}, e.ankle_cone_right, e.leg_lower_right, e.foot_right));
 }
 
+TEST_F(ragdoll, every_part_gets_the_material_filter_and_sleep_setting) {
+    ragdoll_simple_def simple;
+    simple.friction = scalar(0.9);
+    simple.restitution = scalar(0.25);
+    simple.collision_group = 4;
+    simple.collision_mask = ~std::uint64_t(4);
+    simple.sleeping_disabled = true;
+    auto e = make_ragdoll(reg, simple);
+    for (auto body : e.bodies()) {
+        EXPECT_TRUE(reg.all_of<sleeping_disabled_tag>(body));
+        // Amorphous parts take no part in collisions.
+        if (!reg.all_of<shape_index>(body)) continue;
+        EXPECT_EQ(reg.get<material>(body).friction, simple.friction);
+        EXPECT_EQ(reg.get<material>(body).restitution, simple.restitution);
+        EXPECT_EQ(reg.get<collision_filter>(body).group, 4u);
+        EXPECT_EQ(reg.get<collision_filter>(body).mask, ~std::uint64_t(4));
+    }
+}
+
 TEST_F(ragdoll, stands_at_its_position_with_its_joints_closed) {
     ragdoll_simple_def simple;
     simple.height = scalar(1.7);
