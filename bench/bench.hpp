@@ -13,7 +13,8 @@
 
 namespace edyn_bench {
 
-// One scene at one size. `size` is the pyramid's base width or the pile's body count.
+// One scene at one size. `size` is the pyramid's base width, the pile's body count or the
+// number of rag dolls.
 struct scene_spec {
     std::string scene;
     unsigned size{0};
@@ -36,7 +37,9 @@ struct run_result {
     double p95_ms{0};
     double peak_rss_mb{0};
     std::size_t contacts{0}; // contact points at the end
-    // Pyramid: top box displacement (m) at the end; pile: deepest penetration (m) at the end.
+    // Pyramid: top box displacement (m) at the end; pile: deepest penetration (m) at the end;
+    // ragdolls: largest distance between a joint's two pivots (m) after any step, warm-up
+    // included (the rag dolls land during it).
     double stability{0};
     std::string stability_metric;
     bool ok{false};

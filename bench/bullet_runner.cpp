@@ -4,6 +4,7 @@
 // btDiscreteDynamicsWorld, btDbvtBroadphase, btSequentialImpulseConstraintSolver with 10
 // iterations, one 1/60 s step per stepSimulation call (no sub-steps).
 #include "bench.hpp"
+#include "bullet_joints.hpp"
 #include <algorithm>
 #include <btBulletDynamicsCommon.h>
 #include <chrono>
@@ -20,7 +21,9 @@ namespace {
 
 // A rigid body as both engines describe it.
 struct body_desc {
+    edyn::entity entity{edyn::null};
     edyn::shapes_variant_t shape;
+    bool amorphous{false}; // no shape: a rag doll's shoulder or arm twist
     bool is_static{false};
     double mass{0};
     edyn::vector3 inertia{}; // principal moments, object axes
@@ -39,7 +42,12 @@ std::vector<body_desc> describe_bodies(edyn::registry &registry, edyn::entity tr
             throw std::invalid_argument("edyn-bench: bodies with an offset centre of mass are not supported");
         }
         body_desc desc;
-        desc.shape = edyn::visit_shape(registry, e, [](const auto &s) { return edyn::shapes_variant_t{s}; });
+        desc.entity = e;
+        desc.amorphous = !registry.all_of<edyn::shape_index>(e);
+        if (!desc.amorphous) {
+            desc.shape =
+                edyn::visit_shape(registry, e, [](const auto &s) { return edyn::shapes_variant_t{s}; });
+        }
         desc.is_static = registry.all_of<edyn::static_tag>(e);
         if (!desc.is_static) {
             desc.mass = double(registry.get<edyn::mass>(e).s);
@@ -121,7 +129,8 @@ public:
     bullet_world &operator=(const bullet_world &) = delete;
 
     btRigidBody *add(const body_desc &desc) {
-        auto &shape = shapes.emplace_back(make_bt_shape(desc.shape));
+        auto &shape = shapes.emplace_back(desc.amorphous ? std::make_unique<btEmptyShape>()
+                                                         : make_bt_shape(desc.shape));
         btTransform transform;
         transform.setOrigin(to_bt(desc.position));
         transform.setRotation(btQuaternion(btScalar(desc.orientation.x), btScalar(desc.orientation.y),
@@ -137,11 +146,18 @@ public:
         info.m_restitution = btScalar(desc.restitution);
         auto &body = bodies.emplace_back(std::make_unique<btRigidBody>(info));
         if (!sleeping && !desc.is_static) body->setActivationState(DISABLE_DEACTIVATION);
-        world.addRigidBody(body.get());
+        if (desc.amorphous) {
+            // Nothing to collide with: no filter group or mask keeps it out of every pair.
+            world.addRigidBody(body.get(), 0, 0);
+        } else {
+            world.addRigidBody(body.get());
+        }
         return body.get();
     }
 
     void step(double dt) { world.stepSimulation(btScalar(dt), 0); }
+
+    btDiscreteDynamicsWorld &dynamics_world() noexcept { return world; }
 
     // Contact points in every manifold and the deepest penetration among them.
     std::pair<std::size_t, double> contacts() {
@@ -178,6 +194,7 @@ run_result run_bullet(const scene_spec &spec) {
     result.stability_metric = stability_metric(spec.scene);
 
     std::vector<body_desc> bodies;
+    scene_joints joints;
     std::size_t tracked_index = 0;
     edyn::vector3 gravity{};
     double dt = 0;
@@ -186,6 +203,10 @@ run_result run_bullet(const scene_spec &spec) {
         edyn::attach(registry);
         auto tracked = build_scene(registry, spec);
         bodies = describe_bodies(registry, tracked, tracked_index);
+        std::vector<edyn::entity> entities;
+        for (const auto &desc : bodies)
+            entities.push_back(desc.entity);
+        joints = describe_joints(registry, entities);
         gravity = edyn::get_gravity(registry);
         dt = double(edyn::get_fixed_dt(registry));
         edyn::detach(registry);
@@ -197,11 +218,16 @@ run_result run_bullet(const scene_spec &spec) {
 
     bullet_world world(gravity, spec.sleeping);
     btRigidBody *tracked = nullptr;
+    std::vector<btRigidBody *> bt_bodies;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         auto *body = world.add(bodies[i]);
+        bt_bodies.push_back(body);
         if (i == tracked_index) tracked = body;
         if (!bodies[i].is_static) ++result.bodies;
     }
+    bullet_joints bt_joints(world.dynamics_world(), bt_bodies, joints, dt);
+    joints = {};
+    double worst_joint = 0;
     btVector3 tracked_start = tracked ? tracked->getWorldTransform().getOrigin() : btVector3(0, 0, 0);
     bodies.clear();
     bodies.shrink_to_fit();
@@ -213,6 +239,7 @@ run_result run_bullet(const scene_spec &spec) {
         world.step(dt);
         auto end = std::chrono::steady_clock::now();
         step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+        if (!bt_joints.empty()) worst_joint = std::max(worst_joint, bt_joints.worst_error());
     }
 
     auto stats = summarize_steps(step_ms, spec.warmup);
@@ -224,6 +251,8 @@ run_result run_bullet(const scene_spec &spec) {
     result.contacts = points;
     if (tracked) {
         result.stability = double((tracked->getWorldTransform().getOrigin() - tracked_start).length());
+    } else if (!bt_joints.empty()) {
+        result.stability = worst_joint;
     } else {
         result.stability = deepest;
     }

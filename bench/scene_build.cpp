@@ -1,15 +1,17 @@
 #include "bench.hpp"
 #include <algorithm>
+#include <cmath>
 #include <edyn_scenes/scenes.hpp>
 #include <stdexcept>
 
 namespace edyn_bench {
 
-std::vector<std::string> available_scenes() { return {"pyramid", "pile"}; }
+std::vector<std::string> available_scenes() { return {"pyramid", "pile", "ragdolls"}; }
 
 std::string stability_metric(const std::string &scene) {
     if (scene == "pyramid") return "top_box_displacement_m";
     if (scene == "pile") return "max_penetration_m";
+    if (scene == "ragdolls") return "max_joint_error_m";
     throw std::invalid_argument("stability_metric: unknown scene '" + scene + "'");
 }
 
@@ -25,6 +27,12 @@ edyn::entity build_bodies(edyn::registry &registry, const scene_spec &spec) {
     if (spec.scene == "pile") {
         // The pile: boxes, spheres, capsules and cylinders in equal share, 16 wide.
         edyn::scenes::make_pile(registry, spec.size, 16, 2, edyn::scenes::pile_shapes::primitives, 1);
+        return edyn::null;
+    }
+    if (spec.scene == "ragdolls") {
+        // The 8 by 8 rag dolls in one layer; fewer make a smaller square.
+        auto columns = std::min(8u, static_cast<unsigned>(std::ceil(std::sqrt(double(spec.size)))));
+        edyn::scenes::make_ragdoll_pile(registry, spec.size, columns);
         return edyn::null;
     }
     throw std::invalid_argument("build_scene: unknown scene '" + spec.scene + "'");
