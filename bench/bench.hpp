@@ -14,7 +14,7 @@
 namespace edyn_bench {
 
 // One scene at one size. `size` is the pyramid's base width, the pile's body count or the
-// number of rag dolls.
+// chain's number of links or the number of rag dolls.
 struct scene_spec {
     std::string scene;
     unsigned size{0};
@@ -38,8 +38,8 @@ struct run_result {
     double peak_rss_mb{0};
     std::size_t contacts{0}; // contact points at the end
     // Pyramid: top box displacement (m) at the end; pile: deepest penetration (m) at the end;
-    // ragdolls: largest distance between a joint's two pivots (m) after any step, warm-up
-    // included (the rag dolls land during it).
+    // chain and ragdolls: largest distance between a joint's two pivots (m) after any step,
+    // warm-up included (the rag dolls land during it).
     double stability{0};
     std::string stability_metric;
     bool ok{false};
@@ -52,6 +52,14 @@ edyn::entity build_scene(edyn::registry &registry, const scene_spec &spec);
 
 // Name of the stability figure of a scene ("top_box_displacement_m", ...).
 std::string stability_metric(const std::string &scene);
+
+// Whether the scene's stability figure is the worst joint error over the run, which the runners
+// then measure after every step (outside the timed part).
+bool tracks_joint_error(const std::string &scene);
+
+// The largest distance between the two pivots of any point constraint, hinge or CV joint in the
+// registry, in m.
+double max_joint_error(const edyn::registry &registry);
 
 // Scenes edyn-bench knows, in the order `--scene all` runs them.
 std::vector<std::string> available_scenes();

@@ -10,16 +10,6 @@ namespace edyn_bench {
 
 namespace {
 
-template<typename Joint>
-double pivot_distance(const edyn::registry &registry, const Joint &c) {
-    edyn::vector3 pivots[2];
-    for (int i = 0; i < 2; ++i) {
-        pivots[i] = edyn::get_rigidbody_origin(registry, c.body[i]) +
-                    edyn::rotate(registry.get<edyn::orientation>(c.body[i]), c.pivot[i]);
-    }
-    return double(edyn::distance(pivots[0], pivots[1]));
-}
-
 btVector3 to_bt(const edyn::vector3 &v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
 
 btMatrix3x3 to_bt(const edyn::matrix3x3 &m) {
@@ -91,17 +81,6 @@ joint_desc describe_swing(const edyn::registry &registry, const index_map &indic
 }
 
 } // namespace
-
-double worst_joint_error(const edyn::registry &registry) {
-    double worst = 0;
-    for (auto e : registry.view<edyn::hinge_constraint>()) {
-        worst = std::max(worst, pivot_distance(registry, registry.get<edyn::hinge_constraint>(e)));
-    }
-    for (auto e : registry.view<edyn::cvjoint_constraint>()) {
-        worst = std::max(worst, pivot_distance(registry, registry.get<edyn::cvjoint_constraint>(e)));
-    }
-    return worst;
-}
 
 scene_joints describe_joints(const edyn::registry &registry, const std::vector<edyn::entity> &bodies) {
     index_map indices;

@@ -16,9 +16,6 @@ class btTypedConstraint;
 
 namespace edyn_bench {
 
-// Largest world distance between the two pivots of any hinge or CV joint in the registry (m).
-double worst_joint_error(const edyn::registry &registry);
-
 // One Bullet joint. Bodies are indices into the entity list given to describe_joints; pivots
 // and bases are in each body's object space, whose origin is its centre of mass (describe_bodies
 // refuses offset centres of mass). Bases are Bullet's constraint frames: the hinge turns about
@@ -57,7 +54,7 @@ public:
     bullet_joints &operator=(const bullet_joints &) = delete;
 
     bool empty() const noexcept { return constraints.empty(); }
-    // As worst_joint_error, for Bullet's joints.
+    // As max_joint_error (bench.hpp), for these Bullet joints.
     double worst_error() const;
 
 private:

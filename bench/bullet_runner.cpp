@@ -2,7 +2,9 @@
 // edyn runs (scenes/), so both engines get the same bodies at the same places, with the same
 // masses, inertias and materials. Bullet then runs as its users usually set it up for games:
 // btDiscreteDynamicsWorld, btDbvtBroadphase, btSequentialImpulseConstraintSolver with 10
-// iterations, one 1/60 s step per stepSimulation call (no sub-steps).
+// iterations, one 1/60 s step per stepSimulation call (no sub-steps). Point constraints become
+// btPoint2PointConstraint with the same pivots; hinges, CV joints and cones are converted in
+// bullet_joints.cpp, which also excludes from collision the pairs edyn excludes.
 #include "bench.hpp"
 #include "bullet_joints.hpp"
 #include <algorithm>
@@ -12,7 +14,9 @@
 #include <edyn/dynamics/visit_shape.hpp>
 #include <malloc.h>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <variant>
 
 namespace edyn_bench {
@@ -22,8 +26,9 @@ namespace {
 // A rigid body as both engines describe it.
 struct body_desc {
     edyn::entity entity{edyn::null};
-    edyn::shapes_variant_t shape;
-    bool amorphous{false}; // no shape: a rag doll's shoulder or arm twist
+    // None for a static anchor that only holds joints, or a rag doll's shoulder or arm twist
+    // (they touch nothing).
+    std::optional<edyn::shapes_variant_t> shape;
     bool is_static{false};
     double mass{0};
     edyn::vector3 inertia{}; // principal moments, object axes
@@ -33,18 +38,73 @@ struct body_desc {
     edyn::quaternion orientation{edyn::quaternion_identity};
 };
 
-std::vector<body_desc> describe_bodies(edyn::registry &registry, edyn::entity tracked,
-                                       std::size_t &tracked_index) {
+// A ball joint between bodies[body[0]] and bodies[body[1]], pivots relative to each origin.
+struct joint_desc {
+    std::size_t body[2]{0, 0};
+    edyn::vector3 pivot[2]{};
+};
+
+struct scene_desc {
     std::vector<body_desc> bodies;
-    tracked_index = static_cast<std::size_t>(-1);
-    for (auto e : registry.view<edyn::rigidbody_tag>()) {
+    std::vector<joint_desc> joints;
+    scene_joints other_joints; // hinges, CV joints and cones, and the collision exclusions
+    std::size_t tracked_index{static_cast<std::size_t>(-1)};
+};
+
+// Views list the newest entity first. Bullet solves its constraints in the order they were added
+// and Gauss-Seidel converges differently depending on that order, so Bullet gets the bodies and
+// joints in the order the scene builders made them, as a program building the scene directly in
+// Bullet would add them (the ground first, a chain from its anchor down).
+template<typename View>
+std::vector<edyn::entity> in_creation_order(const View &view) {
+    std::vector<edyn::entity> entities(view.begin(), view.end());
+    std::reverse(entities.begin(), entities.end());
+    return entities;
+}
+
+template<typename... T>
+std::size_t count_constraints(const edyn::registry &registry, edyn::constraint_type_list<T...>) {
+    return (registry.view<T>().size() + ...);
+}
+
+void describe_constraints(edyn::registry &registry,
+                          const std::unordered_map<edyn::entity, std::size_t> &index, scene_desc &scene) {
+    auto points = registry.view<edyn::point_constraint>();
+    auto converted = points.size() + registry.view<edyn::hinge_constraint>().size() +
+                     registry.view<edyn::cvjoint_constraint>().size() +
+                     registry.view<edyn::cone_constraint>().size();
+    if (count_constraints(registry, edyn::constraint_types{}) != converted) {
+        throw std::invalid_argument(
+            "edyn-bench: only point, hinge, CV joint and cone constraints are supported");
+    }
+    for (auto e : in_creation_order(points)) {
+        const auto &c = points.get<edyn::point_constraint>(e);
+        if (c.friction_torque != 0) {
+            throw std::invalid_argument("edyn-bench: point constraints with friction are not supported");
+        }
+        joint_desc joint;
+        for (int i = 0; i < 2; ++i) {
+            joint.body[i] = index.at(c.body[i]);
+            joint.pivot[i] = c.pivot[i];
+        }
+        scene.joints.push_back(joint);
+    }
+    std::vector<edyn::entity> entities;
+    for (const auto &body : scene.bodies)
+        entities.push_back(body.entity);
+    scene.other_joints = describe_joints(registry, entities);
+}
+
+scene_desc describe_scene(edyn::registry &registry, edyn::entity tracked) {
+    scene_desc scene;
+    std::unordered_map<edyn::entity, std::size_t> index;
+    for (auto e : in_creation_order(registry.view<edyn::rigidbody_tag>())) {
         if (registry.all_of<edyn::center_of_mass>(e)) {
             throw std::invalid_argument("edyn-bench: bodies with an offset centre of mass are not supported");
         }
         body_desc desc;
         desc.entity = e;
-        desc.amorphous = !registry.all_of<edyn::shape_index>(e);
-        if (!desc.amorphous) {
+        if (registry.all_of<edyn::shape_index>(e)) {
             desc.shape =
                 edyn::visit_shape(registry, e, [](const auto &s) { return edyn::shapes_variant_t{s}; });
         }
@@ -64,10 +124,12 @@ std::vector<body_desc> describe_bodies(edyn::registry &registry, edyn::entity tr
         }
         desc.position = registry.get<edyn::position>(e);
         desc.orientation = registry.get<edyn::orientation>(e);
-        if (e == tracked) tracked_index = bodies.size();
-        bodies.push_back(std::move(desc));
+        if (e == tracked) scene.tracked_index = scene.bodies.size();
+        index.emplace(e, scene.bodies.size());
+        scene.bodies.push_back(std::move(desc));
     }
-    return bodies;
+    describe_constraints(registry, index, scene);
+    return scene;
 }
 
 btVector3 to_bt(const edyn::vector3 &v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
@@ -121,16 +183,22 @@ public:
     }
 
     ~bullet_world() {
-        for (auto &body : bodies)
-            world.removeRigidBody(body.get());
+        for (auto &joint : joints)
+            world.removeConstraint(joint.get());
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            if (in_world[i]) world.removeRigidBody(bodies[i].get());
+        }
     }
 
     bullet_world(const bullet_world &) = delete;
     bullet_world &operator=(const bullet_world &) = delete;
 
     btRigidBody *add(const body_desc &desc) {
-        auto &shape = shapes.emplace_back(desc.amorphous ? std::make_unique<btEmptyShape>()
-                                                         : make_bt_shape(desc.shape));
+        // A shapeless anchor stays out of the world: the joints read its transform, and the
+        // solver treats every body of zero mass as fixed. A shapeless moving body is in the
+        // world with no collision group or mask, which keeps it out of every pair.
+        auto &shape =
+            shapes.emplace_back(desc.shape ? make_bt_shape(*desc.shape) : std::make_unique<btEmptyShape>());
         btTransform transform;
         transform.setOrigin(to_bt(desc.position));
         transform.setRotation(btQuaternion(btScalar(desc.orientation.x), btScalar(desc.orientation.y),
@@ -146,13 +214,31 @@ public:
         info.m_restitution = btScalar(desc.restitution);
         auto &body = bodies.emplace_back(std::make_unique<btRigidBody>(info));
         if (!sleeping && !desc.is_static) body->setActivationState(DISABLE_DEACTIVATION);
-        if (desc.amorphous) {
-            // Nothing to collide with: no filter group or mask keeps it out of every pair.
-            world.addRigidBody(body.get(), 0, 0);
-        } else {
+        in_world.push_back(desc.shape.has_value() || !desc.is_static);
+        if (desc.shape) {
             world.addRigidBody(body.get());
+        } else if (!desc.is_static) {
+            world.addRigidBody(body.get(), 0, 0);
         }
         return body.get();
+    }
+
+    void add(const joint_desc &desc) {
+        auto &a = *bodies.at(desc.body[0]), &b = *bodies.at(desc.body[1]);
+        auto &joint = joints.emplace_back(
+            std::make_unique<btPoint2PointConstraint>(a, b, to_bt(desc.pivot[0]), to_bt(desc.pivot[1])));
+        world.addConstraint(joint.get());
+    }
+
+    // The largest distance between the two pivots of any joint, in m.
+    double max_joint_error() const {
+        double worst = 0;
+        for (const auto &joint : joints) {
+            auto a = joint->getRigidBodyA().getCenterOfMassTransform() * joint->getPivotInA();
+            auto b = joint->getRigidBodyB().getCenterOfMassTransform() * joint->getPivotInB();
+            worst = std::max(worst, double((a - b).length()));
+        }
+        return worst;
     }
 
     void step(double dt) { world.stepSimulation(btScalar(dt), 0); }
@@ -183,6 +269,8 @@ private:
     btDiscreteDynamicsWorld world;
     std::vector<std::unique_ptr<btCollisionShape>> shapes;
     std::vector<std::unique_ptr<btRigidBody>> bodies;
+    std::vector<bool> in_world;
+    std::vector<std::unique_ptr<btPoint2PointConstraint>> joints;
 };
 
 } // namespace
@@ -193,20 +281,14 @@ run_result run_bullet(const scene_spec &spec) {
     result.engine = "bullet";
     result.stability_metric = stability_metric(spec.scene);
 
-    std::vector<body_desc> bodies;
-    scene_joints joints;
-    std::size_t tracked_index = 0;
+    scene_desc scene;
     edyn::vector3 gravity{};
     double dt = 0;
     {
         edyn::registry registry;
         edyn::attach(registry);
         auto tracked = build_scene(registry, spec);
-        bodies = describe_bodies(registry, tracked, tracked_index);
-        std::vector<edyn::entity> entities;
-        for (const auto &desc : bodies)
-            entities.push_back(desc.entity);
-        joints = describe_joints(registry, entities);
+        scene = describe_scene(registry, tracked);
         gravity = edyn::get_gravity(registry);
         dt = double(edyn::get_fixed_dt(registry));
         edyn::detach(registry);
@@ -219,19 +301,21 @@ run_result run_bullet(const scene_spec &spec) {
     bullet_world world(gravity, spec.sleeping);
     btRigidBody *tracked = nullptr;
     std::vector<btRigidBody *> bt_bodies;
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        auto *body = world.add(bodies[i]);
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        auto *body = world.add(scene.bodies[i]);
         bt_bodies.push_back(body);
-        if (i == tracked_index) tracked = body;
-        if (!bodies[i].is_static) ++result.bodies;
+        if (i == scene.tracked_index) tracked = body;
+        if (!scene.bodies[i].is_static) ++result.bodies;
     }
-    bullet_joints bt_joints(world.dynamics_world(), bt_bodies, joints, dt);
-    joints = {};
-    double worst_joint = 0;
+    for (const auto &joint : scene.joints)
+        world.add(joint);
+    bullet_joints other_joints(world.dynamics_world(), bt_bodies, scene.other_joints, dt);
     btVector3 tracked_start = tracked ? tracked->getWorldTransform().getOrigin() : btVector3(0, 0, 0);
-    bodies.clear();
-    bodies.shrink_to_fit();
+    scene = {};
 
+    auto joints = tracks_joint_error(spec.scene);
+    auto joint_error = [&] { return std::max(world.max_joint_error(), other_joints.worst_error()); };
+    double worst_joint_error = joints ? joint_error() : 0;
     std::vector<double> step_ms;
     step_ms.reserve(spec.steps);
     for (unsigned i = 0; i < spec.steps; ++i) {
@@ -239,7 +323,7 @@ run_result run_bullet(const scene_spec &spec) {
         world.step(dt);
         auto end = std::chrono::steady_clock::now();
         step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
-        if (!bt_joints.empty()) worst_joint = std::max(worst_joint, bt_joints.worst_error());
+        if (joints) worst_joint_error = std::max(worst_joint_error, joint_error());
     }
 
     auto stats = summarize_steps(step_ms, spec.warmup);
@@ -249,10 +333,10 @@ run_result run_bullet(const scene_spec &spec) {
     result.p95_ms = stats.p95_ms;
     auto [points, deepest] = world.contacts();
     result.contacts = points;
-    if (tracked) {
+    if (joints) {
+        result.stability = worst_joint_error;
+    } else if (tracked) {
         result.stability = double((tracked->getWorldTransform().getOrigin() - tracked_start).length());
-    } else if (!bt_joints.empty()) {
-        result.stability = worst_joint;
     } else {
         result.stability = deepest;
     }

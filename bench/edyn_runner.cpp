@@ -1,7 +1,6 @@
 // The edyn side of edyn-bench: the scene from the shared builders, stepped with
 // edyn::step_simulation one fixed step at a time.
 #include "bench.hpp"
-#include "bullet_joints.hpp"
 #include <algorithm>
 #include <chrono>
 
@@ -40,19 +39,16 @@ run_result run_edyn(const scene_spec &spec) {
     edyn::vector3 tracked_start{};
     if (tracked != edyn::null) tracked_start = registry.get<edyn::position>(tracked);
 
+    auto joints = tracks_joint_error(spec.scene);
+    double worst_joint_error = joints ? max_joint_error(registry) : 0;
     std::vector<double> step_ms;
     step_ms.reserve(spec.steps);
-    // Read after every step, outside the timed span: a joint pulled apart on landing may close
-    // again before the end.
-    bool jointed = !registry.view<edyn::hinge_constraint>().empty() ||
-                   !registry.view<edyn::cvjoint_constraint>().empty();
-    double worst_joint = 0;
     for (unsigned i = 0; i < spec.steps; ++i) {
         auto start = std::chrono::steady_clock::now();
         edyn::step_simulation(registry);
         auto end = std::chrono::steady_clock::now();
         step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
-        if (jointed) worst_joint = std::max(worst_joint, worst_joint_error(registry));
+        if (joints) worst_joint_error = std::max(worst_joint_error, max_joint_error(registry));
     }
 
     auto stats = summarize_steps(step_ms, spec.warmup);
@@ -62,10 +58,10 @@ run_result run_edyn(const scene_spec &spec) {
     result.p95_ms = stats.p95_ms;
     auto contacts = count_contacts(registry);
     result.contacts = contacts.points;
-    if (tracked != edyn::null) {
+    if (joints) {
+        result.stability = worst_joint_error;
+    } else if (tracked != edyn::null) {
         result.stability = double(edyn::length(registry.get<edyn::position>(tracked) - tracked_start));
-    } else if (jointed) {
-        result.stability = worst_joint;
     } else {
         result.stability = contacts.deepest_penetration;
     }

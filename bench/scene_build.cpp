@@ -6,18 +6,58 @@
 
 namespace edyn_bench {
 
-std::vector<std::string> available_scenes() { return {"pyramid", "pile", "ragdolls"}; }
+std::vector<std::string> available_scenes() { return {"pyramid", "pile", "chain", "ragdolls"}; }
 
 std::string stability_metric(const std::string &scene) {
     if (scene == "pyramid") return "top_box_displacement_m";
     if (scene == "pile") return "max_penetration_m";
-    if (scene == "ragdolls") return "max_joint_error_m";
+    if (scene == "chain" || scene == "ragdolls") return "max_joint_error_m";
     throw std::invalid_argument("stability_metric: unknown scene '" + scene + "'");
+}
+
+bool tracks_joint_error(const std::string &scene) { return scene == "chain" || scene == "ragdolls"; }
+
+namespace {
+
+template<typename Joint>
+double pivot_distance(const edyn::registry &registry, const Joint &c) {
+    edyn::vector3 pivots[2];
+    for (int i = 0; i < 2; ++i) {
+        pivots[i] = edyn::to_world_space(c.pivot[i], edyn::get_rigidbody_origin(registry, c.body[i]),
+                                         registry.get<edyn::orientation>(c.body[i]));
+    }
+    return double(edyn::distance(pivots[0], pivots[1]));
+}
+
+template<typename... Joint>
+double max_pivot_distance(const edyn::registry &registry) {
+    double worst = 0;
+    auto visit = [&](auto *tag) {
+        using joint = std::remove_pointer_t<decltype(tag)>;
+        registry.view<joint>().each(
+            [&](const joint &c) { worst = std::max(worst, pivot_distance(registry, c)); });
+    };
+    (visit(static_cast<Joint *>(nullptr)), ...);
+    return worst;
+}
+
+} // namespace
+
+double max_joint_error(const edyn::registry &registry) {
+    return max_pivot_distance<edyn::point_constraint, edyn::hinge_constraint, edyn::cvjoint_constraint>(
+        registry);
 }
 
 namespace {
 
 edyn::entity build_bodies(edyn::registry &registry, const scene_spec &spec) {
+    if (spec.scene == "chain") {
+        // A joint test only: the chain swings down from horizontal in empty space, with no
+        // ground to land on, so that the solver's joint error is the whole of its stability
+        // figure. The anchor sits at the origin, where floats are finest along the chain.
+        edyn::scenes::make_chain(registry, spec.size, edyn::scalar(0.5), edyn::vector3_zero);
+        return edyn::null;
+    }
     // Both engines get the ground's defaults from the scene builder: friction 0.6, no bounce.
     edyn::scenes::make_ground(registry);
     if (spec.scene == "pyramid") {
