@@ -1,5 +1,7 @@
 // Peak memory, the JSON records and the markdown table of edyn-bench.
 #include "bench.hpp"
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -65,6 +67,60 @@ std::string stability_text(const run_result &r) {
     return r.stability_metric + " " + number(r.stability);
 }
 
+// Exponent k of t ~ n^k between two measurements.
+double growth_exponent(double n1, double t1, double n2, double t2) {
+    return std::log(t2 / t1) / std::log(n2 / n1);
+}
+
+// Between consecutive sizes of each scene and engine, how fast the median time grew with the
+// body count next to how fast n log n grows over the same sizes: the issue asks that the piles
+// grow no faster than n log n. Only runs timed over the same steps are compared.
+std::string growth_table(const std::vector<run_result> &results) {
+    std::ostringstream out;
+    bool any = false;
+    std::vector<std::pair<std::string, std::string>> series;
+    for (const auto &r : results) {
+        std::pair key{r.scene, r.engine};
+        if (r.ok && std::find(series.begin(), series.end(), key) == series.end()) series.push_back(key);
+    }
+    for (const auto &[scene, engine] : series) {
+        std::vector<const run_result *> runs;
+        for (const auto &r : results) {
+            if (r.ok && r.scene == scene && r.engine == engine && r.bodies > 1 && r.median_ms > 0)
+                runs.push_back(&r);
+        }
+        std::sort(runs.begin(), runs.end(), [](auto *a, auto *b) { return a->bodies < b->bodies; });
+        runs.erase(
+            std::unique(runs.begin(), runs.end(), [](auto *a, auto *b) { return a->bodies == b->bodies; }),
+            runs.end());
+        // Each step between sizes, then the whole range when there are more than two.
+        std::vector<std::pair<const run_result *, const run_result *>> pairs;
+        for (std::size_t i = 1; i < runs.size(); ++i)
+            pairs.emplace_back(runs[i - 1], runs[i]);
+        if (runs.size() > 2) pairs.emplace_back(runs.front(), runs.back());
+        for (auto [first, second] : pairs) {
+            const auto &a = *first, &b = *second;
+            if (!any) {
+                out << "\n| scene | engine | bodies | median ms/step | "
+                       "growth exponent | n log n's exponent |\n"
+                    << "| --- | --- | --- | --- | ---: | ---: |\n";
+                any = true;
+            }
+            double n1 = a.bodies, n2 = b.bodies;
+            out << "| " << scene << " | " << engine << " | " << a.bodies << " → " << b.bodies << " | "
+                << number(a.median_ms, "%.3f") << " → " << number(b.median_ms, "%.3f") << " | ";
+            if (a.steps == b.steps && a.measured == b.measured) {
+                out << number(growth_exponent(n1, a.median_ms, n2, b.median_ms), "%.2f");
+            } else {
+                out << "not comparable (timed over different steps)";
+            }
+            out << " | " << number(growth_exponent(n1, n1 * std::log(n1), n2, n2 * std::log(n2)), "%.2f")
+                << " |\n";
+        }
+    }
+    return out.str();
+}
+
 } // namespace
 
 void write_json(const std::string &path, const std::vector<run_result> &results) {
@@ -109,6 +165,7 @@ std::string markdown_table(const std::vector<run_result> &results) {
             << number(r.peak_rss_mb, "%.1f") << " | " << r.contacts << " | " << stability_text(r) << " | "
             << ratio << " |\n";
     }
+    out << growth_table(results);
     return out.str();
 }
 
