@@ -81,34 +81,42 @@ void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &i
 
 namespace {
 
-// Moves A by +p and B by -p applied at the lever arms, as a position-level impulse.
+// Moves A by +p and B by -p applied at the lever arms, as a position-level impulse, and changes
+// their velocities by that motion over the sub-step.
 void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
-                            const vector3 &rB) noexcept {
-    a.delta_position += p * a.inv_mass;
-    a.delta_rotation = normalize(integrate(a.delta_rotation, a.inv_inertia * cross(rA, p), 1));
-    b.delta_position -= p * b.inv_mass;
-    b.delta_rotation = normalize(integrate(b.delta_rotation, b.inv_inertia * cross(rB, -p), 1));
+                            const vector3 &rB, scalar inv_h) noexcept {
+    auto dvA = p * a.inv_mass, dwA = a.inv_inertia * cross(rA, p);
+    auto dvB = -p * b.inv_mass, dwB = b.inv_inertia * cross(rB, -p);
+    a.delta_position += dvA;
+    a.delta_rotation = normalize(integrate(a.delta_rotation, dwA, 1));
+    b.delta_position += dvB;
+    b.delta_rotation = normalize(integrate(b.delta_rotation, dwB, 1));
+    a.linvel += dvA * inv_h;
+    a.angvel += dwA * inv_h;
+    b.linvel += dvB * inv_h;
+    b.angvel += dwB * inv_h;
 }
 
 } // namespace
 
-void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction) noexcept {
+void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
+                   scalar inv_h) noexcept {
     auto pose = current_pose(anchor, a, b);
     auto sA = skew_matrix(pose.rA), sB = skew_matrix(pose.rB);
     auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) - sA * a.inv_inertia * sA -
              sB * b.inv_inertia * sB;
     if (!(std::abs(determinant(k)) > scalar(1e-12))) return;
-    apply_position_impulse(a, b, -(inverse(k) * pose.d) * fraction, pose.rA, pose.rB);
+    apply_position_impulse(a, b, -(inverse(k) * pose.d) * fraction, pose.rA, pose.rB, inv_h);
 }
 
 void project_distance(const joint_anchor &anchor, scalar distance, solver_body &a, solver_body &b,
-                      scalar fraction) noexcept {
+                      scalar fraction, scalar inv_h) noexcept {
     auto pose = current_pose(anchor, a, b);
     auto len = length(pose.d);
     if (!(len > scalar(1e-9))) return;
     auto n = pose.d / len;
     auto mass = row_effective_mass(linear_jacobian(n, pose.rA, pose.rB), a, b);
-    apply_position_impulse(a, b, n * (-mass * (len - distance) * fraction), pose.rA, pose.rB);
+    apply_position_impulse(a, b, n * (-mass * (len - distance) * fraction), pose.rA, pose.rB, inv_h);
 }
 
 } // namespace edyn

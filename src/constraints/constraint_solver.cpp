@@ -80,6 +80,7 @@ void warm_start_constraints(constraint_solver_state &state, std::span<solver_bod
 
 void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
                              const constraint_solve_context &ctx) noexcept {
+    state.inv_h = ctx.inv_h;
     for_each_batch(state, [&](auto &batch) {
         for (auto &s : batch.solvers)
             solve(s, bodies, ctx);
@@ -94,8 +95,10 @@ void project_joint_positions(constraint_solver_state &state, std::span<solver_bo
     for (unsigned pass = 0; pass < settings.position_projection_iterations; ++pass) {
         for_each_batch(state, [&](auto &batch) {
             for (auto &s : batch.solvers) {
-                if constexpr (requires { project_positions(s, bodies, settings.position_projection); }) {
-                    project_positions(s, bodies, settings.position_projection);
+                if constexpr (requires {
+                                  project_positions(s, bodies, settings.position_projection, state.inv_h);
+                              }) {
+                    project_positions(s, bodies, settings.position_projection, state.inv_h);
                 }
             }
         });

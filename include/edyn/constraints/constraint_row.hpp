@@ -102,14 +102,20 @@ void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, 
 void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
                       solver_body &b, const constraint_solve_context &ctx, bool unilateral = false) noexcept;
 
-// Position projection, after the sub-step's positions are integrated: moves the bodies (not
-// their velocities) so that the pivots meet again. Velocity-level rows cannot see the second
-// order drift of fast-turning links (L (w h)^2 / 2 per sub-step), which this removes without
-// adding energy. `fraction` of the error is removed.
-void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction) noexcept;
+// Position projection, after the sub-step's positions are integrated: moves the bodies so that
+// the pivots meet again. Velocity-level rows cannot see the second order drift of fast-turning
+// links (L (w h)^2 / 2 per sub-step), which this removes. `fraction` of the error is removed.
+// The bodies' velocities change by the correction over the sub-step (inv_h = 1 / h), as if they
+// had moved there: the velocity that pulled the pivots apart is taken back with it. Moving the
+// bodies alone would leave that velocity in them, unseen by the rigid pivot rows (their error
+// is gone), to pull the pivots apart again every sub-step: joints the solver cannot hold (a
+// taut bridge deck under a heavy box) then keep a hidden motion that nothing damps, and the
+// corrections push it into what rests on them (the box kept the deck bouncing for minutes).
+void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
+                   scalar inv_h) noexcept;
 // The same along the pivots' direction only, to bring them `distance` apart.
 void project_distance(const joint_anchor &anchor, scalar distance, solver_body &a, solver_body &b,
-                      scalar fraction) noexcept;
+                      scalar fraction, scalar inv_h) noexcept;
 
 } // namespace edyn
 

@@ -50,6 +50,9 @@ struct constraint_solver_state {
                constraint_batch<cvjoint_constraint_solver>, constraint_batch<cone_constraint_solver>,
                constraint_batch<generic_constraint_solver>, constraint_batch<gravity_constraint_solver>>
         batches;
+    // 1 / h of the sub-step the joints were last solved with: the projection that follows turns
+    // its corrections into velocities over that sub-step.
+    scalar inv_h{0};
 };
 
 // Maps an entity's index to its solver body (0, the static body, when it has none).

@@ -91,9 +91,9 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
 void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept;
 void store_impulses(const cvjoint_constraint_solver &s, cvjoint_constraint &c) noexcept;
-inline void project_positions(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
-                              scalar fraction) noexcept {
-    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction);
+inline void project_positions(cvjoint_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
+                              scalar inv_h) noexcept {
+    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
 }
 
 } // namespace edyn

@@ -33,9 +33,10 @@ void warm_start(distance_constraint_solver &s, std::span<solver_body> bodies) no
 void solve(distance_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept;
 void store_impulses(const distance_constraint_solver &s, distance_constraint &c) noexcept;
-inline void project_positions(distance_constraint_solver &s, std::span<solver_body> bodies,
-                              scalar fraction) noexcept {
-    project_distance(s.anchor, s.distance, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction);
+inline void project_positions(distance_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
+                              scalar inv_h) noexcept {
+    project_distance(s.anchor, s.distance, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction,
+                     inv_h);
 }
 
 // Direction and length of d; false when the pivots coincide and no direction exists.

@@ -81,9 +81,10 @@ void solve(generic_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept;
 void store_impulses(const generic_constraint_solver &s, generic_constraint &c) noexcept;
 // With all three linear degrees of freedom locked, the pivots are held as a ball joint's.
-inline void project_positions(generic_constraint_solver &s, std::span<solver_body> bodies,
-                              scalar fraction) noexcept {
-    if (s.linear_block) project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction);
+inline void project_positions(generic_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
+                              scalar inv_h) noexcept {
+    if (s.linear_block)
+        project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
 }
 
 } // namespace edyn

@@ -110,9 +110,9 @@ void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexc
 void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept;
 void store_impulses(const hinge_constraint_solver &s, hinge_constraint &c) noexcept;
-inline void project_positions(hinge_constraint_solver &s, std::span<solver_body> bodies,
-                              scalar fraction) noexcept {
-    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction);
+inline void project_positions(hinge_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
+                              scalar inv_h) noexcept {
+    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
 }
 
 // Shared with the other joints that align an axis: two angular rows keeping axisB parallel to

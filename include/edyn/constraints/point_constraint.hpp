@@ -37,9 +37,9 @@ void warm_start(point_constraint_solver &s, std::span<solver_body> bodies) noexc
 void solve(point_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept;
 void store_impulses(const point_constraint_solver &s, point_constraint &c) noexcept;
-inline void project_positions(point_constraint_solver &s, std::span<solver_body> bodies,
-                              scalar fraction) noexcept {
-    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction);
+inline void project_positions(point_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
+                              scalar inv_h) noexcept {
+    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
 }
 
 // Solves the 3x3 block keeping the pivots together (shared by the joints that contain a ball
