@@ -72,13 +72,7 @@ ragdoll_def make_ragdoll_def_from_simple(const ragdoll_simple_def &simple) {
     def.leg_lower_mass = leg_lower_fraction * m;
     def.foot_mass = foot_fraction * m;
 
-    def.position = simple.position;
-    def.orientation = simple.orientation;
-    def.friction = simple.friction;
-    def.restitution = simple.restitution;
-    def.collision_group = simple.collision_group;
-    def.collision_mask = simple.collision_mask;
-    def.sleeping_disabled = simple.sleeping_disabled;
+    static_cast<ragdoll_placement &>(def) = simple;
     return def;
 }
 

@@ -19,9 +19,7 @@ void check_positive(const char *function, const char *field, const vector3 &valu
     }
 }
 
-// The fields both definitions share.
-template<typename Def>
-void validate_placement(const char *function, const Def &def) {
+void validate_placement(const char *function, const ragdoll_placement &def) {
     if (!isfinite(def.position)) {
         throw_invalid_argument(function, ": position must be finite, got ", def.position);
     }

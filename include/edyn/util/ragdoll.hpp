@@ -10,14 +10,11 @@
 
 namespace edyn {
 
-// A rag doll from two numbers; the proportions come from anthropometric tables (see
-// make_ragdoll_def_from_simple).
-struct ragdoll_simple_def {
-    // Standing height in metres and mass in kg.
-    scalar height{scalar(1.8)};
-    scalar weight{80};
-    // Where the rag doll stands: the point on the floor between its feet. It stands along +y of
-    // `orientation`, facing its +z, its left hand towards its +x.
+// Where a rag doll stands and what its surface is like: shared by both definitions and
+// applied to every body part.
+struct ragdoll_placement {
+    // The point on the floor between its feet. It stands along +y of `orientation`, facing its
+    // +z, its left hand towards its +x, in a T pose (arms along its +x and -x, palms down).
     vector3 position{vector3_zero};
     quaternion orientation{quaternion_identity};
     // Surface material of every body part: friction >= 0, restitution in [0, 1].
@@ -26,6 +23,14 @@ struct ragdoll_simple_def {
     std::uint64_t collision_group{~std::uint64_t(0)};
     std::uint64_t collision_mask{~std::uint64_t(0)};
     bool sleeping_disabled{false};
+};
+
+// A rag doll from two numbers; the proportions come from anthropometric tables (see
+// make_ragdoll_def_from_simple).
+struct ragdoll_simple_def : ragdoll_placement {
+    // Standing height in metres and mass in kg.
+    scalar height{scalar(1.8)};
+    scalar weight{80};
 };
 
 // Every body part of a rag doll, measured. Sizes are full extents in metres: x is the length
@@ -37,7 +42,7 @@ struct ragdoll_simple_def {
 // sternum to the shoulder joint) and the arm twist (the forearm's turning bones) are amorphous:
 // their size only sets their inertia. Masses in kg. Every size and mass starts at zero: fill
 // them, or start from make_ragdoll_def_from_simple.
-struct ragdoll_def {
+struct ragdoll_def : ragdoll_placement {
     vector3 head_size{vector3_zero};
     vector3 neck_size{vector3_zero};
     vector3 torso_upper_size{vector3_zero};
@@ -63,16 +68,6 @@ struct ragdoll_def {
     scalar leg_upper_mass{0};
     scalar leg_lower_mass{0};
     scalar foot_mass{0};
-
-    // As in ragdoll_simple_def. The rag doll stands in a T pose, arms along its +x and -x, palms
-    // down.
-    vector3 position{vector3_zero};
-    quaternion orientation{quaternion_identity};
-    scalar friction{scalar(0.5)};
-    scalar restitution{0};
-    std::uint64_t collision_group{~std::uint64_t(0)};
-    std::uint64_t collision_mask{~std::uint64_t(0)};
-    bool sleeping_disabled{false};
 };
 
 // Segment lengths, breadths and mass fractions of an adult of the given height and weight.
