@@ -22,9 +22,12 @@ void remove_point_at(contact_manifold &manifold, std::uint32_t pos, contact_poin
     changes.destroyed[changes.num_destroyed++] = slot;
 }
 
-void assign_geometry(contact_point &cp, const result_point &rp) {
+// Also places the pivots in world space at `tf`, for the solver.
+void assign_geometry(contact_point &cp, const result_point &rp, const manifold_transforms &tf) {
     cp.pivotA = rp.pivotA;
     cp.pivotB = rp.pivotB;
+    cp.positionA = to_world_space(rp.pivotA, tf.posA, tf.ornA);
+    cp.positionB = to_world_space(rp.pivotB, tf.posB, tf.ornB);
     cp.normal = rp.normal;
     cp.distance = rp.distance;
     cp.featureA = rp.featureA;
@@ -32,12 +35,13 @@ void assign_geometry(contact_point &cp, const result_point &rp) {
 }
 
 // `ids` stays a permutation of all slots, so the first id past the live ones is a free slot.
-void insert_point(contact_manifold &manifold, const result_point &rp, contact_point_changes &changes) {
+void insert_point(contact_manifold &manifold, const result_point &rp, const manifold_transforms &tf,
+                  contact_point_changes &changes) {
     EDYN_ASSERT(manifold.num_points < max_contacts);
     auto slot = manifold.ids[manifold.num_points++];
     auto &cp = manifold.point[slot];
     cp = contact_point{};
-    assign_geometry(cp, rp);
+    assign_geometry(cp, rp, tf);
     changes.created[changes.num_created++] = slot;
 }
 
@@ -169,10 +173,11 @@ std::array<bool, 2 * max_contacts> select_points(const candidate *cands, std::si
 }
 
 void insert_new_points(contact_manifold &manifold, const collision_result &result, const int *pending,
-                       std::size_t num_pending, contact_point_changes &changes) {
+                       std::size_t num_pending, const manifold_transforms &tf,
+                       contact_point_changes &changes) {
     if (manifold.num_points + num_pending <= max_contacts) {
         for (std::size_t i = 0; i < num_pending; ++i)
-            insert_point(manifold, result.point[pending[i]], changes);
+            insert_point(manifold, result.point[pending[i]], tf, changes);
         return;
     }
 
@@ -199,7 +204,7 @@ void insert_new_points(contact_manifold &manifold, const collision_result &resul
     }
     for (std::size_t i = 0; i < count; ++i) {
         if (keep[i] && cands[i].result_index >= 0)
-            insert_point(manifold, result.point[cands[i].result_index], changes);
+            insert_point(manifold, result.point[cands[i].result_index], tf, changes);
     }
 }
 
@@ -231,7 +236,7 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
         auto pos = find_match(manifold, matched, rp);
         if (pos >= 0) {
             auto slot = manifold.ids[static_cast<std::size_t>(pos)];
-            assign_geometry(manifold.point[slot], rp);
+            assign_geometry(manifold.point[slot], rp, tf);
             matched[slot] = true;
         } else if (rp.distance <= manifold.separation_threshold) {
             pending[num_pending++] = static_cast<int>(r);
@@ -248,11 +253,7 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
         }
     }
 
-    insert_new_points(manifold, result, pending.data(), num_pending, changes);
-    manifold.each_point([&](contact_point &cp) {
-        cp.positionA = to_world_space(cp.pivotA, tf.posA, tf.ornA);
-        cp.positionB = to_world_space(cp.pivotB, tf.posB, tf.ornB);
-    });
+    insert_new_points(manifold, result, pending.data(), num_pending, tf, changes);
     changes.num_points_after = manifold.num_points;
     return changes;
 }
