@@ -135,6 +135,19 @@ void set_gravity(registry &registry, const vector3 &gravity) {
 }
 vector3 get_gravity(const registry &registry) { return get_settings(registry).gravity; }
 
+void set_solver_substeps(registry &registry, unsigned substeps) {
+    if (substeps == 0) invalid("set_solver_substeps", "substeps must be at least 1");
+    mutable_settings(registry).num_substeps = substeps;
+}
+unsigned get_solver_substeps(const registry &registry) { return get_settings(registry).num_substeps; }
+
+void set_solver_relax_iterations(registry &registry, unsigned iterations) {
+    mutable_settings(registry).num_relax_iterations = iterations;
+}
+unsigned get_solver_relax_iterations(const registry &registry) {
+    return get_settings(registry).num_relax_iterations;
+}
+
 void set_solver_velocity_iterations(registry &registry, unsigned iterations) {
     if (iterations == 0) invalid("set_solver_velocity_iterations", "iterations must be at least 1");
     mutable_settings(registry).num_substeps = iterations;
@@ -144,10 +157,10 @@ unsigned get_solver_velocity_iterations(const registry &registry) {
 }
 
 void set_solver_position_iterations(registry &registry, unsigned iterations) {
-    mutable_settings(registry).num_relax_iterations = iterations;
+    mutable_settings(registry).joint.position_projection_iterations = iterations;
 }
 unsigned get_solver_position_iterations(const registry &registry) {
-    return get_settings(registry).num_relax_iterations;
+    return get_settings(registry).joint.position_projection_iterations;
 }
 
 void set_solver_restitution_iterations(registry &registry, unsigned iterations) {

@@ -110,7 +110,7 @@ struct filtering : world_fixture {
     // How far a body falls freely in `seconds`: sub-stepped semi-implicit Euler falls
     // g h^2 n (n + 1) / 2 after n sub-steps of h (0.3% more than g t^2 / 2 after 1 s).
     scalar fall(scalar seconds) const {
-        auto n = std::round(seconds / get_fixed_dt(reg)) * scalar(get_solver_velocity_iterations(reg));
+        auto n = std::round(seconds / get_fixed_dt(reg)) * scalar(get_solver_substeps(reg));
         auto h = seconds / n;
         return g * h * h * n * (n + 1) / 2;
     }

@@ -221,7 +221,7 @@ TEST_F(events, a_dynamic_sensor_falls_through_the_ground_reporting_the_contact) 
     auto steps = run_for(1);
     // Free fall for 1 s. Sub-stepped semi-implicit Euler falls g h^2 n (n + 1) / 2 after n
     // sub-steps of h, 0.3% more than g t^2 / 2 here.
-    auto n = scalar(steps * int(get_solver_velocity_iterations(reg)));
+    auto n = scalar(steps * int(get_solver_substeps(reg)));
     auto h = 1 / n;
     auto expected = 1 - g * h * h * n * (n + 1) / 2;
     EXPECT_NEAR(pos(ball).y, expected, scalar(1e-3)) << "the sensor was held by the ground";

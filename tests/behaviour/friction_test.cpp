@@ -241,7 +241,7 @@ TEST_F(material_mixing_override, pair_restitution_overrides_the_bounce) {
     auto expected = 2 * scalar(0.64);
     // As in the bounce test: the bounce may begin up to one sub-step of travel early.
     auto impact_speed = std::sqrt(2 * g * 2);
-    auto substep = get_fixed_dt(reg) / scalar(get_solver_velocity_iterations(reg));
+    auto substep = get_fixed_dt(reg) / scalar(get_solver_substeps(reg));
     EXPECT_NEAR(peak, expected, impact_speed * substep + scalar(0.01) * expected)
         << "peak " << peak << " m, expected " << expected;
 }

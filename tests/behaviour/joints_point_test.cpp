@@ -124,9 +124,9 @@ TEST_F(soft_distance_joint, oscillates_at_sqrt_k_over_m) {
     EXPECT_NEAR(measured, expected, 0.03 * expected)
         << "measured period " << measured << " s, expected " << expected << " s";
     // The implicit spring loses (h w)^2 / 2 of its amplitude per sub-step, no more.
-    auto h = get_fixed_dt(reg) / scalar(get_solver_velocity_iterations(reg));
+    auto h = get_fixed_dt(reg) / scalar(get_solver_substeps(reg));
     auto hw = h * std::sqrt(k / m);
-    auto substeps = scalar(60 * 5) * scalar(get_solver_velocity_iterations(reg));
+    auto substeps = scalar(60 * 5) * scalar(get_solver_substeps(reg));
     auto expected_amplitude = scalar(0.1) * std::pow(1 + hw * hw, -substeps / 2);
     auto amplitude = std::hypot(pos(body).x - rest, vel(body).x / std::sqrt(k / m));
     EXPECT_NEAR(amplitude, expected_amplitude, scalar(0.1) * expected_amplitude)

@@ -56,7 +56,7 @@ TEST_F(contact_motion, bounce_height_ratio_is_restitution_squared) {
         // A bounce starts when contact happens within the coming sub-step, so it may begin up
         // to one sub-step of travel above the ground: the peak is that much higher at most.
         auto impact_speed = std::sqrt(2 * scalar(9.8) * 2);
-        auto substep = get_fixed_dt(r) / scalar(get_solver_velocity_iterations(r));
+        auto substep = get_fixed_dt(r) / scalar(get_solver_substeps(r));
         EXPECT_NEAR(peak, expected, impact_speed * substep + scalar(0.01) * expected) << "restitution " << e;
         detach(r);
     }

@@ -36,10 +36,22 @@ scalar get_fixed_dt(const registry &registry);
 void set_gravity(registry &registry, const vector3 &gravity);
 vector3 get_gravity(const registry &registry);
 
-// Sub-steps per step of the soft-step solver (see settings::num_substeps).
+// The solver runs a soft step: each fixed step is split into sub-steps, and each sub-step
+// integrates velocities, runs the restitution solver, warm starts, makes one biased velocity
+// iteration over every contact and joint row, integrates positions, projects the joints'
+// positions, then makes the relax iterations (velocity iterations without position bias).
+// Defaults: 6 sub-steps, 1 relax iteration, 4 position projection passes (settings.hpp).
+void set_solver_substeps(registry &registry, unsigned substeps);
+unsigned get_solver_substeps(const registry &registry);
+void set_solver_relax_iterations(registry &registry, unsigned iterations);
+unsigned get_solver_relax_iterations(const registry &registry);
+// A velocity iteration is one biased pass over every row; the soft step makes one per
+// sub-step, so these set and get the number of sub-steps (same as set_solver_substeps).
 void set_solver_velocity_iterations(registry &registry, unsigned iterations);
 unsigned get_solver_velocity_iterations(const registry &registry);
-// Relax iterations per sub-step (see settings::num_relax_iterations).
+// A position iteration is one projection pass over the joints that keep pivots together,
+// after each sub-step's integration (settings.joint.position_projection_iterations); 0 leaves
+// joint drift to the soft velocity correction alone. Contacts have no position iterations.
 void set_solver_position_iterations(registry &registry, unsigned iterations);
 unsigned get_solver_position_iterations(const registry &registry);
 void set_solver_restitution_iterations(registry &registry, unsigned iterations);

@@ -150,11 +150,23 @@ TEST(world, settings_are_validated_and_read_back) {
     set_gravity(reg, {0, -1.62, 0});
     EXPECT_EQ(get_gravity(reg).y, scalar(-1.62));
     EXPECT_THROW(set_gravity(reg, {0, std::numeric_limits<scalar>::infinity(), 0}), std::invalid_argument);
+    EXPECT_THROW(set_solver_substeps(reg, 0), std::invalid_argument);
+    set_solver_substeps(reg, 4);
+    EXPECT_EQ(get_solver_substeps(reg), 4u);
+    EXPECT_EQ(get_settings(reg).num_substeps, 4u);
+    set_solver_relax_iterations(reg, 2);
+    EXPECT_EQ(get_solver_relax_iterations(reg), 2u);
+    EXPECT_EQ(get_settings(reg).num_relax_iterations, 2u);
+    // The classic names: one velocity iteration per sub-step, position iterations are the
+    // joints' projection passes.
     EXPECT_THROW(set_solver_velocity_iterations(reg, 0), std::invalid_argument);
-    set_solver_velocity_iterations(reg, 4);
-    EXPECT_EQ(get_solver_velocity_iterations(reg), 4u);
-    set_solver_position_iterations(reg, 2);
-    EXPECT_EQ(get_solver_position_iterations(reg), 2u);
+    set_solver_velocity_iterations(reg, 5);
+    EXPECT_EQ(get_solver_substeps(reg), 5u);
+    EXPECT_EQ(get_solver_velocity_iterations(reg), 5u);
+    set_solver_position_iterations(reg, 3);
+    EXPECT_EQ(get_settings(reg).joint.position_projection_iterations, 3u);
+    EXPECT_EQ(get_solver_position_iterations(reg), 3u);
+    EXPECT_EQ(get_solver_relax_iterations(reg), 2u);
     set_solver_restitution_iterations(reg, 0);
     EXPECT_EQ(get_solver_restitution_iterations(reg), 0u);
     set_solver_individual_restitution_iterations(reg, 3);
