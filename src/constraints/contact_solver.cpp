@@ -1,5 +1,7 @@
 #include "edyn/constraints/contact_solver.hpp"
+#include "edyn/constraints/constraint_row.hpp"
 #include <algorithm>
+#include <cmath>
 
 namespace edyn {
 
@@ -136,17 +138,36 @@ void solve_spin_and_roll(contact_solver_constraint &c, solver_body &a, solver_bo
 
 } // namespace
 
+namespace {
+
+// The spring of a contact whose material sets its stiffness: the whole contact's stiffness and
+// damping are shared evenly by its points, so that a load sinks it by load / stiffness however
+// many points carry it. Capped at the frequency limit of the sub-step h, like the global one.
+softness material_softness(const contact_solver_constraint &c, const contact_solver_point &p, scalar h,
+                           const contact_solver_settings &settings) {
+    auto share = scalar(1) / scalar(c.num_points);
+    auto mass = p.normal_mass;
+    auto omega_max = pi2 * settings.max_hertz_ratio / h;
+    auto k = std::min(c.stiffness * share, mass * omega_max * omega_max);
+    auto damping = c.damping < large_scalar ? c.damping * share
+                                            : 2 * settings.contact_damping_ratio * std::sqrt(k * mass);
+    return make_spring_softness(k, damping, mass, h);
+}
+
+} // namespace
+
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias) {
     // A spring stiffer than a quarter of the sub-step rate cannot be integrated stably.
     auto hertz = std::min(settings.contact_hertz, settings.max_hertz_ratio / h);
-    auto soft = make_softness(hertz, settings.contact_damping_ratio, h);
+    auto rigid = make_softness(hertz, settings.contact_damping_ratio, h);
     auto inv_h = scalar(1) / h;
 
     for (auto &c : contacts.constraints) {
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
         auto points = points_of(contacts, c);
+        auto is_spring = c.stiffness < large_scalar;
         scalar total_normal = 0;
 
         for (auto &p : points) {
@@ -157,10 +178,16 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
                 // Speculative: allow closing the gap within this sub-step, no more.
                 bias = s * inv_h;
             } else if (use_bias) {
-                // Overlap is pushed out by a stiff, heavily damped spring.
-                bias = std::max(soft.bias_rate * s, -settings.max_push_out_velocity);
+                // Overlap is pushed out by a stiff, heavily damped spring whose push-out speed
+                // is capped; a material's spring is a force of the model and is not capped.
+                auto soft = is_spring ? material_softness(c, p, h, settings) : rigid;
+                bias = soft.bias_rate * s;
+                if (!is_spring) bias = std::max(bias, -settings.max_push_out_velocity);
                 mass_scale = soft.mass_scale;
                 impulse_scale = soft.impulse_scale;
+            } else if (is_spring) {
+                total_normal += p.normal_impulse;
+                continue;
             }
 
             auto vn = row_velocity(p.normal_row, p.normal, a, b);

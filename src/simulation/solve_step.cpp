@@ -110,6 +110,8 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
     c.restitution = mixed.restitution;
     c.roll_friction = mixed.roll_friction;
     c.spin_friction = mixed.spin_friction;
+    c.stiffness = mixed.stiffness;
+    c.damping = mixed.damping;
     c.normal = manifold.point[manifold.ids[0]].normal;
     c.source = std::uint32_t(world.contact_manifolds.size());
 

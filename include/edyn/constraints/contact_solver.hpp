@@ -57,6 +57,10 @@ struct contact_solver_constraint {
     scalar restitution{0};
     scalar roll_friction{0};
     scalar spin_friction{0};
+    // The mixed material's stiffness (N/m) and damping (Ns/m) of the whole contact, shared by
+    // its points; large_scalar means the global contact_hertz and damping ratio apply.
+    scalar stiffness{large_scalar};
+    scalar damping{large_scalar};
     std::uint32_t first_point{0};
     std::uint32_t num_points{0};
     // Spinning friction about the normal.
@@ -91,8 +95,9 @@ struct contact_solver_set {
 };
 
 // Tuning of the soft-step contact solver, shared by all contacts of a step. These are the
-// global contact stiffness and damping: a contact whose mixed material has a finite stiffness
-// (material_base::stiffness) is a spring of that stiffness instead.
+// global contact stiffness and damping, the defaults for every contact: a contact whose mixed
+// material has a finite stiffness (material_base::stiffness) is instead a spring of that
+// stiffness, with the material's damping or, when that is not set, contact_damping_ratio.
 struct contact_solver_settings {
     // Stiffness of contacts as a spring frequency, in Hz. A loaded contact sinks by
     // load / (m w^2), so stacks stand taller the stiffer it is. It is capped at
@@ -106,9 +111,10 @@ struct contact_solver_settings {
     // 5 to 30 cm and never sleep.
     scalar contact_damping_ratio{2};
     // Contact frequency (global, or a material's) is capped at this fraction of the sub-step
-    // rate.
+    // rate: a material stiffer than that is as stiff as the global default.
     scalar max_hertz_ratio{scalar(0.25)};
-    // Cap on the speed at which overlap is pushed out, m/s.
+    // Cap on the speed at which overlap is pushed out by rigid contacts, m/s (a material spring
+    // pushes as hard as its stiffness says).
     scalar max_push_out_velocity{3};
     // Approach speed below which restitution is ignored, so resting bodies do not jitter.
     scalar restitution_threshold{scalar(0.5)};
@@ -123,7 +129,8 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
 
 // One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
 // without it (relax pass) only the velocity constraints are enforced, removing the push-out
-// velocity so that it does not turn into bounce.
+// velocity so that it does not turn into bounce. The springs of contacts with a material
+// stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias);
 

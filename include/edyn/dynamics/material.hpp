@@ -17,7 +17,14 @@ struct material_base {
     scalar roll_friction{0};
     // Torque per unit of normal force against spinning about the contact normal, in metres.
     scalar spin_friction{0};
-    // Contact stiffness (N/m) and damping (Ns/m); infinite stiffness means a rigid contact.
+    // Contact stiffness (N/m) and damping (Ns/m) of the whole contact, shared by its points.
+    // large_scalar, the default, means a rigid contact: the solver's global contact_hertz and
+    // contact_damping_ratio (contact_solver_settings, in settings::contact) apply. A finite
+    // stiffness makes the contact a spring that a load F compresses by F / stiffness; its
+    // damping is `damping` or, left at large_scalar, the global damping ratio. Two bodies'
+    // values combine in series (material_mixing.hpp). The spring's frequency is capped like the
+    // global one (a quarter of the sub-step rate), so a stiffer material is as rigid as the
+    // default. `damping` alone, with an infinite stiffness, has no effect.
     scalar stiffness{large_scalar};
     scalar damping{large_scalar};
 
