@@ -15,6 +15,9 @@
 #include "edyn/math/vector2.hpp"
 #include "edyn/math/vector3.hpp"
 
+#include "edyn/parallel/parallel_for.hpp"
+#include "edyn/parallel/task_scheduler.hpp"
+
 #include "edyn/shapes/aabb.hpp"
 #include "edyn/shapes/convex_hull.hpp"
 #include "edyn/shapes/moment_of_inertia.hpp"
