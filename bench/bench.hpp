@@ -23,6 +23,9 @@ struct scene_spec {
     // Off by default in both engines: the figures are the cost of simulating the scene, not of
     // skipping the bodies that came to rest.
     bool sleeping{false};
+    // Threads edyn runs on: above 1, execution_mode::sequential_multithreaded with that many.
+    // Bullet's peer, btDiscreteDynamicsWorld, always runs on one.
+    unsigned threads{1};
 };
 
 // What one engine measured on one scene.

@@ -104,6 +104,7 @@ std::vector<scene_spec> make_specs(const options &opt) {
             }
             scene_spec spec;
             spec.scene = scene;
+            spec.threads = opt.threads;
             spec.size = size;
             spec.sleeping = opt.sleeping;
             spec.steps = opt.steps > 0 ? opt.steps : default_steps(scene);
@@ -202,10 +203,12 @@ run_result run_forked(const scene_spec &spec, const std::string &engine) {
 }
 
 int run(const options &opt) {
+    if (opt.threads == 0) throw std::invalid_argument("edyn-bench: --threads must be at least 1");
     if (opt.threads > 1) {
         std::fprintf(stderr,
-                     "edyn-bench: edyn has no multithreaded execution mode yet and the Bullet peer is "
-                     "btDiscreteDynamicsWorld: both run on one thread (threads = 1 in the records)\n");
+                     "edyn-bench: edyn on %u threads (sequential_multithreaded); the Bullet peer, "
+                     "btDiscreteDynamicsWorld, on one\n",
+                     opt.threads);
     }
     std::vector<std::string> engines;
     if (opt.engine == "edyn" || opt.engine == "both") engines.push_back("edyn");
@@ -224,7 +227,7 @@ int run(const options &opt) {
                              engine.c_str(), spec.steps);
                 std::fflush(stderr);
                 auto r = opt.no_fork ? run_engine(spec, engine) : run_forked(spec, engine);
-                r.threads = 1;
+                r.threads = engine == "edyn" ? spec.threads : 1;
                 if (r.ok) {
                     std::fprintf(stderr, "%u bodies, median %.3f ms/step, p95 %.3f, %.1f MB, %zu contacts\n",
                                  r.bodies, r.median_ms, r.p95_ms, r.peak_rss_mb, r.contacts);
@@ -271,7 +274,8 @@ int main(int argc, char **argv) {
                    "steps left out of the timings (default: the piles' first seven eighths; other scenes' "
                    "first tenth, at most 60)")
         ->check(CLI::NonNegativeNumber);
-    app.add_option("--threads", opt.threads, "worker threads (both engines run on one for now)")
+    app.add_option("--threads", opt.threads,
+                   "threads edyn runs on (sequential_multithreaded above 1); Bullet runs on one")
         ->check(CLI::PositiveNumber);
     app.add_option("--engine", opt.engine, "edyn, bullet or both")
         ->check(CLI::IsMember({"edyn", "bullet", "both"}));

@@ -33,7 +33,12 @@ run_result run_edyn(const scene_spec &spec) {
     result.stability_metric = stability_metric(spec.scene);
 
     edyn::registry registry;
-    edyn::attach(registry); // sequential: edyn has no multithreaded mode yet
+    edyn::init_config config;
+    if (spec.threads > 1) {
+        config.execution_mode = edyn::execution_mode::sequential_multithreaded;
+        config.num_worker_threads = spec.threads;
+    }
+    edyn::attach(registry, config);
     auto tracked = build_scene(registry, spec);
     result.bodies = static_cast<unsigned>(registry.storage<edyn::dynamic_tag>().size());
     edyn::vector3 tracked_start{};

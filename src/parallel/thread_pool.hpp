@@ -44,8 +44,8 @@ private:
     std::vector<std::thread> threads;
     std::mutex mutex;
     std::condition_variable wake, done;
-    job *current{nullptr};         // the job threads may join, under `mutex`
-    std::uint64_t generation{0};   // counts jobs, so that a thread joins each one once
+    job *current{nullptr};       // the job threads may join, under `mutex`
+    std::uint64_t generation{0}; // counts jobs, so that a thread joins each one once
     bool stopping{false};
 };
 

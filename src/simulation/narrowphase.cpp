@@ -7,6 +7,7 @@
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/dynamics/visit_shape.hpp"
+#include "edyn/parallel/parallel_for.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 
@@ -65,6 +66,45 @@ scalar approach_speed(const registry &registry, entity a, entity b) {
     return length(vA - vB) + spinA + spinB;
 }
 
+// Closest points of one manifold's pair, the manifold updated in place. Reads the registry and
+// writes only the manifold, so that manifolds can be processed at once on several threads.
+contact_point_changes collide_manifold(const registry &registry, contact_manifold &manifold, scalar dt,
+                                       std::uint32_t shape_epoch) {
+    auto a = manifold.body[0], b = manifold.body[1];
+    // Only pairs with a dynamic body interact, and two resting bodies stay as they are.
+    if (!registry.any_of<dynamic_tag>(a) && !registry.any_of<dynamic_tag>(b)) return {};
+    if (is_resting(registry, a) && is_resting(registry, b)) return {};
+    if (!registry.all_of<shape_index>(a) || !registry.all_of<shape_index>(b)) return {};
+
+    auto &ornA = registry.get<orientation>(a);
+    auto &ornB = registry.get<orientation>(b);
+    manifold_transforms tf{get_rigidbody_origin(registry, a), ornA, get_rigidbody_origin(registry, b), ornB};
+    // Points are looked for as far as the bodies can travel towards each other in a step,
+    // so that the solver can stop them at the surface instead of inside it.
+    auto approach = approach_speed(registry, a, b) * dt;
+    manifold.separation_threshold = contact_breaking_threshold + approach;
+    if (can_reuse_contacts(manifold, tf, approach, shape_epoch)) {
+        return refresh_contact_manifold(manifold, tf);
+    }
+    collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
+    collision_result result;
+    visit_shape(registry, a, [&](const auto &shapeA) {
+        visit_shape(registry, b, [&](const auto &shapeB) {
+            using A = std::decay_t<decltype(shapeA)>;
+            using B = std::decay_t<decltype(shapeB)>;
+            if constexpr (!(std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>)) {
+                collide(shapeA, shapeB, ctx, result);
+            }
+        });
+    });
+    auto changes = update_contact_manifold(manifold, tf, result);
+    remember_collide(manifold, tf, shape_epoch);
+    return changes;
+}
+
+// Manifolds per parallel range: below this many, collision runs on the calling thread.
+constexpr std::size_t manifolds_per_task = 64;
+
 } // namespace
 
 void run_narrowphase(registry &registry, world_state &world) {
@@ -78,47 +118,27 @@ void run_narrowphase(registry &registry, world_state &world) {
     // reproducible order.
     std::reverse(world.manifolds.begin(), world.manifolds.end());
 
+    // Collision first, each manifold on its own (in parallel when a scheduler is there)...
     auto dt = registry.ctx().get<settings>().fixed_dt;
-    collision_result result;
-    for (auto manifold_entity : world.manifolds) {
-        auto &manifold = registry.get<contact_manifold>(manifold_entity);
-        auto a = manifold.body[0], b = manifold.body[1];
-        // Only pairs with a dynamic body interact, and two resting bodies stay as they are.
-        if (!registry.any_of<dynamic_tag>(a) && !registry.any_of<dynamic_tag>(b)) continue;
-        if (is_resting(registry, a) && is_resting(registry, b)) continue;
-        if (!registry.all_of<shape_index>(a) || !registry.all_of<shape_index>(b)) continue;
+    auto &manifold_pool = registry.storage<contact_manifold>();
+    world.manifold_changes.resize(world.manifolds.size());
+    auto collide_one = [&](std::size_t i) {
+        auto &manifold = manifold_pool.get(world.manifolds[i]);
+        world.manifold_changes[i] = collide_manifold(registry, manifold, dt, world.shape_epoch);
+    };
+    parallel_for(world.scheduler.get(), std::size_t(0), world.manifolds.size(), manifolds_per_task,
+                 collide_one);
 
-        auto &ornA = registry.get<orientation>(a);
-        auto &ornB = registry.get<orientation>(b);
-        manifold_transforms tf{get_rigidbody_origin(registry, a), ornA, get_rigidbody_origin(registry, b),
-                               ornB};
-        // Points are looked for as far as the bodies can travel towards each other in a step,
-        // so that the solver can stop them at the surface instead of inside it.
-        auto approach = approach_speed(registry, a, b) * dt;
-        manifold.separation_threshold = contact_breaking_threshold + approach;
-        contact_point_changes changes;
-        if (can_reuse_contacts(manifold, tf, approach, world.shape_epoch)) {
-            changes = refresh_contact_manifold(manifold, tf);
-        } else {
-            collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
-            result.num_points = 0;
-            visit_shape(registry, a, [&](const auto &shapeA) {
-                visit_shape(registry, b, [&](const auto &shapeB) {
-                    using A = std::decay_t<decltype(shapeA)>;
-                    using B = std::decay_t<decltype(shapeB)>;
-                    if constexpr (!(std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>)) {
-                        collide(shapeA, shapeB, ctx, result);
-                    }
-                });
-            });
-            changes = update_contact_manifold(manifold, tf, result);
-            remember_collide(manifold, tf, world.shape_epoch);
-        }
+    // ...then what the registry shares, in the manifolds' order: materials, events, islands.
+    for (std::size_t i = 0; i < world.manifolds.size(); ++i) {
+        auto manifold_entity = world.manifolds[i];
+        auto &manifold = manifold_pool.get(manifold_entity);
+        auto &changes = world.manifold_changes[i];
         fill_materials(registry, manifold, changes);
         if (record) record_events(events, manifold_entity, changes);
 
         if (changes.contact_started()) {
-            world.islands.link_edge(registry, manifold_entity, a, b);
+            world.islands.link_edge(registry, manifold_entity, manifold.body[0], manifold.body[1]);
         } else if (changes.contact_ended()) {
             world.islands.unlink_edge(registry, manifold_entity);
         }

@@ -10,6 +10,7 @@
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/math/transform.hpp"
+#include "edyn/parallel/parallel_for.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/simulation/island.hpp"
 
@@ -192,54 +193,66 @@ void solve_constraints(world_state &world, const settings &settings) {
     }
 }
 
+namespace {
+
+// Bodies or contacts per parallel range in write_back.
+constexpr std::size_t write_backs_per_task = 256;
+
+} // namespace
+
 void write_back(registry &registry, world_state &world, scalar dt) {
-    for (std::size_t i = 1; i < world.bodies.size(); ++i) {
-        auto e = world.body_entities[i];
-        auto &body = world.bodies[i];
-        auto &pos = registry.get<position>(e);
-        auto &orn = registry.get<orientation>(e);
-        pos += body.delta_position;
-        orn = normalize(body.delta_rotation * orn);
-        registry.get<linvel>(e) = body.linvel;
-        registry.get<angvel>(e) = body.angvel;
+    // Each body and each contact writes only its own components: they go back in parallel.
+    parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), write_backs_per_task,
+                 [&](std::size_t i) {
+                     auto e = world.body_entities[i];
+                     auto &body = world.bodies[i];
+                     auto &pos = registry.get<position>(e);
+                     auto &orn = registry.get<orientation>(e);
+                     pos += body.delta_position;
+                     orn = normalize(body.delta_rotation * orn);
+                     registry.get<linvel>(e) = body.linvel;
+                     registry.get<angvel>(e) = body.angvel;
 
-        if (registry.all_of<dynamic_tag>(e)) {
-            auto r = to_matrix3x3(orn);
-            registry.get<inertia_world_inv>(e) = r * registry.get<inertia_inv>(e) * transpose(r);
-        }
-        if (auto *aabb = registry.try_get<AABB>(e)) {
-            auto origin = get_rigidbody_origin(registry, e);
-            *aabb =
-                visit_shape(registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
-            // Swept over the next step's motion, so that pairs are found before they touch.
-            auto sweep = body.linvel * dt;
-            aabb->min += min(sweep, vector3_zero);
-            aabb->max += max(sweep, vector3_zero);
-        }
-        world.body_index[to_index(e)] = 0;
-    }
+                     if (registry.all_of<dynamic_tag>(e)) {
+                         auto r = to_matrix3x3(orn);
+                         registry.get<inertia_world_inv>(e) = r * registry.get<inertia_inv>(e) * transpose(r);
+                     }
+                     if (auto *aabb = registry.try_get<AABB>(e)) {
+                         auto origin = get_rigidbody_origin(registry, e);
+                         *aabb = visit_shape(
+                             registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
+                         // Swept over the next step's motion, so that pairs are found before they touch.
+                         auto sweep = body.linvel * dt;
+                         aabb->min += min(sweep, vector3_zero);
+                         aabb->max += max(sweep, vector3_zero);
+                     }
+                     world.body_index[to_index(e)] = 0;
+                 });
 
-    for (auto &c : world.contacts.constraints) {
-        auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[c.source]);
-        for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = world.contacts.points[c.first_point + i];
-            auto &t = world.contacts.totals[c.first_point + i];
-            auto &cp = manifold.point[manifold.ids[i]];
-            auto share = scalar(1) / scalar(c.num_points);
-            cp.warm_start.normal = p.normal_impulse;
-            cp.warm_start.friction = {p.tangent_impulse[0], p.tangent_impulse[1]};
-            cp.warm_start.spin = c.spin_impulse * share;
-            cp.warm_start.roll = {c.roll_impulse[0] * share, c.roll_impulse[1] * share};
-            cp.normal_impulse = t.normal_impulse;
-            cp.friction_impulse = {t.tangent_impulse[0], t.tangent_impulse[1]};
-            cp.normal_restitution_impulse = t.restitution_impulse;
-            cp.friction_restitution_impulse = {t.tangent_restitution_impulse[0],
-                                               t.tangent_restitution_impulse[1]};
-            // Torsional and rolling impulses are shared evenly by the points for reporting.
-            cp.spin_friction_impulse = c.total_spin_impulse * share;
-            cp.roll_friction_impulse = {c.total_roll_impulse[0] * share, c.total_roll_impulse[1] * share};
-        }
-    }
+    auto &constraints = world.contacts.constraints;
+    parallel_for(
+        world.scheduler.get(), std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
+            auto &c = constraints[k];
+            auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[c.source]);
+            for (std::uint32_t i = 0; i < c.num_points; ++i) {
+                auto &p = world.contacts.points[c.first_point + i];
+                auto &t = world.contacts.totals[c.first_point + i];
+                auto &cp = manifold.point[manifold.ids[i]];
+                auto share = scalar(1) / scalar(c.num_points);
+                cp.warm_start.normal = p.normal_impulse;
+                cp.warm_start.friction = {p.tangent_impulse[0], p.tangent_impulse[1]};
+                cp.warm_start.spin = c.spin_impulse * share;
+                cp.warm_start.roll = {c.roll_impulse[0] * share, c.roll_impulse[1] * share};
+                cp.normal_impulse = t.normal_impulse;
+                cp.friction_impulse = {t.tangent_impulse[0], t.tangent_impulse[1]};
+                cp.normal_restitution_impulse = t.restitution_impulse;
+                cp.friction_restitution_impulse = {t.tangent_restitution_impulse[0],
+                                                   t.tangent_restitution_impulse[1]};
+                // Torsional and rolling impulses are shared evenly by the points for reporting.
+                cp.spin_friction_impulse = c.total_spin_impulse * share;
+                cp.roll_friction_impulse = {c.total_roll_impulse[0] * share, c.total_roll_impulse[1] * share};
+            }
+        });
     store_constraint_impulses(registry, world.joints);
 }
 

@@ -43,16 +43,23 @@ bool is_attached(const registry &registry) noexcept { return registry.ctx().cont
 
 void attach(registry &registry, const init_config &config) {
     if (is_attached(registry)) invalid("attach", "the registry is already attached");
-    if (config.execution_mode != execution_mode::sequential) {
-        invalid("attach", "execution_mode " +
-                              std::string(config.execution_mode == execution_mode::asynchronous
-                                              ? "asynchronous"
-                                              : "sequential_multithreaded") +
-                              " is not available yet; use execution_mode::sequential");
+    if (config.execution_mode == execution_mode::asynchronous) {
+        invalid("attach", "execution_mode asynchronous is not available yet; use sequential or "
+                          "sequential_multithreaded");
+    }
+    // Made before anything is added to the registry, so that a rejected config leaves it as it was.
+    std::unique_ptr<task_scheduler> scheduler;
+    if (config.execution_mode == execution_mode::sequential_multithreaded) {
+        try {
+            scheduler = config.scheduler ? std::make_unique<task_scheduler>(*config.scheduler)
+                                         : std::make_unique<task_scheduler>(config.num_worker_threads);
+        } catch (const std::invalid_argument &e) {
+            invalid("attach", std::string("init_config::scheduler: ") + e.what());
+        }
     }
     auto &s = registry.ctx().emplace<settings>();
     s.execution_mode = config.execution_mode;
-    registry.ctx().emplace<world_state>();
+    registry.ctx().emplace<world_state>().scheduler = std::move(scheduler);
     registry.ctx().emplace<contact_events>();
     connect_registry_listeners(registry);
     adopt_existing_bodies(registry);

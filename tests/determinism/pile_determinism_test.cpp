@@ -36,8 +36,8 @@ struct hasher {
 struct pile_run {
     registry reg;
     std::vector<entity> bodies;
-    pile_run() {
-        attach(reg);
+    explicit pile_run(const init_config &config = {}) {
+        attach(reg, config);
         scenes::make_ground(reg);
         bodies = scenes::make_pile(reg, pile_bodies, 8, 2, scenes::pile_shapes::with_polyhedra);
     }
@@ -55,8 +55,8 @@ struct pile_run {
     }
 };
 
-std::uint64_t run_pile() {
-    pile_run run;
+std::uint64_t run_pile(const init_config &config = {}) {
+    pile_run run(config);
     for (int i = 0; i < pile_steps; ++i)
         step_simulation(run.reg);
     return run.hash();
@@ -72,6 +72,18 @@ TEST(determinism, the_pile_gives_the_same_transforms_every_run) {
     auto first = run_pile();
     auto second = run_pile();
     EXPECT_EQ(hex(first), hex(second));
+}
+
+// The multithreaded step merges every parallel result in a fixed order: whatever the thread
+// count, it gives the sequential step's transforms bit for bit.
+TEST(determinism, the_multithreaded_step_gives_the_sequential_transforms) {
+    auto sequential = run_pile();
+    for (unsigned threads : {1u, 2u, 4u}) {
+        init_config config;
+        config.execution_mode = execution_mode::sequential_multithreaded;
+        config.num_worker_threads = threads;
+        EXPECT_EQ(hex(run_pile(config)), hex(sequential)) << threads << " threads";
+    }
 }
 
 // No state hidden outside the registry: two worlds stepped in turn match a world run alone.

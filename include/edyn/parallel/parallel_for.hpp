@@ -65,6 +65,18 @@ void parallel_for(task_scheduler &scheduler, Index first, Index last, std::size_
     if (context.error) std::rethrow_exception(context.error);
 }
 
+// As above with an optional scheduler: without one (null), every call runs in the calling
+// thread, in index order.
+template<typename Index, typename Fn>
+void parallel_for(task_scheduler *scheduler, Index first, Index last, std::size_t grain, Fn &&fn) {
+    if (scheduler) {
+        parallel_for(*scheduler, first, last, grain, std::forward<Fn>(fn));
+    } else {
+        for (auto i = first; i < last; ++i)
+            fn(i);
+    }
+}
+
 } // namespace edyn
 
 #endif // EDYN_PARALLEL_PARALLEL_FOR_HPP

@@ -1,7 +1,9 @@
 #ifndef EDYN_SIMULATION_EXECUTION_MODE_HPP
 #define EDYN_SIMULATION_EXECUTION_MODE_HPP
 
+#include "edyn/parallel/task_scheduler.hpp"
 #include <cstdint>
+#include <optional>
 
 namespace edyn {
 
@@ -15,9 +17,15 @@ enum class execution_mode : std::uint8_t {
 };
 
 struct init_config {
-    // The manual makes asynchronous the default; until that mode and the multithreaded one are
-    // available, sequential is, and asking for another throws std::invalid_argument.
+    // The manual makes asynchronous the default; until that mode is available, sequential is,
+    // and asking for asynchronous throws std::invalid_argument.
     edyn::execution_mode execution_mode{edyn::execution_mode::sequential};
+    // sequential_multithreaded only: threads that run the step's parallel phases, the calling
+    // thread included; 0 means one per hardware thread. Threads are made once, in attach.
+    unsigned num_worker_threads{0};
+    // sequential_multithreaded only: the program's own scheduler, instead of edyn's oneTBB
+    // arena (num_worker_threads is then ignored).
+    std::optional<task_hooks> scheduler{};
 };
 
 } // namespace edyn

@@ -3,11 +3,14 @@
 
 #include "edyn/collision/broadphase.hpp"
 #include "edyn/collision/collision_result.hpp"
+#include "edyn/collision/manifold_update.hpp"
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/solver_body.hpp"
+#include "edyn/parallel/task_scheduler.hpp"
 #include "edyn/simulation/island_manager.hpp"
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace edyn {
@@ -40,8 +43,13 @@ struct world_state {
     // with the old shape are not reused (see can_reuse_contacts).
     std::uint32_t shape_epoch{0};
 
-    // Manifold entities in the order the narrowphase visits them.
+    // Manifold entities in the order the narrowphase visits them, and what changed in each.
     std::vector<entity> manifolds;
+    std::vector<contact_point_changes> manifold_changes;
+
+    // Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
+    // other modes, where every phase runs on the calling thread.
+    std::unique_ptr<task_scheduler> scheduler;
 };
 
 } // namespace edyn

@@ -208,3 +208,11 @@ TEST(thread_pool, runs_every_range_once_with_the_caller_taking_part) {
         }
     }
 }
+
+TEST(parallel_for, without_a_scheduler_runs_in_order_in_the_calling_thread) {
+    std::vector<int> order;
+    parallel_for(static_cast<task_scheduler *>(nullptr), 0, 1000, 10, [&](int i) { order.push_back(i); });
+    std::vector<int> expected(1000);
+    std::iota(expected.begin(), expected.end(), 0);
+    EXPECT_EQ(order, expected);
+}

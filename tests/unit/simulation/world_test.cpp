@@ -50,13 +50,32 @@ TEST(world, attach_detach_attach_keeps_the_programs_entities) {
     detach(reg);
 }
 
-TEST(world, modes_not_yet_available_are_refused) {
+TEST(world, the_asynchronous_mode_not_yet_available_is_refused) {
     registry reg;
     EXPECT_THROW(attach(reg, init_config{execution_mode::asynchronous}), std::invalid_argument);
-    EXPECT_THROW(attach(reg, init_config{execution_mode::sequential_multithreaded}), std::invalid_argument);
     EXPECT_FALSE(is_attached(reg));
     attach(reg, init_config{execution_mode::sequential});
     EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential);
+}
+
+TEST(world, sequential_multithreaded_attaches_with_its_own_threads_or_the_programs_scheduler) {
+    registry reg;
+    init_config config;
+    config.execution_mode = execution_mode::sequential_multithreaded;
+    config.num_worker_threads = 2;
+    attach(reg, config);
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential_multithreaded);
+    detach(reg);
+
+    // Incomplete hooks are refused, naming the field, and nothing is attached.
+    config.scheduler = task_hooks{};
+    try {
+        attach(reg, config);
+        ADD_FAILURE() << "attach accepted task_hooks without enqueue";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("init_config::scheduler"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(is_attached(reg));
 }
 
 TEST(world, update_runs_as_many_fixed_steps_as_the_time_asks_for) {
