@@ -27,6 +27,13 @@ struct world_fixture : ::testing::Test {
     vector3 angular(entity e) const { return reg.get<angvel>(e); }
 };
 
+// What rigidbody_def::sleeping_disabled does, for every dynamic body a scene builder made: a
+// stack that falls asleep stands whatever the solver does, so stability is measured awake.
+inline void disable_sleeping(registry &reg) {
+    for (auto e : reg.view<dynamic_tag>())
+        reg.emplace_or_replace<sleeping_disabled_tag>(e);
+}
+
 inline rigidbody_def sphere_def(scalar radius, const vector3 &position, scalar mass = 1) {
     rigidbody_def def;
     def.mass = mass;

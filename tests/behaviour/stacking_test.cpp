@@ -5,17 +5,42 @@
 using namespace edyn;
 using stacking = edyn::test::world_fixture;
 
-TEST_F(stacking, pyramid_of_210_boxes_stands_for_ten_seconds) {
+// Once asleep a stack stands whatever the solver does: this checks that the pyramid settles
+// quickly enough to fall asleep before it has moved, not that the solver holds it up.
+TEST_F(stacking, pyramid_of_210_boxes_falls_asleep_before_it_moves) {
     scenes::make_ground(reg);
     auto boxes = scenes::make_pyramid(reg, 20);
     ASSERT_EQ(boxes.size(), 210u);
     auto top = boxes.back();
     auto start = pos(top);
     run_for(10);
+    for (auto e : boxes) {
+        ASSERT_TRUE(isfinite(pos(e)));
+        ASSERT_TRUE(reg.all_of<sleeping_tag>(e)) << "a box is still awake after 10 s";
+    }
     auto moved = length(pos(top) - start);
     EXPECT_LT(moved, scalar(0.01)) << "top box moved " << moved << " m";
-    for (auto e : boxes)
+}
+
+// The solver's own stability: the benchmark's pyramid, awake for all of the 10 s.
+TEST_F(stacking, pyramid_of_210_boxes_with_sleeping_off_stands_for_ten_seconds) {
+    scenes::make_ground(reg);
+    auto boxes = scenes::make_pyramid(reg, 20);
+    edyn::test::disable_sleeping(reg);
+    auto top = boxes.back();
+    auto start = pos(top);
+    run_for(10);
+    for (auto e : boxes) {
         ASSERT_TRUE(isfinite(pos(e)));
+        ASSERT_FALSE(reg.all_of<sleeping_tag>(e));
+    }
+    // The target is below 1 cm (Jolt's pyramid drifts 2.7 cm, Bullet's 25 cm); the solver
+    // does not meet it yet: the top box creeps out of the pyramid's plane, steadily after the
+    // first 2 s, and had moved 6.6 cm at 10 s when this bound was set. The bound is that figure
+    // and a fifth more, so that the creep cannot grow unnoticed; lower it as the solver improves.
+    const scalar measured_when_set = scalar(0.066), bound = measured_when_set * scalar(1.2);
+    auto moved = length(pos(top) - start);
+    EXPECT_LT(moved, bound) << "top box moved " << moved << " m, bound " << bound << " m (target 0.01 m)";
 }
 
 TEST_F(stacking, tower_of_30_boxes_stands_for_ten_seconds) {
