@@ -3,6 +3,7 @@
 #include <edyn_scenes/scenes.hpp>
 
 using namespace edyn;
+using edyn::test::fall;
 using edyn::test::world_fixture;
 
 namespace {
@@ -19,14 +20,6 @@ void expect_near(const vector3 &measured, const vector3 &expected, scalar tolera
     EXPECT_LE(length(measured - expected), tolerance)
         << what << ": measured (" << measured.x << ", " << measured.y << ", " << measured.z << "), expected ("
         << expected.x << ", " << expected.y << ", " << expected.z << ")";
-}
-
-// How far a body falls freely in `seconds`: sub-stepped semi-implicit Euler falls
-// g h^2 n (n + 1) / 2 after n sub-steps of h (0.3% more than g t^2 / 2 after 1 s).
-scalar fall(const registry &reg, scalar seconds) {
-    auto n = std::round(seconds / get_fixed_dt(reg)) * scalar(get_solver_substeps(reg));
-    auto h = seconds / n;
-    return g * h * h * n * (n + 1) / 2;
 }
 
 } // namespace

@@ -3,11 +3,11 @@
 #include <edyn_scenes/scenes.hpp>
 
 using namespace edyn;
+using edyn::test::fall;
 using edyn::test::world_fixture;
 
 namespace {
 
-constexpr scalar g = scalar(9.8);
 const vector3 unit_half{scalar(0.5), scalar(0.5), scalar(0.5)};
 
 struct kinematic_push : world_fixture {
@@ -107,17 +107,9 @@ struct filtering : world_fixture {
         return make_rigidbody(reg, def);
     }
 
-    // How far a body falls freely in `seconds`: sub-stepped semi-implicit Euler falls
-    // g h^2 n (n + 1) / 2 after n sub-steps of h (0.3% more than g t^2 / 2 after 1 s).
-    scalar fall(scalar seconds) const {
-        auto n = std::round(seconds / get_fixed_dt(reg)) * scalar(get_solver_substeps(reg));
-        auto h = seconds / n;
-        return g * h * h * n * (n + 1) / 2;
-    }
-
     bool fell_through(entity ball) const {
         // After 1 s of free fall from 1 m above the ground.
-        return std::abs(pos(ball).y - (1 + r - fall(1))) < scalar(1e-3);
+        return std::abs(pos(ball).y - (1 + r - fall(reg, 1))) < scalar(1e-3);
     }
     bool landed(entity ball) const { return std::abs(pos(ball).y - r) < scalar(0.01); }
 
@@ -198,7 +190,7 @@ TEST_F(filtering, changing_the_filter_of_a_resting_body_at_run_time_drops_it_thr
     reg.replace<collision_filter>(ball, collision_filter{collision_filter::all_groups, ~std::uint64_t(1)});
     EXPECT_EQ(manifold_count(ball), 0u) << "the manifold with the ground survived the new filter";
     run_for(1);
-    EXPECT_NEAR(pos(ball).y, r - fall(1), scalar(1e-3))
+    EXPECT_NEAR(pos(ball).y, r - fall(reg, 1), scalar(1e-3))
         << "ball at " << pos(ball).y << ", expected free fall";
 }
 
@@ -209,7 +201,7 @@ TEST_F(filtering, excluding_a_resting_pair_at_run_time_drops_it_through) {
     exclude_collision(reg, ball, ground);
     EXPECT_EQ(manifold_count(ball), 0u);
     run_for(1);
-    EXPECT_NEAR(pos(ball).y, r - fall(1), scalar(1e-3))
+    EXPECT_NEAR(pos(ball).y, r - fall(reg, 1), scalar(1e-3))
         << "ball at " << pos(ball).y << ", expected free fall";
 }
 
@@ -221,6 +213,6 @@ TEST_F(filtering, filtering_the_ground_out_from_under_resting_bodies_drops_them_
     reg.replace<collision_filter>(ground, collision_filter{1, 0});
     EXPECT_EQ(manifold_count(ball), 0u);
     run_for(1);
-    EXPECT_NEAR(pos(ball).y, r - fall(1), scalar(1e-3))
+    EXPECT_NEAR(pos(ball).y, r - fall(reg, 1), scalar(1e-3))
         << "ball at " << pos(ball).y << ", expected free fall";
 }

@@ -1,6 +1,7 @@
 // Collision events, sensors, destroying bodies in contact, and step callbacks.
 #include "behaviour_support.hpp"
 #include <algorithm>
+#include <array>
 #include <edyn_scenes/scenes.hpp>
 #include <vector>
 
@@ -23,8 +24,8 @@ struct event_log {
         scalar normal_impulse;
         std::uint32_t num_points;
         std::array<entity, 2> bodies;
-        // Position of the manifold's first body when the event was delivered.
-        vector3 body_position;
+        // Positions of the manifold's bodies when the event was delivered.
+        std::array<vector3, 2> body_positions;
     };
     std::vector<record> records;
 
@@ -36,7 +37,8 @@ struct event_log {
 };
 
 void log_event(registry &reg, event_log::kind k, entity manifold, unsigned id) {
-    event_log::record rec{k, manifold, id, get_step_count(reg), 0, 0, {null, null}, vector3_zero};
+    event_log::record rec{k, manifold, id,           get_step_count(reg),
+                          0, 0,        {null, null}, {vector3_zero, vector3_zero}};
     if (auto *m = reg.try_get<contact_manifold>(manifold)) {
         // As in the manual's example.
         for (unsigned i = 0; i < m->num_points; ++i) {
@@ -45,8 +47,10 @@ void log_event(registry &reg, event_log::kind k, entity manifold, unsigned id) {
         }
         rec.num_points = m->num_points;
         rec.bodies = m->body;
-        if (reg.valid(m->body[0]) && reg.all_of<position>(m->body[0]))
-            rec.body_position = reg.get<position>(m->body[0]);
+        for (int i = 0; i < 2; ++i) {
+            if (reg.valid(m->body[i]) && reg.all_of<position>(m->body[i]))
+                rec.body_positions[i] = reg.get<position>(m->body[i]);
+        }
     }
     reg.ctx().get<event_log>().records.push_back(rec);
 }
@@ -95,6 +99,7 @@ TEST_F(events, a_landing_box_starts_contact_once_with_its_impulse_and_points) {
     auto box = make_rigidbody(reg, def);
 
     auto v_before = vel(box).y;
+    auto start = pos(box);
     step_simulation(reg);
     auto v_after = vel(box).y;
 
@@ -103,8 +108,14 @@ TEST_F(events, a_landing_box_starts_contact_once_with_its_impulse_and_points) {
                                  [](auto &r) { return r.type == kind::started; });
     // Delivered at the end of the step: the body already sits where the step left it.
     EXPECT_EQ(started.step, 1u);
-    auto body_pos = started.bodies[0] == box ? pos(box) : vector3_zero;
-    EXPECT_EQ(started.body_position, body_pos) << "event delivered before the step finished";
+    // The box is the body that moved in the step (the ground stays at the origin), so its
+    // position tells when the event was delivered.
+    auto box_index = started.bodies[0] == box ? 0 : 1;
+    ASSERT_EQ(started.bodies[box_index], box);
+    ASSERT_NE(pos(box), start) << "the box did not move in the step";
+    auto seen = started.body_positions[box_index];
+    EXPECT_EQ(seen, pos(box)) << "event delivered before the step finished: box at y = " << seen.y
+                              << ", after the step at y = " << pos(box).y << ", before it at y = " << start.y;
     // One point_created per point in the manifold (a face on a plane: 4).
     EXPECT_EQ(started.num_points, 4u);
     EXPECT_EQ(log().count(kind::point_created, started.manifold), started.num_points);

@@ -1,24 +1,87 @@
-// The stacking bar: a 20-row pyramid and a 30-box tower stand still for 10 s.
+// The stacking bar: pyramids, towers, a brick wall and spheres in a box stand still for 10 s
+// with sleeping off, so that the solver holds them up. Where it does not yet, the test says
+// so and bounds what it measured, so that a worse solver shows.
 #include "behaviour_support.hpp"
 #include <edyn_scenes/scenes.hpp>
+#include <vector>
 
 using namespace edyn;
-using stacking = edyn::test::world_fixture;
 
-TEST_F(stacking, pyramid_of_210_boxes_stands_for_ten_seconds) {
+namespace {
+
+struct stacking : edyn::test::world_fixture {
+    // The largest distances any of `bodies` moved from where it started, across and along
+    // gravity, over `seconds` with sleeping off; fails at once on a body that is not finite.
+    struct drift {
+        scalar horizontal{0}, vertical{0};
+    };
+    drift run_awake(const std::vector<entity> &bodies, double seconds) {
+        edyn::test::disable_sleeping(reg);
+        std::vector<vector3> start;
+        for (auto e : bodies)
+            start.push_back(pos(e));
+        drift worst;
+        auto steps = int(std::lround(seconds / double(get_fixed_dt(reg))));
+        for (int i = 0; i < steps; ++i) {
+            step_simulation(reg);
+            for (std::size_t k = 0; k < bodies.size(); ++k) {
+                auto d = pos(bodies[k]) - start[k];
+                EXPECT_TRUE(isfinite(d)) << "body " << k << " is not finite after step " << i + 1;
+                if (!isfinite(d)) return worst;
+                worst.horizontal = std::max(worst.horizontal, std::hypot(d.x, d.z));
+                worst.vertical = std::max(worst.vertical, std::abs(d.y));
+            }
+        }
+        return worst;
+    }
+};
+
+// What a stack standing still may move: 1 cm, the bar the 30-box tower is held to asleep and
+// the pyramid's target.
+constexpr scalar standing_still = scalar(0.01);
+
+} // namespace
+
+// Once asleep a stack stands whatever the solver does: this checks that the pyramid settles
+// quickly enough to fall asleep before it has moved, not that the solver holds it up.
+TEST_F(stacking, pyramid_of_210_boxes_falls_asleep_before_it_moves) {
     scenes::make_ground(reg);
     auto boxes = scenes::make_pyramid(reg, 20);
     ASSERT_EQ(boxes.size(), 210u);
     auto top = boxes.back();
     auto start = pos(top);
     run_for(10);
+    for (auto e : boxes) {
+        ASSERT_TRUE(isfinite(pos(e)));
+        ASSERT_TRUE(reg.all_of<sleeping_tag>(e)) << "a box is still awake after 10 s";
+    }
     auto moved = length(pos(top) - start);
     EXPECT_LT(moved, scalar(0.01)) << "top box moved " << moved << " m";
-    for (auto e : boxes)
-        ASSERT_TRUE(isfinite(pos(e)));
 }
 
-TEST_F(stacking, tower_of_30_boxes_stands_for_ten_seconds) {
+// The solver's own stability: the benchmark's pyramid, awake for all of the 10 s.
+TEST_F(stacking, pyramid_of_210_boxes_with_sleeping_off_stands_for_ten_seconds) {
+    scenes::make_ground(reg);
+    auto boxes = scenes::make_pyramid(reg, 20);
+    edyn::test::disable_sleeping(reg);
+    auto top = boxes.back();
+    auto start = pos(top);
+    run_for(10);
+    for (auto e : boxes) {
+        ASSERT_TRUE(isfinite(pos(e)));
+        ASSERT_FALSE(reg.all_of<sleeping_tag>(e));
+    }
+    // The target is below 1 cm (Jolt's pyramid drifts 2.7 cm, Bullet's 25 cm); the solver
+    // does not meet it yet: the top box creeps out of the pyramid's plane, steadily after the
+    // first 2 s, and had moved 6.6 cm at 10 s when this bound was set. The bound is that figure
+    // and a fifth more, so that the creep cannot grow unnoticed; lower it as the solver improves.
+    const scalar measured_when_set = scalar(0.066), bound = measured_when_set * scalar(1.2);
+    auto moved = length(pos(top) - start);
+    EXPECT_LT(moved, bound) << "top box moved " << moved << " m, bound " << bound << " m (target 0.01 m)";
+}
+
+// Asleep, like the first pyramid above; the tower awake is measured further down.
+TEST_F(stacking, tower_of_30_boxes_falls_asleep_standing) {
     scenes::make_ground(reg);
     auto boxes = scenes::make_tower(reg, 30);
     auto start = pos(boxes.back());
@@ -40,9 +103,12 @@ TEST_F(stacking, tower_of_30_boxes_stands_for_ten_seconds) {
 }
 
 // A pyramid four times the size: the top settles by the springs' compression and does not creep.
-TEST_F(stacking, pyramid_of_820_boxes_does_not_creep) {
+// Awake: with sleeping on it falls asleep at 7 s, and would stand from then on whatever the
+// solver did. Measured awake: the top 1.3 cm sideways and 1.4 cm down at 10 s.
+TEST_F(stacking, pyramid_of_820_boxes_with_sleeping_off_does_not_creep) {
     scenes::make_ground(reg);
     auto boxes = scenes::make_pyramid(reg, 40);
+    edyn::test::disable_sleeping(reg);
     auto top = boxes.back();
     auto start = pos(top);
     run_for(10);
@@ -50,4 +116,75 @@ TEST_F(stacking, pyramid_of_820_boxes_does_not_creep) {
     auto sideways = length(vector3{now.x - start.x, 0, now.z - start.z});
     EXPECT_LT(sideways, scalar(0.02)) << "top box crept sideways by " << sideways << " m";
     EXPECT_NEAR(now.y, start.y, scalar(0.03)) << "top box sank " << start.y - now.y << " m";
+}
+
+// The tower the contact damping was tuned on, awake: it does not stand. Its top leans away
+// ever faster, 4 cm at 5 s and 21.6 cm at 10 s when this bound was set, and would topple. The
+// target is the 1 cm the sleeping tower is held to; until the solver meets it, the bound is
+// the measured lean and a fifth, so that a worse solver shows.
+TEST_F(stacking, tower_of_30_boxes_with_sleeping_off_leans_no_further_than_when_measured) {
+    scenes::make_ground(reg);
+    auto boxes = scenes::make_tower(reg, 30);
+    auto worst = run_awake(boxes, 10);
+    const scalar measured_when_set = scalar(0.216), bound = measured_when_set * scalar(1.2);
+    EXPECT_LT(worst.horizontal, bound) << "a box moved sideways by " << worst.horizontal << " m, bound "
+                                       << bound << " m (target " << standing_still << " m)";
+}
+
+// 15 boxes of different sizes and masses, heavy ones on light ones (up to 8 times their mass).
+TEST_F(stacking, tower_of_15_mixed_boxes_with_sleeping_off_stands_for_ten_seconds) {
+    scenes::make_ground(reg);
+    auto boxes = scenes::make_mixed_tower(reg, 15);
+    auto worst = run_awake(boxes, 10);
+    // The soft contacts give under the load, 15 of them in series, the lowest under 59 kg: as
+    // they take it in the first tenth of a second the top box dips by up to 3.2 cm, then
+    // rests 1.8 cm low (measured) and holds that height. Sideways the boxes creep, 1.6 cm at
+    // 10 s when this was set and still growing: the target is 1 cm, and the bound that figure
+    // and a fifth.
+    const scalar sink_measured = scalar(0.032), creep_measured = scalar(0.016);
+    EXPECT_LT(worst.vertical, sink_measured * scalar(1.2))
+        << "a box moved up or down by " << worst.vertical << " m, measured " << sink_measured
+        << " m when set";
+    EXPECT_LT(worst.horizontal, creep_measured * scalar(1.2))
+        << "a box crept sideways by " << worst.horizontal << " m, measured " << creep_measured
+        << " m when set (target " << standing_still << " m)";
+    // Nothing fell off: each box still rests on the one below, well inside its top face.
+    for (std::size_t i = 1; i < boxes.size(); ++i) {
+        auto below = pos(boxes[i - 1]), above = pos(boxes[i]);
+        auto offset = std::hypot(above.x - below.x, above.z - below.z);
+        EXPECT_LT(offset, standing_still) << "box " << i << " is off the one below by " << offset << " m";
+        EXPECT_GT(above.y, below.y) << "box " << i;
+    }
+}
+
+// 10 rows of 8 bricks, every other row shifted by half a brick: each brick rests on two.
+TEST_F(stacking, brick_wall_in_running_bond_with_sleeping_off_stands_for_ten_seconds) {
+    scenes::make_ground(reg);
+    const vector3 brick{scalar(0.25), scalar(0.125), scalar(0.125)};
+    auto bricks = scenes::make_brick_wall(reg, 10, 8, brick);
+    ASSERT_EQ(bricks.size(), 5u * 8 + 5u * 9);
+    auto worst = run_awake(bricks, 10);
+    // Measured: 5 mm sideways (a half brick at an end of the top row, across the wall) and
+    // 2.6 mm down.
+    EXPECT_LT(worst.horizontal, standing_still) << "a brick moved sideways by " << worst.horizontal << " m";
+    EXPECT_LT(worst.vertical, standing_still) << "a brick moved up or down by " << worst.vertical << " m";
+}
+
+// 4 layers of spheres stacked as fruit is (4 by 4, 3 by 3, 4 by 4, 3 by 3) in an open box.
+TEST_F(stacking, spheres_stacked_in_a_box_with_sleeping_off_stand_for_ten_seconds) {
+    auto scene = scenes::make_spheres_in_box(reg, 4, 4, scalar(0.25));
+    ASSERT_EQ(scene.spheres.size(), 50u);
+    auto worst = run_awake(scene.spheres, 10);
+    // Measured: 4 mm each way, as the layers settle into each other in the first second.
+    EXPECT_LT(worst.horizontal, standing_still) << "a sphere moved sideways by " << worst.horizontal << " m";
+    EXPECT_LT(worst.vertical, standing_still) << "a sphere moved up or down by " << worst.vertical << " m";
+    // None left the box: every centre is inside its walls, above its floor and below the top
+    // of the stack.
+    auto limit = scene.inner_half_width - scalar(0.25);
+    for (auto e : scene.spheres) {
+        auto p = pos(e);
+        EXPECT_LE(std::max(std::abs(p.x), std::abs(p.z)), limit + standing_still)
+            << "a sphere is at (" << p.x << ", " << p.y << ", " << p.z << ")";
+        EXPECT_GT(p.y, scalar(0.25) - standing_still) << "a sphere sank to y = " << p.y;
+    }
 }

@@ -20,6 +20,40 @@ std::vector<entity> make_pyramid(registry &registry, unsigned base, scalar half_
 std::vector<entity> make_tower(registry &registry, unsigned count, scalar half_extent = scalar(0.5),
                                const vector3 &origin = vector3_zero);
 
+// Stacks the solver's contact constants were not tuned on (they were tuned with the tower and
+// the pyramids above); each stands on its own when built, with no ground but where stated.
+
+// A tower of `count` boxes on the ground, one on top of the other, of different widths,
+// depths, heights and masses (0.5 to 10 kg, up to 8 times their neighbours'): the sizes go
+// round a fixed table, so that heavy boxes stand on light ones and wide ones on narrow ones.
+// Returns them bottom up.
+std::vector<entity> make_mixed_tower(registry &registry, unsigned count = 15,
+                                     const vector3 &origin = vector3_zero);
+
+// A wall of bricks in running bond standing on the ground along x, centred on `origin`: `rows`
+// rows of `bricks_per_row` bricks of half extents `brick_half_extents` and 2 kg, every other
+// row shifted by half a brick and closed at each end by a half brick (1 kg), so that the ends
+// are flush. Returns the bricks row by row from the bottom, each row along +x.
+std::vector<entity> make_brick_wall(registry &registry, unsigned rows, unsigned bricks_per_row,
+                                    const vector3 &brick_half_extents = {scalar(0.25), scalar(0.125),
+                                                                         scalar(0.125)},
+                                    const vector3 &origin = vector3_zero);
+
+// An open-top box of static boxes (floor and four walls, no ground needed) holding `layers`
+// layers of spheres of `radius`, stacked as fruit is: `width` by `width` spheres in the even
+// layers, filling the box wall to wall, and (width - 1) by (width - 1) in the odd ones, each
+// sphere in the hollow between four below. The walls reach the top of the last full layer.
+struct spheres_in_box_scene {
+    std::vector<entity> container; // floor, then the walls
+    std::vector<entity> spheres;   // layer by layer from the bottom
+    // The inside of the box: the floor's top is at `origin.y`, the walls at `origin.x` and
+    // `origin.z` plus or minus `inner_half_width`, their tops at `origin.y` + `wall_height`.
+    scalar inner_half_width{0};
+    scalar wall_height{0};
+};
+spheres_in_box_scene make_spheres_in_box(registry &registry, unsigned layers = 4, unsigned width = 4,
+                                         scalar radius = scalar(0.25), const vector3 &origin = vector3_zero);
+
 enum class pile_shapes : std::uint8_t {
     // Boxes, spheres, capsules and cylinders in equal share.
     primitives,

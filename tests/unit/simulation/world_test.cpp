@@ -100,12 +100,20 @@ TEST(world, steps_per_update_are_capped_and_the_rest_dropped) {
     attach(reg);
     set_max_steps_per_update(reg, 4);
     EXPECT_THROW(set_max_steps_per_update(reg, 0), std::invalid_argument);
+    auto dt = double(get_fixed_dt(reg));
     update(reg, 0.0);
-    update(reg, 10.0); // a long stall
+    // A stall of 100.25 steps: 4 run, the quarter step stays in the accumulator and the 96
+    // whole steps beyond the cap are dropped.
+    update(reg, 100.25 * dt);
     EXPECT_EQ(get_step_count(reg), 4u);
-    update(reg, 10.0 + get_fixed_dt(reg) * 1.01);
-    // Only one more step: the stall was not caught up with.
-    EXPECT_LE(get_step_count(reg), 6u);
+    // 1.01 steps later the accumulator holds 1.26 steps: exactly one more step. Had the stall
+    // been kept, it would be the cap again.
+    update(reg, 101.26 * dt);
+    EXPECT_EQ(get_step_count(reg), 5u) << "the stall was caught up with";
+    // The 0.26 left over and 0.5 more make no whole step.
+    update(reg, 101.76 * dt);
+    EXPECT_EQ(get_step_count(reg), 5u);
+    EXPECT_NEAR(get_simulation_time(reg), 5 * dt, 1e-6);
 }
 
 TEST(world, pause_stops_update_but_not_step_simulation) {
