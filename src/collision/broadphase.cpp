@@ -158,24 +158,23 @@ void broadphase::destroy_pairs_of(registry &registry, entity e, bool is_static, 
         auto &other_tree = trees[t];
         other_tree.query(fat, [&](dynamic_tree::node_id id) {
             auto key = pair_key(e, other_tree.get_payload(id));
-            if (record_of_pair.count(key) != 0) keys.push_back(key);
+            if (record_of_pair.contains(key)) keys.push_back(key);
         });
     }
     std::sort(keys.begin(), keys.end());
 
     for (auto key : keys) {
-        auto it = record_of_pair.find(key);
-        if (it == record_of_pair.end()) continue; // a destruction listener got there first
-        auto &rec = records[it->second];
+        auto *index = record_of_pair.find(key);
+        if (index == nullptr) continue; // a destruction listener got there first
+        auto &rec = records[*index];
         if (keep_if != nullptr && keep_if(registry, rec.body[0], rec.body[1])) continue;
-        destroy_record(registry, it->second);
+        destroy_record(registry, *index);
     }
 }
 
 entity broadphase::get_manifold(entity first, entity second) const noexcept {
-    auto it = record_of_pair.find(pair_key(first, second));
-    if (it == record_of_pair.end()) return null;
-    return records[it->second].manifold;
+    auto *index = record_of_pair.find(pair_key(first, second));
+    return index ? records[*index].manifold : null;
 }
 
 void broadphase::destroy_record(registry &registry, std::size_t index) {
@@ -184,8 +183,8 @@ void broadphase::destroy_record(registry &registry, std::size_t index) {
 
     if (index + 1 != records.size()) {
         records[index] = records.back();
-        record_of_pair[pair_key(records[index].body[0], records[index].body[1])] =
-            static_cast<std::uint32_t>(index);
+        record_of_pair.insert_or_assign(pair_key(records[index].body[0], records[index].body[1]),
+                                        static_cast<std::uint32_t>(index));
     }
     records.pop_back();
 
@@ -229,7 +228,7 @@ void broadphase::collect_new_pairs(entity e) {
         auto &other_tree = trees[t];
         other_tree.query(fat, [&](dynamic_tree::node_id id) {
             auto other = other_tree.get_payload(id);
-            if (other == e || record_of_pair.count(pair_key(e, other)) != 0) return;
+            if (other == e || record_of_pair.contains(pair_key(e, other))) return;
             new_pair pair{{e, other}, {p.node, id}, {is_static, t == 1}};
             if (to_integral(other) < to_integral(e)) {
                 std::swap(pair.body[0], pair.body[1]);
@@ -257,7 +256,8 @@ void broadphase::create_manifolds(registry &registry) {
     for (auto &pair : pairs_scratch) {
         if (!should_collide(registry, pair.body[0], pair.body[1])) continue;
         auto manifold_entity = registry.create();
-        record_of_pair[pair_key(pair.body[0], pair.body[1])] = static_cast<std::uint32_t>(records.size());
+        record_of_pair.insert_or_assign(pair_key(pair.body[0], pair.body[1]),
+                                        static_cast<std::uint32_t>(records.size()));
         records.push_back({{pair.body[0], pair.body[1]},
                            manifold_entity,
                            {pair.node[0], pair.node[1]},

@@ -2,12 +2,12 @@
 #define EDYN_COLLISION_BROADPHASE_HPP
 
 #include "edyn/collision/dynamic_tree.hpp"
+#include "edyn/collision/pair_map.hpp"
 #include "edyn/collision/should_collide.hpp"
 #include "edyn/ecs/fwd.hpp"
 #include <array>
 #include <cstdint>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 namespace edyn {
@@ -119,7 +119,7 @@ private:
     std::vector<entity> queue;
     std::vector<manifold_record> records;
     // Pair key -> position in `records`; only looked up, never iterated.
-    std::unordered_map<std::uint64_t, std::uint32_t> record_of_pair;
+    pair_map record_of_pair;
     std::vector<new_pair> pairs_scratch;
     // Dynamic tree nodes reinserted in the current update, also flagged by node id: only their
     // pairs can have separated.

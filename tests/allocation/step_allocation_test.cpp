@@ -1,0 +1,95 @@
+// A step of a world that stopped growing allocates nothing: the solver's and the narrowphase's
+// scratch memory is reused from step to step. This executable replaces the global operator new
+// to count allocations, which is why it is one of its own.
+#include <atomic>
+#include <cstdlib>
+#include <edyn/edyn.hpp>
+#include <edyn_scenes/scenes.hpp>
+#include <gtest/gtest.h>
+#include <new>
+
+namespace {
+
+std::atomic<bool> counting{false};
+std::atomic<std::size_t> allocations{0};
+
+void *allocate(std::size_t size) {
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    if (size == 0) size = 1;
+    if (auto *p = std::malloc(size)) return p;
+    throw std::bad_alloc();
+}
+
+void *allocate_aligned(std::size_t size, std::align_val_t alignment) {
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    auto align = static_cast<std::size_t>(alignment);
+    size = (size + align - 1) / align * align;
+    if (auto *p = std::aligned_alloc(align, size == 0 ? align : size)) return p;
+    throw std::bad_alloc();
+}
+
+} // namespace
+
+void *operator new(std::size_t size) { return allocate(size); }
+void *operator new[](std::size_t size) { return allocate(size); }
+void *operator new(std::size_t size, std::align_val_t alignment) { return allocate_aligned(size, alignment); }
+void *operator new[](std::size_t size, std::align_val_t alignment) {
+    return allocate_aligned(size, alignment);
+}
+void operator delete(void *p) noexcept { std::free(p); }
+void operator delete[](void *p) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+void operator delete(void *p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+namespace edyn {
+namespace {
+
+// Steps a settled, awake 1,024-body pile (the bodies keep touching, sliding a little and
+// trading contact points, but the world no longer grows) and counts the allocations of 100
+// more steps.
+std::size_t allocations_per_100_settled_steps(const init_config &config) {
+    registry reg;
+    attach(reg, config);
+    scenes::make_ground(reg);
+    auto bodies = scenes::make_pile(reg, 1024, 16, 2, scenes::pile_shapes::with_polyhedra);
+    for (auto e : bodies)
+        reg.emplace<sleeping_disabled_tag>(e);
+    for (int i = 0; i < 300; ++i)
+        step_simulation(reg);
+
+    allocations = 0;
+    counting = true;
+    for (int i = 0; i < 100; ++i)
+        step_simulation(reg);
+    counting = false;
+    detach(reg);
+    return allocations.load();
+}
+
+TEST(step_allocation, a_settled_pile_steps_without_allocating) {
+    EXPECT_EQ(allocations_per_100_settled_steps({}), 0u) << "allocations in 100 steps (sequential)";
+}
+
+TEST(step_allocation, a_settled_pile_steps_without_allocating_on_worker_threads) {
+    init_config config;
+    config.execution_mode = execution_mode::sequential_multithreaded;
+    config.num_worker_threads = 2;
+    EXPECT_EQ(allocations_per_100_settled_steps(config), 0u) << "allocations in 100 steps (2 threads)";
+}
+
+TEST(step_allocation, the_counter_sees_allocations) {
+    // Guards the test above against a counter that never counts.
+    allocations = 0;
+    counting = true;
+    auto *p = new std::vector<int>(100);
+    counting = false;
+    delete p;
+    EXPECT_EQ(allocations.load(), 2u);
+}
+
+} // namespace
+} // namespace edyn
