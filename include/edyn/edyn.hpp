@@ -43,6 +43,7 @@
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 
+#include "edyn/constraints/constraint_links.hpp"
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/external_entity.hpp"

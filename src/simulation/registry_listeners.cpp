@@ -1,6 +1,7 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/constraints/constraint_links.hpp"
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/external_entity.hpp"
@@ -35,7 +36,9 @@ void on_construct_rigidbody(registry &registry, entity e) {
 
 // A constraint does not outlive its bodies.
 void destroy_constraints_of(registry &registry, entity e) {
-    for (auto &ref : constraints_of(registry, e)) {
+    std::vector<constraint_ref> refs;
+    constraints_of(registry, e, refs);
+    for (auto &ref : refs) {
         if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
     }
 }
@@ -49,15 +52,28 @@ void on_destroy_rigidbody(registry &registry, entity e) {
 template<typename T>
 void on_construct_constraint(registry &registry, entity e) {
     auto &con = registry.get<T>(e);
-    world(registry).islands.link_edge(registry, e, con.body[0], con.body[1]);
+    auto body0 = con.body[0], body1 = con.body[1];
+    link_constraint(registry, e, body0, body1);
+    world(registry).islands.link_edge(registry, e, body0, body1);
 }
 
-void on_destroy_constraint(registry &registry, entity e) { world(registry).islands.unlink_edge(registry, e); }
+void on_destroy_constraint(registry &registry, entity e) {
+    world(registry).islands.unlink_edge(registry, e);
+    release_constraint(registry, e);
+}
+
+void on_destroy_constraint_links(registry &registry, entity e) { unlink_constraint(registry, e); }
+
+// The entity is being destroyed (its list goes with it, maybe before the component whose
+// listener would destroy its constraints): its constraints go too.
+void on_destroy_constraint_list(registry &registry, entity e) { destroy_constraints_of(registry, e); }
 
 // Links the constraints of a body that just became a node: while none of their bodies was
 // dynamic they had no island to join.
 void link_constraints_of(registry &registry, entity e) {
-    for (auto &ref : constraints_of(registry, e)) {
+    std::vector<constraint_ref> refs;
+    constraints_of(registry, e, refs);
+    for (auto &ref : refs) {
         if (registry.all_of<island_resident>(ref.constraint)) continue;
         world(registry).islands.link_edge(registry, ref.constraint, ref.body[0], ref.body[1]);
     }
@@ -162,8 +178,9 @@ using edyn_components =
                    sensor_tag, position, orientation, present_position, present_orientation, linvel, angvel,
                    gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
                    rigidbody_dynamic_mass, material, shape_index, AABB, collision_filter, collision_exclusion,
-                   previous_transform, island_resident, island_edge, sleep_timer, plane_shape, sphere_shape,
-                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
+                   previous_transform, island_resident, island_edge, sleep_timer, constraint_links,
+                   constraint_list, plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
+                   polyhedron_shape, compound_shape>;
 
 template<typename... Components>
 void clear_all(registry &registry, component_list<Components...>) {
@@ -242,6 +259,8 @@ void connect_registry_listeners(registry &registry) {
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
     connect_constraints(registry, constraint_types{});
+    registry.on_destroy<constraint_links>().connect<&on_destroy_constraint_links>();
+    registry.on_destroy<constraint_list>().connect<&on_destroy_constraint_list>();
     registry.on_destroy<external_tag>().connect<&on_destroy_external>();
 }
 
@@ -264,6 +283,8 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();
     disconnect_constraints(registry, constraint_types{});
+    registry.on_destroy<constraint_links>().disconnect<&on_destroy_constraint_links>();
+    registry.on_destroy<constraint_list>().disconnect<&on_destroy_constraint_list>();
     registry.on_destroy<external_tag>().disconnect<&on_destroy_external>();
 }
 
