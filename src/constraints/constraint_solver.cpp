@@ -38,19 +38,6 @@ void for_each_batch(const constraint_solver_state &state, Fn &&fn) {
     std::apply([&](const auto &...batch) { (fn(batch), ...); }, state.batches);
 }
 
-template<typename... T>
-void collect_constraints_of(const registry &registry, entity body, std::vector<constraint_ref> &out,
-                            constraint_type_list<T...>) {
-    auto collect = [&](auto *tag) {
-        using component = std::remove_pointer_t<decltype(tag)>;
-        for (auto e : registry.view<component>()) {
-            auto &con = registry.get<component>(e);
-            if (con.body[0] == body || con.body[1] == body) out.push_back({e, {con.body[0], con.body[1]}});
-        }
-    };
-    (collect(static_cast<T *>(nullptr)), ...);
-}
-
 } // namespace
 
 void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index) {
@@ -112,12 +99,6 @@ void store_constraint_impulses(registry &registry, const constraint_solver_state
             store_impulses(batch.solvers[i], registry.get<component>(batch.entities[i]));
         }
     });
-}
-
-std::vector<constraint_ref> constraints_of(const registry &registry, entity body) {
-    std::vector<constraint_ref> result;
-    collect_constraints_of(registry, body, result, constraint_types{});
-    return result;
 }
 
 } // namespace edyn

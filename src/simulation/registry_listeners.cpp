@@ -1,7 +1,6 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
-#include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/external_entity.hpp"
 #include "edyn/dynamics/mass.hpp"
@@ -17,6 +16,7 @@
 #include "edyn/simulation/interpolation.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -33,15 +33,19 @@ void on_construct_rigidbody(registry &registry, entity e) {
     if (registry.all_of<dynamic_tag>(e)) world(registry).islands.add_node(registry, e);
 }
 
-// A constraint does not outlive its bodies.
-void destroy_constraints_of(registry &registry, entity e) {
-    for (auto &ref : constraints_of(registry, e)) {
+// A constraint does not outlive its bodies. The constraints go with the body's list, which
+// goes with the body or its tag: when a body is destroyed, the registry may remove either first.
+void on_destroy_body_constraints(registry &registry, entity e) {
+    // Out of the component first: each constraint destroyed takes itself off its bodies' lists.
+    auto refs = std::move(registry.get<body_constraints>(e).refs);
+    for (auto &ref : refs) {
+        // An entity holding two constraints is destroyed with the first.
         if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
     }
 }
 
 void on_destroy_rigidbody(registry &registry, entity e) {
-    destroy_constraints_of(registry, e);
+    registry.remove<body_constraints>(e);
     world(registry).islands.remove_node(registry, e);
     registry.remove<previous_transform>(e);
 }
@@ -49,18 +53,32 @@ void on_destroy_rigidbody(registry &registry, entity e) {
 template<typename T>
 void on_construct_constraint(registry &registry, entity e) {
     auto &con = registry.get<T>(e);
-    world(registry).islands.link_edge(registry, e, con.body[0], con.body[1]);
+    constraint_ref ref{e, {con.body[0], con.body[1]}};
+    for (auto body : ref.body) {
+        if (registry.valid(body)) registry.get_or_emplace<body_constraints>(body).refs.push_back(ref);
+    }
+    world(registry).islands.link_edge(registry, e, ref.body[0], ref.body[1]);
 }
 
-void on_destroy_constraint(registry &registry, entity e) { world(registry).islands.unlink_edge(registry, e); }
+template<typename T>
+void on_destroy_constraint(registry &registry, entity e) {
+    for (auto body : registry.get<T>(e).body) {
+        if (auto *list = registry.try_get<body_constraints>(body)) {
+            auto it = std::find_if(list->refs.begin(), list->refs.end(),
+                                   [e](const constraint_ref &ref) { return ref.constraint == e; });
+            if (it != list->refs.end()) list->refs.erase(it);
+        }
+    }
+    world(registry).islands.unlink_edge(registry, e);
+}
 
 // Links the constraints of a body that just became a node: while none of their bodies was
 // dynamic they had no island to join.
 void link_constraints_of(registry &registry, entity e) {
-    for (auto &ref : constraints_of(registry, e)) {
-        if (registry.all_of<island_resident>(ref.constraint)) continue;
+    auto *list = registry.try_get<body_constraints>(e);
+    if (!list) return;
+    for (auto &ref : list->refs)
         world(registry).islands.link_edge(registry, ref.constraint, ref.body[0], ref.body[1]);
-    }
 }
 
 void on_construct_dynamic(registry &registry, entity e) {
@@ -128,7 +146,7 @@ void on_update_transform(registry &registry, entity e) {
     w.islands.wake_entity(registry, e);
 }
 
-void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(registry, e); }
+void on_destroy_external(registry &registry, entity e) { registry.remove<body_constraints>(e); }
 
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
@@ -162,8 +180,9 @@ using edyn_components =
                    sensor_tag, position, orientation, present_position, present_orientation, linvel, angvel,
                    gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
                    rigidbody_dynamic_mass, material, shape_index, AABB, collision_filter, collision_exclusion,
-                   previous_transform, island_resident, island_edge, sleep_timer, plane_shape, sphere_shape,
-                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
+                   previous_transform, island_resident, island_edge, body_constraints, sleep_timer,
+                   plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
+                   compound_shape>;
 
 template<typename... Components>
 void clear_all(registry &registry, component_list<Components...>) {
@@ -173,13 +192,13 @@ void clear_all(registry &registry, component_list<Components...>) {
 template<typename... Constraints>
 void connect_constraints(registry &registry, constraint_type_list<Constraints...>) {
     (registry.on_construct<Constraints>().template connect<&on_construct_constraint<Constraints>>(), ...);
-    (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint>(), ...);
+    (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint<Constraints>>(), ...);
 }
 
 template<typename... Constraints>
 void disconnect_constraints(registry &registry, constraint_type_list<Constraints...>) {
     (registry.on_construct<Constraints>().template disconnect<&on_construct_constraint<Constraints>>(), ...);
-    (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint>(), ...);
+    (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint<Constraints>>(), ...);
 }
 
 // Constraints stay on the program's entities as plain components when edyn lets go.
@@ -242,6 +261,7 @@ void connect_registry_listeners(registry &registry) {
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
     connect_constraints(registry, constraint_types{});
+    registry.on_destroy<body_constraints>().connect<&on_destroy_body_constraints>();
     registry.on_destroy<external_tag>().connect<&on_destroy_external>();
 }
 
@@ -264,6 +284,7 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();
     disconnect_constraints(registry, constraint_types{});
+    registry.on_destroy<body_constraints>().disconnect<&on_destroy_body_constraints>();
     registry.on_destroy<external_tag>().disconnect<&on_destroy_external>();
 }
 

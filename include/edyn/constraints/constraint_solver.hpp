@@ -79,15 +79,6 @@ void project_joint_positions(constraint_solver_state &state, std::span<solver_bo
 // Stores the impulses in the components, for next step's warm start.
 void store_constraint_impulses(registry &registry, const constraint_solver_state &state);
 
-// A constraint entity and the two entities it joins.
-struct constraint_ref {
-    entity constraint;
-    entity body[2];
-};
-
-// Every constraint, of any type, that has `body` as one of its bodies, in a fixed type order.
-std::vector<constraint_ref> constraints_of(const registry &registry, entity body);
-
 } // namespace edyn
 
 #endif // EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP

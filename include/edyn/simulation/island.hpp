@@ -31,6 +31,19 @@ struct island_edge {
     entity body[2];
 };
 
+// A constraint and the two entities it joins.
+struct constraint_ref {
+    entity constraint;
+    entity body[2];
+};
+
+// On every entity that constraints join (a rigid body or an external entity, dynamic or not):
+// those constraints, linked into an island or not, so that what happens to the entity reaches
+// its own constraints without a look through everyone else's.
+struct body_constraints {
+    std::vector<constraint_ref> refs;
+};
+
 // How long a dynamic body has been slow enough to sleep, in simulated seconds.
 struct sleep_timer {
     scalar time{0};
