@@ -1,6 +1,7 @@
 #include "edyn/simulation/narrowphase.hpp"
 #include "edyn/collision/collide.hpp"
 #include "edyn/collision/manifold_update.hpp"
+#include "edyn/collision/shape_epoch.hpp"
 #include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
@@ -50,6 +51,11 @@ bool is_resting(const registry &registry, entity body) {
     return registry.any_of<static_tag, sleeping_tag>(body);
 }
 
+std::uint32_t shape_epoch_of(const registry &registry, entity body) {
+    auto *epoch = registry.try_get<shape_epoch>(body);
+    return epoch ? epoch->value : 0;
+}
+
 // Upper bound of how fast any two points of the bodies approach each other.
 scalar approach_speed(const registry &registry, entity a, entity b) {
     auto motion = [&](entity e, vector3 &v) {
@@ -97,7 +103,8 @@ void run_narrowphase(registry &registry, world_state &world) {
         auto approach = approach_speed(registry, a, b) * dt;
         manifold.separation_threshold = contact_breaking_threshold + approach;
         contact_point_changes changes;
-        if (can_reuse_contacts(manifold, tf, approach, world.shape_epoch)) {
+        shape_epoch_pair epochs{shape_epoch_of(registry, a), shape_epoch_of(registry, b)};
+        if (can_reuse_contacts(manifold, tf, approach, epochs)) {
             changes = refresh_contact_manifold(manifold, tf);
         } else {
             collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
@@ -112,7 +119,7 @@ void run_narrowphase(registry &registry, world_state &world) {
                 });
             });
             changes = update_contact_manifold(manifold, tf, result);
-            remember_collide(manifold, tf, world.shape_epoch);
+            remember_collide(manifold, tf, epochs);
         }
         fill_materials(registry, manifold, changes);
         if (record) record_events(events, manifold_entity, changes);

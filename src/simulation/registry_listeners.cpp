@@ -1,6 +1,7 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/collision/shape_epoch.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/external_entity.hpp"
 #include "edyn/dynamics/mass.hpp"
@@ -150,7 +151,7 @@ void on_destroy_external(registry &registry, entity e) { registry.remove<body_co
 
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
-void on_update_shape(registry &registry, entity) { ++world(registry).shape_epoch; }
+void on_update_shape(registry &registry, entity e) { ++registry.get_or_emplace<shape_epoch>(e).value; }
 
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);
@@ -181,8 +182,8 @@ using edyn_components =
                    gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
                    rigidbody_dynamic_mass, material, shape_index, AABB, collision_filter, collision_exclusion,
                    previous_transform, island_resident, island_edge, body_constraints, sleep_timer,
-                   plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
-                   compound_shape>;
+                   shape_epoch, plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
+                   polyhedron_shape, compound_shape>;
 
 template<typename... Components>
 void clear_all(registry &registry, component_list<Components...>) {
