@@ -1,4 +1,5 @@
 #include "bullet_joints.hpp"
+#include "to_bullet.hpp"
 #include <algorithm>
 #include <btBulletDynamicsCommon.h>
 #include <cmath>
@@ -9,13 +10,6 @@
 namespace edyn_bench {
 
 namespace {
-
-btVector3 to_bt(const edyn::vector3 &v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
-
-btMatrix3x3 to_bt(const edyn::matrix3x3 &m) {
-    return {btScalar(m[0][0]), btScalar(m[0][1]), btScalar(m[0][2]), btScalar(m[1][0]), btScalar(m[1][1]),
-            btScalar(m[1][2]), btScalar(m[2][0]), btScalar(m[2][1]), btScalar(m[2][2])};
-}
 
 btTransform frame(const joint_desc &j, int i) { return btTransform(to_bt(j.basis[i]), to_bt(j.pivot[i])); }
 

@@ -7,6 +7,7 @@
 // bullet_joints.cpp, which also excludes from collision the pairs edyn excludes.
 #include "bench.hpp"
 #include "bullet_joints.hpp"
+#include "to_bullet.hpp"
 #include <algorithm>
 #include <btBulletDynamicsCommon.h>
 #include <chrono>
@@ -131,8 +132,6 @@ scene_desc describe_scene(edyn::registry &registry, edyn::entity tracked) {
     describe_constraints(registry, index, scene);
     return scene;
 }
-
-btVector3 to_bt(const edyn::vector3 &v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
 
 std::unique_ptr<btCollisionShape> make_bt_shape(const edyn::shapes_variant_t &shape) {
     return std::visit(
