@@ -54,7 +54,7 @@ public:
     bullet_joints &operator=(const bullet_joints &) = delete;
 
     bool empty() const noexcept { return constraints.empty(); }
-    // As max_joint_error (bench.hpp), for these Bullet joints.
+    // As edyn::scenes::max_pivot_separation, for these Bullet joints.
     double worst_error() const;
 
 private:
