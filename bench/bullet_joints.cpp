@@ -82,7 +82,7 @@ scene_joints describe_joints(const edyn::registry &registry, const std::vector<e
         indices.emplace(bodies[i], i);
 
     scene_joints scene;
-    for (auto e : registry.view<edyn::hinge_constraint>()) {
+    for (auto e : in_creation_order(registry.view<edyn::hinge_constraint>())) {
         scene.joints.push_back(describe_hinge(indices, registry.get<edyn::hinge_constraint>(e)));
     }
     std::map<std::pair<edyn::entity, edyn::entity>, edyn::entity> cones;
@@ -90,7 +90,7 @@ scene_joints describe_joints(const edyn::registry &registry, const std::vector<e
         const auto &cone = registry.get<edyn::cone_constraint>(e);
         cones.emplace(std::make_pair(cone.body[0], cone.body[1]), e);
     }
-    for (auto e : registry.view<edyn::cvjoint_constraint>()) {
+    for (auto e : in_creation_order(registry.view<edyn::cvjoint_constraint>())) {
         const auto &cv = registry.get<edyn::cvjoint_constraint>(e);
         auto it = cones.find({cv.body[0], cv.body[1]});
         if (it == cones.end()) throw std::invalid_argument("edyn-bench: a CV joint without a cone");

@@ -52,17 +52,6 @@ struct scene_desc {
     std::size_t tracked_index{static_cast<std::size_t>(-1)};
 };
 
-// Views list the newest entity first. Bullet solves its constraints in the order they were added
-// and Gauss-Seidel converges differently depending on that order, so Bullet gets the bodies and
-// joints in the order the scene builders made them, as a program building the scene directly in
-// Bullet would add them (the ground first, a chain from its anchor down).
-template<typename View>
-std::vector<edyn::entity> in_creation_order(const View &view) {
-    std::vector<edyn::entity> entities(view.begin(), view.end());
-    std::reverse(entities.begin(), entities.end());
-    return entities;
-}
-
 template<typename... T>
 std::size_t count_constraints(const edyn::registry &registry, edyn::constraint_type_list<T...>) {
     return (registry.view<T>().size() + ...);
