@@ -60,10 +60,6 @@ std::string stability_metric(const std::string &scene);
 // then measure after every step (outside the timed part).
 bool tracks_joint_error(const std::string &scene);
 
-// The largest distance between the two pivots of any point constraint, hinge or CV joint in the
-// registry, in m.
-double max_joint_error(const edyn::registry &registry);
-
 // Scenes edyn-bench knows, in the order `--scene all` runs them.
 std::vector<std::string> available_scenes();
 

@@ -1,4 +1,5 @@
 #include "bullet_joints.hpp"
+#include "to_bullet.hpp"
 #include <algorithm>
 #include <btBulletDynamicsCommon.h>
 #include <cmath>
@@ -9,13 +10,6 @@
 namespace edyn_bench {
 
 namespace {
-
-btVector3 to_bt(const edyn::vector3 &v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
-
-btMatrix3x3 to_bt(const edyn::matrix3x3 &m) {
-    return {btScalar(m[0][0]), btScalar(m[0][1]), btScalar(m[0][2]), btScalar(m[1][0]), btScalar(m[1][1]),
-            btScalar(m[1][2]), btScalar(m[2][0]), btScalar(m[2][1]), btScalar(m[2][2])};
-}
 
 btTransform frame(const joint_desc &j, int i) { return btTransform(to_bt(j.basis[i]), to_bt(j.pivot[i])); }
 
@@ -88,7 +82,7 @@ scene_joints describe_joints(const edyn::registry &registry, const std::vector<e
         indices.emplace(bodies[i], i);
 
     scene_joints scene;
-    for (auto e : registry.view<edyn::hinge_constraint>()) {
+    for (auto e : in_creation_order(registry.view<edyn::hinge_constraint>())) {
         scene.joints.push_back(describe_hinge(indices, registry.get<edyn::hinge_constraint>(e)));
     }
     std::map<std::pair<edyn::entity, edyn::entity>, edyn::entity> cones;
@@ -96,7 +90,7 @@ scene_joints describe_joints(const edyn::registry &registry, const std::vector<e
         const auto &cone = registry.get<edyn::cone_constraint>(e);
         cones.emplace(std::make_pair(cone.body[0], cone.body[1]), e);
     }
-    for (auto e : registry.view<edyn::cvjoint_constraint>()) {
+    for (auto e : in_creation_order(registry.view<edyn::cvjoint_constraint>())) {
         const auto &cv = registry.get<edyn::cvjoint_constraint>(e);
         auto it = cones.find({cv.body[0], cv.body[1]});
         if (it == cones.end()) throw std::invalid_argument("edyn-bench: a CV joint without a cone");

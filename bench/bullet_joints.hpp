@@ -4,6 +4,7 @@
 // Joints for the Bullet side of edyn-bench, read from the registry the shared scene builders
 // filled, and the joint error both engines report as the stability of jointed scenes.
 
+#include <algorithm>
 #include <cstddef>
 #include <edyn/edyn.hpp>
 #include <memory>
@@ -33,6 +34,17 @@ struct joint_desc {
     double friction_torque{0};
 };
 
+// Views list the newest entity first. Bullet solves its constraints in the order they were added
+// and Gauss-Seidel converges differently depending on that order, so Bullet gets the bodies and
+// joints of each kind in the order the scene builders made them, as a program building the scene
+// directly in Bullet would add them (the ground first, a chain from its anchor down).
+template<typename View>
+std::vector<edyn::entity> in_creation_order(const View &view) {
+    std::vector<edyn::entity> entities(view.begin(), view.end());
+    std::reverse(entities.begin(), entities.end());
+    return entities;
+}
+
 struct scene_joints {
     std::vector<joint_desc> joints;
     // Pairs of bodies that must not collide (edyn's collision_exclusion), as indices.
@@ -54,7 +66,7 @@ public:
     bullet_joints &operator=(const bullet_joints &) = delete;
 
     bool empty() const noexcept { return constraints.empty(); }
-    // As max_joint_error (bench.hpp), for these Bullet joints.
+    // As edyn::scenes::max_pivot_separation, for these Bullet joints.
     double worst_error() const;
 
 private:

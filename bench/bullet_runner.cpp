@@ -7,6 +7,7 @@
 // bullet_joints.cpp, which also excludes from collision the pairs edyn excludes.
 #include "bench.hpp"
 #include "bullet_joints.hpp"
+#include "to_bullet.hpp"
 #include <algorithm>
 #include <btBulletDynamicsCommon.h>
 #include <chrono>
@@ -50,17 +51,6 @@ struct scene_desc {
     scene_joints other_joints; // hinges, CV joints and cones, and the collision exclusions
     std::size_t tracked_index{static_cast<std::size_t>(-1)};
 };
-
-// Views list the newest entity first. Bullet solves its constraints in the order they were added
-// and Gauss-Seidel converges differently depending on that order, so Bullet gets the bodies and
-// joints in the order the scene builders made them, as a program building the scene directly in
-// Bullet would add them (the ground first, a chain from its anchor down).
-template<typename View>
-std::vector<edyn::entity> in_creation_order(const View &view) {
-    std::vector<edyn::entity> entities(view.begin(), view.end());
-    std::reverse(entities.begin(), entities.end());
-    return entities;
-}
 
 template<typename... T>
 std::size_t count_constraints(const edyn::registry &registry, edyn::constraint_type_list<T...>) {
@@ -131,8 +121,6 @@ scene_desc describe_scene(edyn::registry &registry, edyn::entity tracked) {
     describe_constraints(registry, index, scene);
     return scene;
 }
-
-btVector3 to_bt(const edyn::vector3 &v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
 
 std::unique_ptr<btCollisionShape> make_bt_shape(const edyn::shapes_variant_t &shape) {
     return std::visit(

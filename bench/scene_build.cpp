@@ -19,37 +19,6 @@ bool tracks_joint_error(const std::string &scene) { return scene == "chain" || s
 
 namespace {
 
-template<typename Joint>
-double pivot_distance(const edyn::registry &registry, const Joint &c) {
-    edyn::vector3 pivots[2];
-    for (int i = 0; i < 2; ++i) {
-        pivots[i] = edyn::to_world_space(c.pivot[i], edyn::get_rigidbody_origin(registry, c.body[i]),
-                                         registry.get<edyn::orientation>(c.body[i]));
-    }
-    return double(edyn::distance(pivots[0], pivots[1]));
-}
-
-template<typename... Joint>
-double max_pivot_distance(const edyn::registry &registry) {
-    double worst = 0;
-    auto visit = [&](auto *tag) {
-        using joint = std::remove_pointer_t<decltype(tag)>;
-        registry.view<joint>().each(
-            [&](const joint &c) { worst = std::max(worst, pivot_distance(registry, c)); });
-    };
-    (visit(static_cast<Joint *>(nullptr)), ...);
-    return worst;
-}
-
-} // namespace
-
-double max_joint_error(const edyn::registry &registry) {
-    return max_pivot_distance<edyn::point_constraint, edyn::hinge_constraint, edyn::cvjoint_constraint>(
-        registry);
-}
-
-namespace {
-
 edyn::entity build_bodies(edyn::registry &registry, const scene_spec &spec) {
     if (spec.scene == "chain") {
         // A joint test only: the chain swings down from horizontal in empty space, with no

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <edyn/edyn.hpp>
+#include <edyn_scenes/pivot_separation.hpp>
 #include <edyn_scenes/scenes.hpp>
 #include <string>
 #include <vector>
@@ -32,25 +33,15 @@ struct summary {
 
 // Largest distance between the two pivots of the rag dolls' hinges and CV joints, in metres:
 // how far their joints are pulled apart.
-template<typename Joint>
-double pivot_separation(const edyn::registry &registry, const Joint &c) {
-    edyn::vector3 pivots[2];
-    for (int i = 0; i < 2; ++i) {
-        pivots[i] = edyn::get_rigidbody_origin(registry, c.body[i]) +
-                    edyn::rotate(registry.get<edyn::orientation>(c.body[i]), c.pivot[i]);
-    }
-    return double(edyn::distance(pivots[0], pivots[1]));
-}
-
 double worst_joint_separation(const edyn::registry &registry,
                               const std::vector<edyn::ragdoll_entities> &ragdolls) {
     double worst = 0;
     for (auto &ragdoll : ragdolls) {
         for (auto e : ragdoll.constraints()) {
             if (auto *hinge = registry.try_get<edyn::hinge_constraint>(e)) {
-                worst = std::max(worst, pivot_separation(registry, *hinge));
+                worst = std::max(worst, double(edyn::scenes::pivot_separation(registry, *hinge)));
             } else if (auto *cv = registry.try_get<edyn::cvjoint_constraint>(e)) {
-                worst = std::max(worst, pivot_separation(registry, *cv));
+                worst = std::max(worst, double(edyn::scenes::pivot_separation(registry, *cv)));
             }
         }
     }

@@ -29,6 +29,7 @@
 #include "edyn/collision/collide.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/collision/shape_epoch.hpp"
 #include "edyn/collision/shape_raycast.hpp"
 #include "edyn/collision/should_collide.hpp"
 

@@ -267,9 +267,10 @@ contact_point_changes clear_contact_manifold(contact_manifold &manifold) {
 }
 
 bool can_reuse_contacts(const contact_manifold &manifold, const manifold_transforms &tf, scalar approach,
-                        std::uint32_t shape_epoch) noexcept {
+                        const shape_epoch_pair &shape_epochs) noexcept {
     auto &last = manifold.last_collide;
-    if (!last.valid || last.shape_epoch != shape_epoch || approach > contact_reuse_max_distance) return false;
+    if (!last.valid || last.shape_epochs != shape_epochs || approach > contact_reuse_max_distance)
+        return false;
     const auto max_dist_sqr = contact_reuse_max_distance * contact_reuse_max_distance;
     if (distance_sqr(tf.posA, last.posA) > max_dist_sqr || distance_sqr(tf.posB, last.posB) > max_dist_sqr) {
         return false;
@@ -280,8 +281,8 @@ bool can_reuse_contacts(const contact_manifold &manifold, const manifold_transfo
 }
 
 void remember_collide(contact_manifold &manifold, const manifold_transforms &tf,
-                      std::uint32_t shape_epoch) noexcept {
-    manifold.last_collide = {tf.posA, tf.posB, tf.ornA, tf.ornB, shape_epoch, true};
+                      const shape_epoch_pair &shape_epochs) noexcept {
+    manifold.last_collide = {tf.posA, tf.posB, tf.ornA, tf.ornB, shape_epochs, true};
 }
 
 } // namespace edyn

@@ -7,11 +7,6 @@ namespace edyn {
 
 namespace {
 
-solver_body_index index_of(body_index_map body_index, entity e) {
-    auto i = to_index(e);
-    return i < body_index.size() ? body_index[i] : 0;
-}
-
 template<typename Solver>
 void gather_batch(const registry &registry, constraint_batch<Solver> &batch, body_index_map body_index) {
     using component = typename Solver::component;
@@ -20,7 +15,8 @@ void gather_batch(const registry &registry, constraint_batch<Solver> &batch, bod
     auto view = registry.view<component>(exclude<sleeping_tag>);
     for (auto e : view) {
         auto &con = view.template get<component>(e);
-        constraint_body_indices indices{index_of(body_index, con.body[0]), index_of(body_index, con.body[1])};
+        constraint_body_indices indices{body_index_of(body_index, con.body[0]),
+                                        body_index_of(body_index, con.body[1])};
         // Neither body moves this step (both static, or asleep): nothing to solve.
         if (indices.a == 0 && indices.b == 0) continue;
         batch.solvers.push_back(make_constraint_solver(registry, con, indices));

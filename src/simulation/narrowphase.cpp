@@ -1,6 +1,7 @@
 #include "edyn/simulation/narrowphase.hpp"
 #include "edyn/collision/collide.hpp"
 #include "edyn/collision/manifold_update.hpp"
+#include "edyn/collision/shape_epoch.hpp"
 #include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
@@ -51,6 +52,11 @@ bool is_resting(const registry &registry, entity body) {
     return registry.any_of<static_tag, sleeping_tag>(body);
 }
 
+std::uint32_t shape_epoch_of(const registry &registry, entity body) {
+    auto *epoch = registry.try_get<shape_epoch>(body);
+    return epoch ? epoch->value : 0;
+}
+
 // Upper bound of how fast any two points of the bodies approach each other.
 scalar approach_speed(const registry &registry, entity a, entity b) {
     auto motion = [&](entity e, vector3 &v) {
@@ -68,8 +74,7 @@ scalar approach_speed(const registry &registry, entity a, entity b) {
 
 // Closest points of one manifold's pair, the manifold updated in place. Reads the registry and
 // writes only the manifold, so that manifolds can be processed at once on several threads.
-contact_point_changes collide_manifold(const registry &registry, contact_manifold &manifold, scalar dt,
-                                       std::uint32_t shape_epoch) {
+contact_point_changes collide_manifold(const registry &registry, contact_manifold &manifold, scalar dt) {
     auto a = manifold.body[0], b = manifold.body[1];
     // Only pairs with a dynamic body interact, and two resting bodies stay as they are.
     if (!registry.any_of<dynamic_tag>(a) && !registry.any_of<dynamic_tag>(b)) return {};
@@ -83,7 +88,8 @@ contact_point_changes collide_manifold(const registry &registry, contact_manifol
     // so that the solver can stop them at the surface instead of inside it.
     auto approach = approach_speed(registry, a, b) * dt;
     manifold.separation_threshold = contact_breaking_threshold + approach;
-    if (can_reuse_contacts(manifold, tf, approach, shape_epoch)) {
+    shape_epoch_pair epochs{shape_epoch_of(registry, a), shape_epoch_of(registry, b)};
+    if (can_reuse_contacts(manifold, tf, approach, epochs)) {
         return refresh_contact_manifold(manifold, tf);
     }
     collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
@@ -98,7 +104,7 @@ contact_point_changes collide_manifold(const registry &registry, contact_manifol
         });
     });
     auto changes = update_contact_manifold(manifold, tf, result);
-    remember_collide(manifold, tf, shape_epoch);
+    remember_collide(manifold, tf, epochs);
     return changes;
 }
 
@@ -124,7 +130,7 @@ void run_narrowphase(registry &registry, world_state &world) {
     world.manifold_changes.resize(world.manifolds.size());
     auto collide_one = [&](std::size_t i) {
         auto &manifold = manifold_pool.get(world.manifolds[i]);
-        world.manifold_changes[i] = collide_manifold(registry, manifold, dt, world.shape_epoch);
+        world.manifold_changes[i] = collide_manifold(registry, manifold, dt);
     };
     parallel_for(world.scheduler.get(), std::size_t(0), world.manifolds.size(), manifolds_per_task,
                  collide_one);

@@ -1,6 +1,7 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/collision/shape_epoch.hpp"
 #include "edyn/constraints/constraint_links.hpp"
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
@@ -148,7 +149,7 @@ void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(
 
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
-void on_update_shape(registry &registry, entity) { ++world(registry).shape_epoch; }
+void on_update_shape(registry &registry, entity e) { ++registry.get_or_emplace<shape_epoch>(e).value; }
 
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);

@@ -18,11 +18,6 @@ namespace edyn {
 
 namespace {
 
-std::uint32_t body_index_of(const world_state &world, entity e) {
-    auto i = to_index(e);
-    return i < world.body_index.size() ? world.body_index[i] : 0;
-}
-
 // Axes about which a contact resists rolling: both tangents for spheres and capsules, only the
 // main axis for cylinders, none for shapes that do not roll.
 std::uint32_t roll_axes(const registry &registry, entity body, const vector3 &normal, vector3 (&axes)[2]) {
@@ -97,7 +92,7 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
     auto *matA = registry.try_get<material>(a);
     auto *matB = registry.try_get<material>(b);
     if (!matA || !matB) return; // a sensor
-    auto ia = body_index_of(world, a), ib = body_index_of(world, b);
+    auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
     if (ia == 0 && ib == 0) return;
 
     auto mixed = get_mixed_material(registry, *matA, *matB);

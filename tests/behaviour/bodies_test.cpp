@@ -209,3 +209,47 @@ TEST_F(change_shape, a_resting_sphere_given_a_larger_radius_in_place_rises) {
     run_for(1);
     EXPECT_NEAR(pos(ball).y, scalar(0.75), scalar(0.01)) << "ball centre at " << pos(ball).y;
 }
+
+// Only the changed body's manifolds are recomputed: another pair resting nearby keeps reusing
+// its points.
+TEST_F(change_shape, other_resting_pairs_keep_reusing_their_contact_points) {
+    scenes::make_ground(reg, scalar(0.5), 0);
+    auto make_ball = [&](scalar x) {
+        auto def = edyn::test::sphere_def(scalar(0.5), {x, scalar(0.5), 0}, 2);
+        def.sleeping_disabled = true;
+        return make_rigidbody(reg, def);
+    };
+    auto changed = make_ball(-5), other = make_ball(5);
+    run_for(1);
+
+    auto manifold_of = [&](entity body) -> contact_manifold & {
+        for (auto m : reg.view<contact_manifold>()) {
+            auto &manifold = reg.get<contact_manifold>(m);
+            if (manifold.body[0] == body || manifold.body[1] == body) return manifold;
+        }
+        throw std::runtime_error("no manifold");
+    };
+    // Where body A was when collide() last ran, nudged by less than the reuse threshold: only
+    // a new collide() overwrites it, and a reused pair keeps it.
+    auto mark = [&](entity body) {
+        auto &snapshot = manifold_of(body).last_collide;
+        snapshot.posA.y += contact_reuse_max_distance / 10;
+        return snapshot.posA;
+    };
+    auto still_marked = [&](entity body, const vector3 &marked) {
+        return manifold_of(body).last_collide.posA == marked;
+    };
+
+    auto marked_changed = mark(changed), marked_other = mark(other);
+    step_simulation(reg);
+    ASSERT_TRUE(still_marked(changed, marked_changed)) << "a resting pair recomputed its points";
+    ASSERT_TRUE(still_marked(other, marked_other)) << "a resting pair recomputed its points";
+
+    reg.replace<sphere_shape>(changed, sphere_shape{scalar(0.75)});
+    step_simulation(reg);
+    EXPECT_FALSE(still_marked(changed, marked_changed)) << "points reused with the old shape";
+    EXPECT_TRUE(still_marked(other, marked_other)) << "another body's shape change stopped this pair's reuse";
+    run_for(1);
+    EXPECT_NEAR(pos(changed).y, scalar(0.75), scalar(0.01)) << "ball centre at " << pos(changed).y;
+    EXPECT_NEAR(pos(other).y, scalar(0.5), scalar(0.01)) << "ball centre at " << pos(other).y;
+}

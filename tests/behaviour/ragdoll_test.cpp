@@ -1,6 +1,7 @@
 // Rag dolls: joints that hold and limits that stay when they fall and pile up, and piles that
 // come to rest, at the default 60 Hz.
 #include "joints_support.hpp"
+#include <edyn_scenes/pivot_separation.hpp>
 #include <edyn_scenes/scenes.hpp>
 
 using namespace edyn;
@@ -8,21 +9,6 @@ using edyn::test::world_fixture;
 using edyn::test::world_pivot;
 
 namespace {
-
-template<typename Joint>
-scalar pivot_separation(const registry &reg, const Joint &c) {
-    return distance(world_pivot(reg, c.body[0], c.pivot[0]), world_pivot(reg, c.body[1], c.pivot[1]));
-}
-
-// Largest distance between the two pivots of any hinge or CV joint, in metres.
-scalar worst_joint_separation(const registry &reg) {
-    scalar worst = 0;
-    reg.view<hinge_constraint>().each(
-        [&](const hinge_constraint &c) { worst = std::max(worst, pivot_separation(reg, c)); });
-    reg.view<cvjoint_constraint>().each(
-        [&](const cvjoint_constraint &c) { worst = std::max(worst, pivot_separation(reg, c)); });
-    return worst;
-}
 
 // How far the cone's point is beyond its elliptical wall, in radians (negative inside).
 scalar cone_excess(const registry &reg, const cone_constraint &c) {
@@ -87,7 +73,7 @@ TEST_F(ragdolls, pile_of_ten_settles_with_joints_together_and_falls_asleep) {
         step_simulation(reg);
         auto t = (i + 1) * dt;
         ASSERT_TRUE(all_finite(reg)) << "a body is not finite at t = " << t << " s";
-        if (auto separation = worst_joint_separation(reg); separation > worst) {
+        if (auto separation = scenes::max_pivot_separation(reg); separation > worst) {
             worst = separation;
             worst_at = t;
         }
@@ -119,7 +105,7 @@ TEST_F(ragdolls, falling_from_standing_keeps_every_joint_within_its_limits) {
         step_simulation(reg);
         ASSERT_TRUE(all_finite(reg)) << "a body is not finite after step " << i + 1;
         measure_limits(reg, e, i < 60 * 3 ? falling : resting);
-        separation = std::max(separation, worst_joint_separation(reg));
+        separation = std::max(separation, scenes::max_pivot_separation(reg));
     }
     EXPECT_LT(pos(e.head).y, scalar(0.4)) << "did not fall: head at y = " << pos(e.head).y;
     EXPECT_LT(separation, scalar(0.01)) << "largest joint separation " << separation << " m";

@@ -2,6 +2,7 @@
 #define EDYN_COLLISION_CONTACT_MANIFOLD_HPP
 
 #include "edyn/collision/contact_point.hpp"
+#include "edyn/collision/shape_epoch.hpp"
 #include "edyn/ecs/entity.hpp"
 #include "edyn/math/quaternion.hpp"
 #include "edyn/math/vector3.hpp"
@@ -45,13 +46,12 @@ struct contact_manifold {
     std::array<contact_point, max_contacts> point{};
     std::array<id_type, max_contacts> ids{0, 1, 2, 3};
 
-    // The bodies' origins and orientations when collide() last ran for this pair, and the
-    // shape epoch then (a counter the simulation advances whenever any shape changes), for
-    // deciding whether the points can be reused (see contact_reuse_max_distance).
+    // The bodies' origins, orientations and shape epochs when collide() last ran for this
+    // pair, for deciding whether the points can be reused (see contact_reuse_max_distance).
     struct collide_snapshot {
         vector3 posA{vector3_zero}, posB{vector3_zero};
         quaternion ornA{quaternion_identity}, ornB{quaternion_identity};
-        std::uint32_t shape_epoch{0};
+        shape_epoch_pair shape_epochs{0, 0};
         bool valid{false};
     } last_collide;
 

@@ -62,16 +62,16 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
 contact_point_changes clear_contact_manifold(contact_manifold &manifold);
 
 // Whether the manifold's points may be refreshed at `tf` instead of recomputed by collide():
-// collide() ran for it before, with the same shapes (`shape_epoch`), neither body has moved
+// collide() ran for it before, with the same shapes (the bodies' `shape_epochs`), neither body has moved
 // or turned past the reuse thresholds since (see contact_reuse_max_distance), and the bodies
 // close in on each other by less than that distance over the coming step (`approach`, the
 // distance they can approach by in it).
 bool can_reuse_contacts(const contact_manifold &manifold, const manifold_transforms &tf, scalar approach,
-                        std::uint32_t shape_epoch) noexcept;
+                        const shape_epoch_pair &shape_epochs) noexcept;
 
-// Records the transforms and shape epoch that collide() has just run with.
+// Records the transforms and shape epochs that collide() has just run with.
 void remember_collide(contact_manifold &manifold, const manifold_transforms &tf,
-                      std::uint32_t shape_epoch) noexcept;
+                      const shape_epoch_pair &shape_epochs) noexcept;
 
 } // namespace edyn
 

@@ -58,6 +58,12 @@ struct constraint_solver_state {
 // Maps an entity's index to its solver body (0, the static body, when it has none).
 using body_index_map = std::span<const std::uint32_t>;
 
+// The solver body of `e`: entities past the end of the map have none either.
+inline solver_body_index body_index_of(body_index_map body_index, entity e) noexcept {
+    auto i = to_index(e);
+    return i < body_index.size() ? body_index[i] : static_solver_body;
+}
+
 // Packs every awake constraint with at least one body in the solver, with its geometry at the
 // start of the step and last step's impulses.
 void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index);

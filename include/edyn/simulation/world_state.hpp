@@ -39,10 +39,6 @@ struct world_state {
     std::vector<entity> contact_manifolds;
     constraint_solver_state joints;
 
-    // Advanced whenever a body's shape is replaced or patched, so that contact points computed
-    // with the old shape are not reused (see can_reuse_contacts).
-    std::uint32_t shape_epoch{0};
-
     // Manifold entities in the order the narrowphase visits them, and what changed in each.
     std::vector<entity> manifolds;
     std::vector<contact_point_changes> manifold_changes;

@@ -365,28 +365,29 @@ TEST_F(manifold_fixture, clear_destroys_all) {
 // Contact reuse: points are refreshed instead of recomputed only while nothing that could
 // change them has changed since collide() last ran.
 TEST_F(manifold_fixture, contacts_are_reused_only_after_a_collide_with_the_same_shapes) {
-    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, 0, 0)) << "collide() never ran for this pair";
-    edyn::remember_collide(manifold, tf, 3);
-    EXPECT_TRUE(edyn::can_reuse_contacts(manifold, tf, 0, 3));
-    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, 0, 4)) << "a shape changed since";
+    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, 0, {0, 0})) << "collide() never ran for this pair";
+    edyn::remember_collide(manifold, tf, {3, 1});
+    EXPECT_TRUE(edyn::can_reuse_contacts(manifold, tf, 0, {3, 1}));
+    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, 0, {4, 1})) << "body A's shape changed since";
+    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, 0, {3, 2})) << "body B's shape changed since";
 }
 
 TEST_F(manifold_fixture, contacts_are_not_reused_after_moving_past_the_thresholds) {
-    edyn::remember_collide(manifold, tf, 0);
+    edyn::remember_collide(manifold, tf, {0, 0});
     auto near = tf;
     near.posA.x += edyn::contact_reuse_max_distance / 2;
     near.ornB = edyn::quaternion_axis_angle(edyn::vector3_z, edyn::contact_reuse_max_angle / 2);
-    EXPECT_TRUE(edyn::can_reuse_contacts(manifold, near, 0, 0));
+    EXPECT_TRUE(edyn::can_reuse_contacts(manifold, near, 0, {0, 0}));
 
     auto moved = tf;
     moved.posB.y -= edyn::contact_reuse_max_distance * 2;
-    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, moved, 0, 0));
+    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, moved, 0, {0, 0}));
 
     auto turned = tf;
     turned.ornA = edyn::quaternion_axis_angle(edyn::vector3_x, edyn::contact_reuse_max_angle * 2);
-    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, turned, 0, 0));
+    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, turned, 0, {0, 0}));
 
-    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, edyn::contact_reuse_max_distance * 2, 0))
+    EXPECT_FALSE(edyn::can_reuse_contacts(manifold, tf, edyn::contact_reuse_max_distance * 2, {0, 0}))
         << "the bodies are about to close in faster than reuse allows";
 }
 
