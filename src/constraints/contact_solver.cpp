@@ -1,5 +1,6 @@
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/constraints/constraint_row.hpp"
+#include "edyn/parallel/parallel_for.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -36,6 +37,32 @@ inline void apply_row(const contact_row &row, const vector3 &d, scalar impulse, 
     b.angvel -= row.inv_angularB * impulse;
 }
 
+// Constraints per parallel range: enough work to outweigh handing a range to a thread.
+constexpr std::size_t contacts_per_task = 64;
+
+// Calls fn(k) for every constraint k, colour after colour, each colour's constraints at once on
+// the scheduler's threads; then the overflow, in order on the calling thread.
+template<typename Fn>
+void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Fn &&fn) {
+    auto &begin = contacts.colour_begin;
+    for (std::size_t k = 0; k + 1 < begin.size(); ++k) {
+        parallel_for(scheduler, begin[k], begin[k + 1], contacts_per_task, fn);
+    }
+    auto size = static_cast<std::uint32_t>(contacts.constraints.size());
+    for (auto k = begin.empty() ? 0u : begin.back(); k < size; ++k) {
+        fn(k);
+    }
+}
+
+// The body a constraint solves against: a body that moves is changed in place; one that does
+// not (the static body, a kinematic body) may be read by many constraints of one colour at once,
+// so each works on its own copy, which is dropped.
+inline solver_body &solved(solver_body &body, solver_body &copy) {
+    if (body.inv_mass > 0) return body;
+    copy = body;
+    return copy;
+}
+
 } // namespace
 
 contact_solver_point *contact_solver_set::add(const contact_solver_constraint &c, std::uint32_t num_points) {
@@ -47,8 +74,12 @@ contact_solver_point *contact_solver_set::add(const contact_solver_constraint &c
     return &points[added.first_point];
 }
 
-void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies) {
-    for (auto &c : contacts.constraints) {
+void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies,
+                      task_scheduler *scheduler) {
+    // Each constraint writes only its own points: any order will do.
+    auto count = static_cast<std::uint32_t>(contacts.constraints.size());
+    parallel_for(scheduler, 0u, count, contacts_per_task, [&](std::uint32_t k) {
+        auto &c = contacts.constraints[k];
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
         for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
@@ -70,13 +101,16 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
         for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
             c.roll_mass[i] = effective_angular_mass(a, b, c.roll_axis[i]);
         }
-    }
+    });
 }
 
-void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies) {
-    for (auto &c : contacts.constraints) {
-        auto &a = bodies[c.body[0]];
-        auto &b = bodies[c.body[1]];
+void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
+                         task_scheduler *scheduler) {
+    for_each_in_colour_order(contacts, scheduler, [&](std::uint32_t k) {
+        auto &c = contacts.constraints[k];
+        solver_body copies[2];
+        auto &a = solved(bodies[c.body[0]], copies[0]);
+        auto &b = solved(bodies[c.body[1]], copies[1]);
 
         for (auto &p : points_of(contacts, c)) {
             apply_row(p.normal_row, p.normal, p.normal_impulse, a, b);
@@ -89,7 +123,7 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
             angular += c.roll_axis[i] * c.roll_impulse[i];
         }
         apply_angular_impulse(a, b, angular);
-    }
+    });
 }
 
 namespace {
@@ -157,15 +191,17 @@ softness material_softness(const contact_solver_constraint &c, const contact_sol
 } // namespace
 
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
-                    const contact_solver_settings &settings, bool use_bias) {
+                    const contact_solver_settings &settings, bool use_bias, task_scheduler *scheduler) {
     // A spring stiffer than a quarter of the sub-step rate cannot be integrated stably.
     auto hertz = std::min(settings.contact_hertz, settings.max_hertz_ratio / h);
     auto rigid = make_softness(hertz, settings.contact_damping_ratio, h);
     auto inv_h = scalar(1) / h;
 
-    for (auto &c : contacts.constraints) {
-        auto &a = bodies[c.body[0]];
-        auto &b = bodies[c.body[1]];
+    for_each_in_colour_order(contacts, scheduler, [&](std::uint32_t k) {
+        auto &c = contacts.constraints[k];
+        solver_body copies[2];
+        auto &a = solved(bodies[c.body[0]], copies[0]);
+        auto &b = solved(bodies[c.body[1]], copies[1]);
         auto points = points_of(contacts, c);
         auto is_spring = c.stiffness < large_scalar;
         scalar total_normal = 0;
@@ -200,22 +236,24 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
 
         solve_friction(c, points, a, b);
         solve_spin_and_roll(c, a, b, total_normal);
-    }
+    });
 }
 
-void accumulate_contact_impulses(contact_solver_set &contacts) {
-    for (std::size_t i = 0; i < contacts.points.size(); ++i) {
-        auto &p = contacts.points[i];
-        auto &t = contacts.totals[i];
-        t.normal_impulse += p.normal_impulse;
-        t.tangent_impulse[0] += p.tangent_impulse[0];
-        t.tangent_impulse[1] += p.tangent_impulse[1];
-    }
-    for (auto &c : contacts.constraints) {
+void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler) {
+    auto count = static_cast<std::uint32_t>(contacts.constraints.size());
+    parallel_for(scheduler, 0u, count, contacts_per_task, [&](std::uint32_t k) {
+        auto &c = contacts.constraints[k];
+        for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
+            auto &p = contacts.points[i];
+            auto &t = contacts.totals[i];
+            t.normal_impulse += p.normal_impulse;
+            t.tangent_impulse[0] += p.tangent_impulse[0];
+            t.tangent_impulse[1] += p.tangent_impulse[1];
+        }
         c.total_spin_impulse += c.spin_impulse;
         c.total_roll_impulse[0] += c.roll_impulse[0];
         c.total_roll_impulse[1] += c.roll_impulse[1];
-    }
+    });
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "edyn/simulation/solve_step.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/constraints/constraint_colouring.hpp"
 #include "edyn/dynamics/integration.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material_mixing.hpp"
@@ -85,23 +86,19 @@ void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
     }
 }
 
-void gather_contact(registry &registry, world_state &world, entity manifold_entity,
-                    const contact_manifold &manifold) {
-    if (manifold.num_points == 0) return;
+// Fills the constraint the manifold `source` was given a place for, and its points, from the
+// manifold, the mixed material and last step's impulses. Reads the registry and writes only the
+// constraint and its points: manifolds are gathered at once on the scheduler's threads.
+void gather_contact(const registry &registry, world_state &world, std::uint32_t source) {
+    auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[source]);
     auto a = manifold.body[0], b = manifold.body[1];
-    auto *matA = registry.try_get<material>(a);
-    auto *matB = registry.try_get<material>(b);
-    if (!matA || !matB) return; // a sensor
-    auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
-    if (ia == 0 && ib == 0) return;
-
-    auto mixed = get_mixed_material(registry, *matA, *matB);
+    auto mixed = get_mixed_material(registry, registry.get<material>(a), registry.get<material>(b));
     // The narrowphase left the pivots in world space; offsets are from the centres of mass.
     auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
 
-    contact_solver_constraint c;
-    c.body[0] = ia;
-    c.body[1] = ib;
+    auto &c = world.contacts.constraints[world.contact_slots[source]];
+    c.body[0] = body_index_of(world.body_index, a);
+    c.body[1] = body_index_of(world.body_index, b);
     c.friction = mixed.friction;
     c.restitution = mixed.restitution;
     c.roll_friction = mixed.roll_friction;
@@ -109,14 +106,14 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
     c.stiffness = mixed.stiffness;
     c.damping = mixed.damping;
     c.normal = manifold.point[manifold.ids[0]].normal;
-    c.source = std::uint32_t(world.contact_manifolds.size());
+    c.source = source;
 
-    scalar spin_impulse = 0;
-    std::array<scalar, 2> roll_impulse{0, 0};
-    auto *points = world.contacts.add(c, manifold.num_points);
-    for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
+    c.spin_impulse = 0;
+    c.roll_impulse[0] = c.roll_impulse[1] = 0;
+    for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &cp = manifold.point[manifold.ids[i]];
-        auto &p = points[i];
+        auto &p = world.contacts.points[c.first_point + i];
+        p = {};
         p.rA = cp.positionA - posA;
         p.rB = cp.positionB - posB;
         p.normal = cp.normal;
@@ -124,37 +121,66 @@ void gather_contact(registry &registry, world_state &world, entity manifold_enti
         p.normal_impulse = cp.warm_start.normal;
         p.tangent_impulse[0] = cp.warm_start.friction[0];
         p.tangent_impulse[1] = cp.warm_start.friction[1];
-        spin_impulse += cp.warm_start.spin;
-        roll_impulse[0] += cp.warm_start.roll[0];
-        roll_impulse[1] += cp.warm_start.roll[1];
+        c.spin_impulse += cp.warm_start.spin;
+        c.roll_impulse[0] += cp.warm_start.roll[0];
+        c.roll_impulse[1] += cp.warm_start.roll[1];
     }
-    auto &added = world.contacts.constraints.back();
-    added.spin_impulse = spin_impulse;
-    if (added.roll_friction > 0) {
-        added.num_roll_axes = roll_axes(registry, a, added.normal, added.roll_axis);
-        if (added.num_roll_axes == 0)
-            added.num_roll_axes = roll_axes(registry, b, added.normal, added.roll_axis);
-        added.roll_impulse[0] = roll_impulse[0];
-        added.roll_impulse[1] = roll_impulse[1];
+    c.num_roll_axes = 0;
+    if (c.roll_friction > 0) {
+        c.num_roll_axes = roll_axes(registry, a, c.normal, c.roll_axis);
+        if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(registry, b, c.normal, c.roll_axis);
+    } else {
+        c.roll_impulse[0] = c.roll_impulse[1] = 0;
     }
-    world.contact_manifolds.push_back(manifold_entity);
 }
+
+// Manifolds per parallel range in gather_contacts.
+constexpr std::size_t manifolds_per_task = 64;
 
 } // namespace
 
 void gather_contacts(registry &registry, world_state &world) {
-    world.contacts.clear();
-    world.contact_manifolds.clear();
     wake_bodies_on_moving_kinematics(registry, world);
+    world.contact_manifolds.clear();
+    world.contact_colours.clear();
+    world.colouring.reset(world.bodies);
 
-    // Island by island, so that each island's rows lie together in the arrays.
+    // First the manifolds to solve, island by island (the order in which they are solved, each
+    // after the earlier ones it shares a moving body with), each given its colour.
     for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) {
         for (auto edge : registry.get<island>(island_entity).edges) {
-            if (auto *manifold = registry.try_get<contact_manifold>(edge)) {
-                gather_contact(registry, world, edge, *manifold);
-            }
+            auto *manifold = registry.try_get<contact_manifold>(edge);
+            if (!manifold || manifold->num_points == 0) continue;
+            auto a = manifold->body[0], b = manifold->body[1];
+            if (!registry.all_of<material>(a) || !registry.all_of<material>(b)) continue; // a sensor
+            auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
+            if (ia == static_solver_body && ib == static_solver_body) continue;
+            world.contact_manifolds.push_back(edge);
+            world.contact_colours.push_back(world.colouring.assign(ia, ib, manifold->num_points));
         }
     }
+
+    // Then each manifold's place: colours in order, in the order found within a colour.
+    auto &contacts = world.contacts;
+    world.colouring.colour_ranges(contacts.colour_begin);
+    contacts.constraints.resize(contacts.colour_begin.back());
+    world.contact_slots.resize(world.contact_manifolds.size());
+    std::uint32_t num_points = 0;
+    for (std::uint32_t source = 0; source < world.contact_manifolds.size(); ++source) {
+        auto n = registry.get<contact_manifold>(world.contact_manifolds[source]).num_points;
+        auto place = world.colouring.next_place(world.contact_colours[source], n);
+        auto &c = contacts.constraints[place.constraint];
+        c.first_point = place.first_point;
+        c.num_points = n;
+        world.contact_slots[source] = place.constraint;
+        num_points += n;
+    }
+    contacts.points.resize(num_points);
+    contacts.totals.resize(num_points);
+
+    auto count = static_cast<std::uint32_t>(world.contact_manifolds.size());
+    parallel_for(world.scheduler.get(), 0u, count, manifolds_per_task,
+                 [&](std::uint32_t source) { gather_contact(registry, world, source); });
 }
 
 void solve_constraints(world_state &world, const settings &settings) {
@@ -167,24 +193,27 @@ void solve_constraints(world_state &world, const settings &settings) {
     auto biased = make_constraint_solve_context(settings.joint, h, true);
     auto relax = make_constraint_solve_context(settings.joint, h, false);
 
-    prepare_contacts(contacts, bodies);
+    // Contacts are solved colour by colour, each colour on the scheduler's threads when there is
+    // one; joints and restitution on the calling thread.
+    auto *scheduler = world.scheduler.get();
+    prepare_contacts(contacts, bodies, scheduler);
 
     for (unsigned i = 0; i < substeps; ++i) {
-        integrate_velocities(bodies, h);
+        integrate_velocities(bodies, h, scheduler);
         solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
                           settings.num_individual_restitution_iterations);
         // Joints before contacts in each pass: contacts, solved last, keep bodies apart.
         warm_start_constraints(world.joints, bodies);
-        warm_start_contacts(contacts, bodies);
+        warm_start_contacts(contacts, bodies, scheduler);
         solve_joint_constraints(world.joints, bodies, biased);
-        solve_contacts(contacts, bodies, h, settings.contact, true);
-        integrate_positions(bodies, h);
+        solve_contacts(contacts, bodies, h, settings.contact, true, scheduler);
+        integrate_positions(bodies, h, scheduler);
         project_joint_positions(world.joints, bodies, settings.joint);
         for (unsigned k = 0; k < settings.num_relax_iterations; ++k) {
             solve_joint_constraints(world.joints, bodies, relax);
-            solve_contacts(contacts, bodies, h, settings.contact, false);
+            solve_contacts(contacts, bodies, h, settings.contact, false, scheduler);
         }
-        accumulate_contact_impulses(contacts);
+        accumulate_contact_impulses(contacts, scheduler);
     }
 }
 

@@ -2,16 +2,36 @@
 #define EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
 
 #include <cmath>
+#include <cstdlib>
 #include <edyn/edyn.hpp>
 #include <gtest/gtest.h>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 
 namespace edyn::test {
 
-// A sequential world with default settings, attached on construction, detached on exit.
+// The configuration every behaviour test attaches with: sequential, or, when
+// EDYN_TEST_EXECUTION_MODE is sequential_multithreaded (CTest runs the suite both ways), the
+// multithreaded step on two worker threads. The behaviour must hold in both.
+inline init_config test_config() {
+    init_config config;
+    auto *mode = std::getenv("EDYN_TEST_EXECUTION_MODE");
+    if (mode && std::string_view(mode) == "sequential_multithreaded") {
+        config.execution_mode = execution_mode::sequential_multithreaded;
+        config.num_worker_threads = 2;
+    } else if (mode && std::string_view(mode) != "sequential") {
+        throw std::invalid_argument(std::string("EDYN_TEST_EXECUTION_MODE: unknown mode ") + mode);
+    }
+    return config;
+}
+
+// A world with default settings in the tests' execution mode, attached on construction,
+// detached on exit.
 struct world_fixture : ::testing::Test {
     registry reg;
 
-    void SetUp() override { attach(reg); }
+    void SetUp() override { attach(reg, test_config()); }
     void TearDown() override { detach(reg); }
 
     // Runs whole fixed steps covering `seconds` of simulated time; returns the step count.

@@ -83,7 +83,7 @@ TEST_F(cone_joint, elliptical_cone_respects_each_span) {
     for (int k = 0; k < 3; ++k) {
         registry r;
         std::swap(reg, r);
-        attach(reg);
+        attach(reg, edyn::test::test_config());
         make_rod(span0, span1);
         rigidbody_apply_impulse(reg, rod, pushes[k], {0, -rod_half_length, 0});
         scalar worst = -1, largest_tilt = 0;
@@ -169,7 +169,7 @@ TEST_F(cone_joint, bump_stop_slows_the_swing_before_the_wall) {
 
 TEST(cone_validation, rejects_spans_outside_zero_to_a_right_angle) {
     registry reg;
-    attach(reg);
+    attach(reg, edyn::test::test_config());
     auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), vector3_zero));
     auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {2, 0, 0}));
     auto alive = reg.alive();

@@ -268,7 +268,7 @@ TEST_F(cvjoint, twist_limit_bounces_with_restitution) {
 
 TEST(cvjoint_validation, rejects_inverted_twist_limits_and_negative_stiffness) {
     registry reg;
-    attach(reg);
+    attach(reg, edyn::test::test_config());
     auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), vector3_zero));
     auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {2, 0, 0}));
     auto alive = reg.alive();

@@ -158,7 +158,7 @@ TEST_F(generic_joint, linear_friction_decelerates_at_force_over_mass) {
 
 TEST(generic_validation, rejects_inverted_limits_and_negative_springs) {
     registry reg;
-    attach(reg);
+    attach(reg, edyn::test::test_config());
     auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), vector3_zero));
     auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {2, 0, 0}));
     auto alive = reg.alive();

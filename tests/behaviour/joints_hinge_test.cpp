@@ -160,7 +160,7 @@ TEST_F(hinge_joint, angle_is_tracked_past_half_a_turn) {
 
 TEST(hinge_validation, rejects_inverted_limits_and_skewed_frames) {
     registry reg;
-    attach(reg);
+    attach(reg, edyn::test::test_config());
     auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), vector3_zero));
     auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {2, 0, 0}));
     auto alive = reg.alive();

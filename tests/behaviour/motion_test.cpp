@@ -34,7 +34,7 @@ TEST_F(free_fall, per_body_gravity_overrides_the_world) {
 TEST_F(contact_motion, bounce_height_ratio_is_restitution_squared) {
     for (scalar e : {scalar(0.5), scalar(0.8)}) {
         registry r;
-        attach(r);
+        attach(r, edyn::test::test_config());
         scenes::make_ground(r, scalar(0.5), 0);
         auto def = edyn::test::sphere_def(scalar(0.25), {0, scalar(2.25), 0});
         def.material->restitution = e;

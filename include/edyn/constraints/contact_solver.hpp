@@ -2,6 +2,7 @@
 #define EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 
 #include "edyn/dynamics/solver_body.hpp"
+#include "edyn/parallel/task_scheduler.hpp"
 #include <array>
 #include <cstdint>
 #include <span>
@@ -84,11 +85,18 @@ struct contact_solver_set {
     std::vector<contact_solver_constraint> constraints;
     std::vector<contact_solver_point> points;
     std::vector<contact_point_totals> totals;
+    // The constraints in colour order (see constraint_colouring): colour k is the range
+    // [colour_begin[k], colour_begin[k + 1]), and no two constraints of one colour share a body
+    // that moves, so a colour's constraints are solved at once on the scheduler's threads. Any
+    // constraints from colour_begin.back() on (all of them when the set was not coloured) are
+    // solved in order on the calling thread, after the colours.
+    std::vector<std::uint32_t> colour_begin;
 
     void clear() noexcept {
         constraints.clear();
         points.clear();
         totals.clear();
+        colour_begin.clear();
     }
     // Appends `c` with `num_points` default points and returns the first of them.
     contact_solver_point *add(const contact_solver_constraint &c, std::uint32_t num_points);
@@ -122,22 +130,27 @@ struct contact_solver_settings {
 
 // Computes tangent frames, effective masses and starting normal velocities; call after the
 // points' rA, rB, normal and adjusted separation are set, and before any solve.
-void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies);
+// The passes below spread their work over the scheduler's threads when one is given, colour by
+// colour; the results do not depend on it, nor on its number of threads.
+void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies,
+                      task_scheduler *scheduler = nullptr);
 
 // Re-applies last step's impulses (scaled) as the initial guess.
-void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies);
+void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
+                         task_scheduler *scheduler = nullptr);
 
 // One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
 // without it (relax pass) only the velocity constraints are enforced, removing the push-out
 // velocity so that it does not turn into bounce. The springs of contacts with a material
 // stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
-                    const contact_solver_settings &settings, bool use_bias);
+                    const contact_solver_settings &settings, bool use_bias,
+                    task_scheduler *scheduler = nullptr);
 
 // Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
 // every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
 // from the last one's, warm starting), so their sum is what the contact gave over the step.
-void accumulate_contact_impulses(contact_solver_set &contacts);
+void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler = nullptr);
 
 // Restitution, run at the start of each sub-step before the contact solve: a point approaching
 // faster than the threshold that touches, or will within the sub-step h, gets an impulse making

@@ -4,6 +4,7 @@
 #include "edyn/collision/broadphase.hpp"
 #include "edyn/collision/collision_result.hpp"
 #include "edyn/collision/manifold_update.hpp"
+#include "edyn/constraints/constraint_colouring.hpp"
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/solver_body.hpp"
@@ -36,7 +37,12 @@ struct world_state {
     std::vector<entity> body_entities;
     std::vector<std::uint32_t> body_index;
     contact_solver_set contacts;
+    // The manifolds solved this step, in the order found (a constraint's `source` indexes this),
+    // with the colour each was given and its constraint's place in `contacts`.
     std::vector<entity> contact_manifolds;
+    std::vector<std::uint32_t> contact_colours;
+    std::vector<std::uint32_t> contact_slots;
+    constraint_colouring colouring;
     constraint_solver_state joints;
 
     // Manifold entities in the order the narrowphase visits them, and what changed in each.

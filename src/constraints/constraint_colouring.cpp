@@ -1,0 +1,45 @@
+#include "edyn/constraints/constraint_colouring.hpp"
+#include <algorithm>
+
+namespace edyn {
+
+void constraint_colouring::reset(std::span<const solver_body> bodies) {
+    this->bodies = bodies;
+    next_colour.assign(bodies.size(), 0);
+    counts.clear();
+}
+
+std::uint32_t constraint_colouring::assign(solver_body_index a, solver_body_index b, std::uint32_t num_points) {
+    auto movesA = bodies[a].inv_mass > 0, movesB = bodies[b].inv_mass > 0;
+    auto colour = std::max(movesA ? next_colour[a] : 0u, movesB ? next_colour[b] : 0u);
+    if (movesA) next_colour[a] = colour + 1;
+    if (movesB) next_colour[b] = colour + 1;
+    if (counts.size() <= colour) counts.resize(colour + 1);
+    ++counts[colour].constraints;
+    counts[colour].points += num_points;
+    return colour;
+}
+
+void constraint_colouring::colour_ranges(std::vector<std::uint32_t> &begin) {
+    begin.clear();
+    colour_count total;
+    for (auto &count : counts) {
+        begin.push_back(total.constraints);
+        auto here = total;
+        total.constraints += count.constraints;
+        total.points += count.points;
+        count = here; // from now on, the next free place of the colour
+    }
+    begin.push_back(total.constraints);
+}
+
+constraint_colouring::place constraint_colouring::next_place(std::uint32_t colour,
+                                                             std::uint32_t num_points) noexcept {
+    auto &next = counts[colour];
+    place p{next.constraints, next.points};
+    ++next.constraints;
+    next.points += num_points;
+    return p;
+}
+
+} // namespace edyn
