@@ -3,6 +3,11 @@
 # scenes with edyn and with Bullet, one engine after the other. Writes bench/results/latest.json
 # (the records), latest.md (the table, also printed) and latest.png (ms/step against body count).
 # Arguments go to edyn-bench, e.g. scripts/bench.sh --scene pile --bodies 1024 4096.
+#
+#   scripts/bench.sh --scaling [edyn-bench arguments]
+# instead runs edyn's piles of 4,096 and 16,384 bodies on 1, 2, 4, 8 and 16 threads (as many of
+# those as the machine has cores) and writes bench/results/scaling.md (the table, also printed)
+# and scaling.png (speed-up against threads).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -13,6 +18,34 @@ cmake --build build-release -j "$(nproc)" --target edyn-bench
 
 results=bench/results
 mkdir -p "$results"
+
+if [ "${1:-}" = "--scaling" ]; then
+  shift
+  runs=$(mktemp -d)
+  trap 'rm -rf "$runs"' EXIT
+  for threads in 1 2 4 8 16; do
+    [ "$threads" -le "$(nproc)" ] || break
+    ./build-release/bench/edyn-bench --scene pile --bodies 4096 16384 --engine edyn --repeat 3 \
+      --threads "$threads" --json "$runs/$threads.json" "$@" >/dev/null
+  done
+  # "bodies threads median_ms" per run, then the speed-up over the same pile on one thread.
+  cat "$runs"/*.json | grep '"engine": "edyn"' |
+    sed -E 's/.*"bodies": ([0-9]+).*"threads": ([0-9]+).*"median_ms": ([-0-9.e+]+).*/\1 \2 \3/' |
+    sort -k1,1n -k2,2n | awk '$2 == 1 { one[$1] = $3 } { print $1, $2, $3, one[$1] / $3 }' >"$runs/scaling.dat"
+  {
+    echo "Pile, edyn-bench medians of 3 runs on $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown):"
+    echo
+    echo "| bodies | threads | median ms/step | speed-up over 1 thread |"
+    echo "| ---: | ---: | ---: | ---: |"
+    awk '{ printf "| %d | %d | %.3f | %.2f |\n", $1, $2, $3, $4 }' "$runs/scaling.dat"
+  } | tee "$results/scaling.md"
+  for bodies in 4096 16384; do
+    awk -v n="$bodies" '$1 == n { print $2, $4 }' "$runs/scaling.dat" >"$runs/pile-$bodies.dat"
+  done
+  gnuplot -e "dir='$runs'; out='$results/scaling.png'; cores=$(nproc)" bench/scaling.gp
+  echo "bench.sh: wrote $results/scaling.md and $results/scaling.png"
+  exit 0
+fi
 {
   echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
   echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"

@@ -21,8 +21,10 @@ struct init_config {
     // and asking for asynchronous throws std::invalid_argument.
     edyn::execution_mode execution_mode{edyn::execution_mode::sequential};
     // sequential_multithreaded only: threads that run the step's parallel phases, the calling
-    // thread included; 0 means one per hardware thread. Threads are made once, in attach.
+    // thread included; 0 means one per hardware thread, and more than max_worker_threads is
+    // refused. Threads are made once, in attach.
     unsigned num_worker_threads{0};
+    static constexpr unsigned max_worker_threads = 256;
     // sequential_multithreaded only: the program's own scheduler, instead of edyn's oneTBB
     // arena (num_worker_threads is then ignored).
     std::optional<task_hooks> scheduler{};

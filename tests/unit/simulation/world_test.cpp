@@ -67,6 +67,18 @@ TEST(world, sequential_multithreaded_attaches_with_its_own_threads_or_the_progra
     EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential_multithreaded);
     detach(reg);
 
+    // A thread count no machine has is refused, naming the field, and nothing is attached.
+    config.num_worker_threads = 100000;
+    try {
+        attach(reg, config);
+        ADD_FAILURE() << "attach accepted 100,000 worker threads";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("init_config::num_worker_threads is 100000"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_FALSE(is_attached(reg));
+    config.num_worker_threads = 2;
+
     // Incomplete hooks are refused, naming the field, and nothing is attached.
     config.scheduler = task_hooks{};
     try {
