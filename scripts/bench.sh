@@ -4,10 +4,10 @@
 # (the records), latest.md (the table, also printed) and latest.png (ms/step against body count).
 # Arguments go to edyn-bench, e.g. scripts/bench.sh --scene pile --bodies 1024 4096.
 #
-#   scripts/bench.sh --scaling [edyn-bench arguments]
-# instead runs edyn's piles of 4,096 and 16,384 bodies on 1, 2, 4, 8 and 16 threads (as many of
-# those as the machine has cores) and writes bench/results/scaling.md (the table, also printed)
-# and scaling.png (speed-up against threads).
+#   scripts/bench.sh --scaling [body counts]
+# instead runs edyn's piles (of 4,096 and 16,384 bodies unless given) on 1, 2, 4, 8 and 16
+# threads (as many of those as the machine has cores), three runs each, and writes
+# bench/results/scaling.md (the table, also printed) and scaling.png (speed-up against threads).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -21,12 +21,14 @@ mkdir -p "$results"
 
 if [ "${1:-}" = "--scaling" ]; then
   shift
+  piles=("$@")
+  [ ${#piles[@]} -gt 0 ] || piles=(4096 16384)
   runs=$(mktemp -d)
   trap 'rm -rf "$runs"' EXIT
   for threads in 1 2 4 8 16; do
     [ "$threads" -le "$(nproc)" ] || break
-    ./build-release/bench/edyn-bench --scene pile --bodies 4096 16384 --engine edyn --repeat 3 \
-      --threads "$threads" --json "$runs/$threads.json" "$@" >/dev/null
+    ./build-release/bench/edyn-bench --scene pile --bodies "${piles[@]}" --engine edyn --repeat 3 \
+      --threads "$threads" --json "$runs/$threads.json" >/dev/null
   done
   # "bodies threads median_ms" per run, then the speed-up over the same pile on one thread.
   cat "$runs"/*.json | grep '"engine": "edyn"' |
@@ -39,10 +41,12 @@ if [ "${1:-}" = "--scaling" ]; then
     echo "| ---: | ---: | ---: | ---: |"
     awk '{ printf "| %d | %d | %.3f | %.2f |\n", $1, $2, $3, $4 }' "$runs/scaling.dat"
   } | tee "$results/scaling.md"
-  for bodies in 4096 16384; do
+  plots=()
+  for bodies in "${piles[@]}"; do
     awk -v n="$bodies" '$1 == n { print $2, $4 }' "$runs/scaling.dat" >"$runs/pile-$bodies.dat"
+    plots+=("'$runs/pile-$bodies.dat' using 1:2 with linespoints lw 2 pt 7 title 'pile, $bodies bodies'")
   done
-  gnuplot -e "dir='$runs'; out='$results/scaling.png'; cores=$(nproc)" bench/scaling.gp
+  gnuplot -e "out='$results/scaling.png'; cores=$(nproc); piles=\"$(IFS=,; echo "${plots[*]}")\"" bench/scaling.gp
   echo "bench.sh: wrote $results/scaling.md and $results/scaling.png"
   exit 0
 fi
