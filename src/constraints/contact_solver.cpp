@@ -91,8 +91,10 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
             p.normal_mass = effective_mass(a, b, p.normal, p.rA, p.rB);
             p.tangent_mass[0] = effective_mass(a, b, p.tangent[0], p.rA, p.rB);
             p.tangent_mass[1] = effective_mass(a, b, p.tangent[1], p.rA, p.rB);
+            auto carried = std::min(contacts.totals[i].relative_velocity, scalar(0));
             contacts.totals[i] = {};
-            contacts.totals[i].relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
+            contacts.totals[i].relative_velocity =
+                std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), carried);
         }
 
         c.total_spin_impulse = 0;
@@ -271,10 +273,12 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
 
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &p = points[i];
-        // The approach speed is the larger of now and when the step began: in between, the
-        // speculative contact may have braked the point so that it lands exactly on the surface.
+        // The approach speed is the fastest seen since the step began (or carried over from an
+        // earlier step): in between, the speculative contact may have braked the point so that
+        // it lands exactly on the surface.
         auto approach =
             std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), totals[i].relative_velocity);
+        totals[i].relative_velocity = approach;
         // A point still apart bounces only when the gap closes within this sub-step, so that
         // the bounce starts at most one sub-step of travel early.
         auto hits = approach < -threshold && current_separation(p, a, b) + approach * h <= 0;

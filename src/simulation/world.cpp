@@ -51,9 +51,9 @@ void attach(registry &registry, const init_config &config) {
     std::unique_ptr<task_scheduler> scheduler;
     if (config.execution_mode == execution_mode::sequential_multithreaded) {
         if (!config.scheduler && config.num_worker_threads > init_config::max_worker_threads) {
-            invalid("attach", "init_config::num_worker_threads is " + std::to_string(config.num_worker_threads) +
-                                  ", more than the " + std::to_string(init_config::max_worker_threads) +
-                                  " allowed");
+            invalid("attach", "init_config::num_worker_threads is " +
+                                  std::to_string(config.num_worker_threads) + ", more than the " +
+                                  std::to_string(init_config::max_worker_threads) + " allowed");
         }
         try {
             scheduler = config.scheduler ? std::make_unique<task_scheduler>(*config.scheduler)

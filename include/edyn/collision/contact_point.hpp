@@ -43,6 +43,10 @@ struct contact_point {
         std::array<scalar, 2> friction{0, 0};
         scalar spin{0};
         std::array<scalar, 2> roll{0, 0};
+        // Normal speed (negative) at which the point was approaching when the speculative
+        // contact braked it short of the surface, not yet answered by a bounce: the restitution
+        // solver bounces from this speed, not the braked one, when the point touches.
+        scalar approach{0};
     } warm_start;
 
     // Material values mixed for this point (per point because triangle meshes may carry

@@ -39,7 +39,10 @@ struct contact_solver_point {
 // What a point needs only once per sub-step or step: restitution and the impulses reported
 // to the user. Kept apart from contact_solver_point, at the same index.
 struct contact_point_totals {
-    scalar relative_velocity{0}; // normal relative velocity when the step began
+    // Normal relative velocity when the step began, or the approach carried over from earlier
+    // steps (contact_point::warm_start.approach) where that is faster: set it to the carried
+    // approach (0 for none) before prepare_contacts.
+    scalar relative_velocity{0};
     scalar restitution_impulse{0};
     scalar tangent_restitution_impulse[2]{0, 0};
     // Sums over the step's sub-steps of the point's impulses.

@@ -41,7 +41,8 @@ bool moves(const std::vector<solver_body> &bodies, solver_body_index i) { return
 
 } // namespace
 
-TEST(constraint_colouring, no_two_constraints_of_a_colour_share_a_moving_body_and_shared_ones_keep_their_order) {
+TEST(constraint_colouring,
+     no_two_constraints_of_a_colour_share_a_moving_body_and_shared_ones_keep_their_order) {
     auto bodies = make_bodies(200);
     auto pairs = random_pairs(2000, bodies.size(), 3);
     constraint_colouring colouring;
