@@ -220,7 +220,7 @@ contact_point_changes refresh_contact_manifold(contact_manifold &manifold, const
 }
 
 contact_point_changes update_contact_manifold(contact_manifold &manifold, const manifold_transforms &tf,
-                                              const collision_result &result) {
+                                              const collision_result &result, bool shapes_changed) {
     EDYN_ASSERT(manifold.num_points <= max_contacts);
     EDYN_ASSERT(result.num_points <= max_contacts);
     contact_point_changes changes;
@@ -243,10 +243,12 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
         }
     }
 
-    // A continued point that is now too far apart ends here.
+    // A continued point that is now too far apart ends here, and so does one that lies on a shape
+    // that has changed.
     for (std::uint32_t pos = 0; pos < manifold.num_points;) {
         auto slot = manifold.ids[pos];
-        if (matched[slot] && manifold.point[slot].distance > manifold.separation_threshold) {
+        if ((matched[slot] && manifold.point[slot].distance > manifold.separation_threshold) ||
+            (shapes_changed && !matched[slot])) {
             remove_point_at(manifold, pos, changes);
         } else {
             ++pos;

@@ -103,7 +103,8 @@ contact_point_changes collide_manifold(const registry &registry, contact_manifol
             }
         });
     });
-    auto changes = update_contact_manifold(manifold, tf, result);
+    auto shapes_changed = manifold.last_collide.valid && manifold.last_collide.shape_epochs != epochs;
+    auto changes = update_contact_manifold(manifold, tf, result, shapes_changed);
     remember_collide(manifold, tf, epochs);
     return changes;
 }

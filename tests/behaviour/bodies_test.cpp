@@ -210,6 +210,22 @@ TEST_F(change_shape, a_resting_sphere_given_a_larger_radius_in_place_rises) {
     EXPECT_NEAR(pos(ball).y, scalar(0.75), scalar(0.01)) << "ball centre at " << pos(ball).y;
 }
 
+// Shrunk in place, the ball must not stay standing on the point its old surface touched: that
+// point, refreshed from pivots on the old shape, held it 25 cm up for good.
+TEST_F(change_shape, a_resting_sphere_given_a_smaller_radius_in_place_settles_lower) {
+    scenes::make_ground(reg, scalar(0.5), 0);
+    auto ball = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, scalar(0.5), 0}, 2));
+    run_for(2);
+    ASSERT_TRUE(reg.all_of<sleeping_tag>(ball));
+
+    reg.replace<sphere_shape>(ball, sphere_shape{scalar(0.25)});
+    run_for(1);
+    EXPECT_NEAR(pos(ball).y, scalar(0.25), scalar(0.01)) << "ball centre at " << pos(ball).y;
+    auto &manifold = reg.get<contact_manifold>(reg.view<contact_manifold>().front());
+    ASSERT_EQ(manifold.num_points, 1u);
+    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, 0, scalar(0.01));
+}
+
 // Only the changed body's manifolds are recomputed: another pair resting nearby keeps reusing
 // its points.
 TEST_F(change_shape, other_resting_pairs_keep_reusing_their_contact_points) {

@@ -51,12 +51,15 @@ contact_point_changes refresh_contact_manifold(contact_manifold &manifold, const
 //   impulses, materials and lifetime, so that warm starting works.
 // - Result points farther than the separation threshold are ignored; a matched point that is
 //   now beyond it is removed.
+// - With `shapes_changed` (a body's shape was replaced or edited since the live points were
+//   found), live points the result does not match are removed: their pivots lie on the old
+//   shapes, so refreshing them would keep a shrunken body standing on its old surface.
 // - Unmatched result points fill free slots. When live and new points exceed max_contacts, the
 //   set kept is the one that contains the deepest point and spans the largest area (measured
 //   on body A), existing points winning ties; the points left out are destroyed (or never
 //   created).
 contact_point_changes update_contact_manifold(contact_manifold &manifold, const manifold_transforms &tf,
-                                              const collision_result &result);
+                                              const collision_result &result, bool shapes_changed = false);
 
 // Removes every point (e.g. when a body turns into a sensor or its shape changes).
 contact_point_changes clear_contact_manifold(contact_manifold &manifold);
