@@ -178,6 +178,11 @@ void validate_rigidbody_def(const rigidbody_def &def) {
     if (def.gravity) check_finite(fn, "gravity", *def.gravity);
     if (def.center_of_mass) check_finite(fn, "center_of_mass", *def.center_of_mass);
     if (def.material) check_material(fn, *def.material);
+    if (def.restitution) {
+        if (!def.material) fail(fn, "restitution", "is set on a sensor, which has no material");
+        if (!(*def.restitution >= 0 && *def.restitution <= 1))
+            fail(fn, "restitution", "must be in [0, 1], got " + str(*def.restitution));
+    }
     if (def.shape) {
         validate_shape(*def.shape);
         if (std::holds_alternative<plane_shape>(*def.shape) && def.kind != rigidbody_kind::rb_static) {
@@ -220,7 +225,8 @@ void make_rigidbody(entity e, registry &registry, const rigidbody_def &def) {
     update_inertia_world(registry, e);
     if (def.kind == rigidbody_kind::rb_dynamic && def.gravity) registry.emplace<gravity>(e, *def.gravity);
     if (def.material) {
-        registry.emplace<material>(e, *def.material);
+        auto &m = registry.emplace<material>(e, *def.material);
+        if (def.restitution) m.restitution = *def.restitution;
     } else {
         registry.emplace<sensor_tag>(e);
     }

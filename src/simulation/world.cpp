@@ -15,6 +15,7 @@
 #include "edyn/simulation/world_state.hpp"
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -41,20 +42,53 @@ settings &mutable_settings(registry &registry) {
 
 bool is_attached(const registry &registry) noexcept { return registry.ctx().contains<world_state>(); }
 
-void attach(registry &registry, const init_config &config) {
-    if (is_attached(registry)) invalid("attach", "the registry is already attached");
+namespace {
+
+void check_config(const char *function, const init_config &config) {
     if (config.execution_mode == execution_mode::asynchronous) {
-        invalid("attach", "execution_mode asynchronous is not available yet; use sequential or "
+        invalid(function, "execution_mode asynchronous is not available yet; use sequential or "
                           "sequential_multithreaded");
     }
+    if (config.execution_mode != execution_mode::sequential_multithreaded) return;
+    if (config.scheduler) {
+        auto &hooks = *config.scheduler;
+        if (!hooks.enqueue) invalid(function, "init_config::scheduler: task_hooks::enqueue is null");
+        if (!hooks.wait) invalid(function, "init_config::scheduler: task_hooks::wait is null");
+        if (hooks.concurrency == 0) invalid(function, "init_config::scheduler: task_hooks::concurrency is 0");
+    } else if (config.num_worker_threads > init_config::max_worker_threads) {
+        invalid(function, "init_config::num_worker_threads is " + std::to_string(config.num_worker_threads) +
+                              ", more than the " + std::to_string(init_config::max_worker_threads) +
+                              " allowed");
+    }
+}
+
+// What init() set, read by attach(registry); registries may be attached on several threads.
+std::mutex default_config_mutex;
+init_config default_config;
+
+} // namespace
+
+void init(const init_config &config) {
+    check_config("init", config);
+    std::lock_guard lock(default_config_mutex);
+    default_config = config;
+}
+
+void attach(registry &registry) {
+    init_config config;
+    {
+        std::lock_guard lock(default_config_mutex);
+        config = default_config;
+    }
+    attach(registry, config);
+}
+
+void attach(registry &registry, const init_config &config) {
+    if (is_attached(registry)) invalid("attach", "the registry is already attached");
+    check_config("attach", config);
     // Made before anything is added to the registry, so that a rejected config leaves it as it was.
     std::unique_ptr<task_scheduler> scheduler;
     if (config.execution_mode == execution_mode::sequential_multithreaded) {
-        if (!config.scheduler && config.num_worker_threads > init_config::max_worker_threads) {
-            invalid("attach", "init_config::num_worker_threads is " +
-                                  std::to_string(config.num_worker_threads) + ", more than the " +
-                                  std::to_string(init_config::max_worker_threads) + " allowed");
-        }
         try {
             scheduler = config.scheduler ? std::make_unique<task_scheduler>(*config.scheduler)
                                          : std::make_unique<task_scheduler>(config.num_worker_threads);

@@ -29,6 +29,9 @@ struct rigidbody_def {
     std::optional<matrix3x3> inertia;
     // Surface material; reset it to make a sensor (contacts and events, no contact response).
     std::optional<edyn::material> material{edyn::material{}};
+    // The manual's shorthand for material->restitution: when set, it replaces the material's
+    // restitution (in [0, 1]); a sensor, which has no material, refuses it.
+    std::optional<scalar> restitution;
     // Origin of the body in world space (the centre of mass is offset from it by center_of_mass).
     vector3 position{vector3_zero};
     quaternion orientation{quaternion_identity};

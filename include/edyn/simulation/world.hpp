@@ -6,11 +6,18 @@
 
 namespace edyn {
 
+// Sets the configuration that attach(registry), given none, uses from then on (until init is
+// called, a default init_config). Registries already attached keep theirs. Throws
+// std::invalid_argument, keeping the previous configuration, for one attach would refuse.
+void init(const init_config &config = {});
+
 // Makes `registry` ready for physics: settings, the broadphase and the listeners that keep the
 // simulation in step with the registry. Bodies made before attach() join the simulation too.
-// Throws std::invalid_argument for an execution mode that is not available, or if the
-// registry is already attached.
-void attach(registry &registry, const init_config &config = {});
+// Without a configuration, the one given to init() applies. Throws std::invalid_argument for
+// an execution mode that is not available, a bad thread count or incomplete scheduler hooks
+// (naming the init_config field), or if the registry is already attached.
+void attach(registry &registry);
+void attach(registry &registry, const init_config &config);
 
 // Removes every edyn component, context variable and internal entity (manifolds, islands);
 // the program's own entities and components stay. attach() may be called again afterwards.

@@ -150,6 +150,27 @@ TEST_F(rigidbody_test, material_values_must_be_in_range) {
                                    })));
 }
 
+// The manual's hello world sets def.restitution beside def.material->friction.
+TEST_F(rigidbody_test, restitution_set_on_the_def_replaces_the_materials) {
+    auto def = valid_box();
+    def.material->friction = scalar(0.8);
+    def.material->restitution = scalar(0.3);
+    def.restitution = 0;
+    auto e = make_rigidbody(reg, def);
+    EXPECT_EQ(reg.get<material>(e).restitution, 0);
+    EXPECT_EQ(reg.get<material>(e).friction, scalar(0.8));
+    def.restitution.reset();
+    EXPECT_EQ(reg.get<material>(make_rigidbody(reg, def)).restitution, scalar(0.3));
+
+    def.restitution = scalar(1.5);
+    expect_rejected(def, "restitution");
+    def.restitution = qnan;
+    expect_rejected(def, "restitution");
+    def.restitution = scalar(0.5);
+    def.material.reset(); // a sensor has no material to take it
+    expect_rejected(def, "restitution");
+}
+
 TEST_F(rigidbody_test, vectors_must_be_finite) {
     auto def = valid_box();
     def.position = {qnan, 0, 0};

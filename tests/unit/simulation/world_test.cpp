@@ -90,6 +90,39 @@ TEST(world, sequential_multithreaded_attaches_with_its_own_threads_or_the_progra
     EXPECT_FALSE(is_attached(reg));
 }
 
+// The manual's edyn::init(init_config): the configuration attach uses when given none.
+TEST(world, init_sets_the_configuration_attach_uses_when_given_none) {
+    init_config config;
+    config.execution_mode = execution_mode::sequential_multithreaded;
+    config.num_worker_threads = 2;
+    init(config);
+    registry reg;
+    attach(reg);
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential_multithreaded);
+    detach(reg);
+
+    // Refused as attach would refuse it, naming the field; the previous configuration stays.
+    try {
+        init(init_config{execution_mode::asynchronous});
+        ADD_FAILURE() << "init accepted the asynchronous mode, which is not available";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("init: execution_mode"), std::string::npos) << e.what();
+    }
+    config.num_worker_threads = 100000;
+    EXPECT_THROW(init(config), std::invalid_argument);
+    attach(reg);
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential_multithreaded);
+    detach(reg);
+
+    // A configuration given to attach wins; init() with none restores the default.
+    attach(reg, init_config{execution_mode::sequential});
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential);
+    detach(reg);
+    init();
+    attach(reg);
+    EXPECT_EQ(get_settings(reg).execution_mode, init_config{}.execution_mode);
+}
+
 TEST(world, update_runs_as_many_fixed_steps_as_the_time_asks_for) {
     registry reg;
     attach(reg);
