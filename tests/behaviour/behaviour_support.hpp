@@ -1,6 +1,7 @@
 #ifndef EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
 #define EDYN_TESTS_BEHAVIOUR_SUPPORT_HPP
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <edyn/edyn.hpp>
@@ -79,6 +80,31 @@ inline scalar fall(const registry &reg, scalar seconds) {
     auto n = std::round(seconds / get_fixed_dt(reg)) * scalar(get_solver_substeps(reg));
     auto h = seconds / n;
     return g * h * h * n * (n + 1) / 2;
+}
+
+// Steps until `ball` has bounced and reached its peak (at most `max_steps`); returns the peak
+// height of its centre less `radius`, or a negative value if it never bounced.
+inline scalar rebound_peak(registry &reg, entity ball, scalar radius, int max_steps = 300) {
+    bool bounced = false;
+    scalar peak = 0;
+    for (int i = 0; i < max_steps; ++i) {
+        step_simulation(reg);
+        auto v = reg.get<linvel>(ball).y;
+        if (!bounced && v > 0) bounced = true;
+        if (bounced) {
+            peak = std::max(peak, reg.get<position>(ball).y - radius);
+            if (v < 0) break;
+        }
+    }
+    return bounced ? peak : scalar(-1);
+}
+
+// How far above the closed form a bounce's peak may be: a bounce starts when contact happens
+// within the coming sub-step, so up to one sub-step of travel above the ground, plus 1%.
+inline scalar rebound_tolerance(const registry &reg, scalar drop_height, scalar expected) {
+    auto impact_speed = std::sqrt(2 * length(get_gravity(reg)) * drop_height);
+    auto substep = get_fixed_dt(reg) / scalar(get_solver_substeps(reg));
+    return impact_speed * substep + scalar(0.01) * expected;
 }
 
 } // namespace edyn::test
