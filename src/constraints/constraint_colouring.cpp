@@ -11,7 +11,7 @@ void constraint_colouring::reset(std::span<const solver_body> bodies) {
 
 std::uint32_t constraint_colouring::assign(solver_body_index a, solver_body_index b,
                                            std::uint32_t num_points) {
-    auto movesA = bodies[a].inv_mass > 0, movesB = bodies[b].inv_mass > 0;
+    auto movesA = moves(bodies[a]), movesB = moves(bodies[b]);
     auto colour = std::max(movesA ? next_colour[a] : 0u, movesB ? next_colour[b] : 0u);
     if (movesA) next_colour[a] = colour + 1;
     if (movesB) next_colour[b] = colour + 1;

@@ -87,14 +87,18 @@ void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, co
                             const vector3 &rB, scalar inv_h) noexcept {
     auto dvA = p * a.inv_mass, dwA = a.inv_inertia * cross(rA, p);
     auto dvB = -p * b.inv_mass, dwB = b.inv_inertia * cross(rB, -p);
-    a.delta_position += dvA;
-    a.delta_rotation = normalize(integrate(a.delta_rotation, dwA, 1));
-    b.delta_position += dvB;
-    b.delta_rotation = normalize(integrate(b.delta_rotation, dwB, 1));
-    a.linvel += dvA * inv_h;
-    a.angvel += dwA * inv_h;
-    b.linvel += dvB * inv_h;
-    b.angvel += dwB * inv_h;
+    if (moves(a)) {
+        a.delta_position += dvA;
+        a.delta_rotation = normalize(integrate(a.delta_rotation, dwA, 1));
+        a.linvel += dvA * inv_h;
+        a.angvel += dwA * inv_h;
+    }
+    if (moves(b)) {
+        b.delta_position += dvB;
+        b.delta_rotation = normalize(integrate(b.delta_rotation, dwB, 1));
+        b.linvel += dvB * inv_h;
+        b.angvel += dwB * inv_h;
+    }
 }
 
 } // namespace

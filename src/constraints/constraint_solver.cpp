@@ -1,6 +1,7 @@
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/dynamics/tags.hpp"
+#include "edyn/parallel/parallel_for.hpp"
 #include <algorithm>
 
 namespace edyn {
@@ -8,20 +9,43 @@ namespace edyn {
 namespace {
 
 template<typename Solver>
-void gather_batch(const registry &registry, constraint_batch<Solver> &batch, body_index_map body_index) {
+void gather_batch(const registry &registry, constraint_batch<Solver> &batch, body_index_map body_index,
+                  constraint_colouring &colouring) {
     using component = typename Solver::component;
-    batch.solvers.clear();
-    batch.entities.clear();
+    batch.unsorted.clear();
+    batch.unsorted_entities.clear();
+    batch.colours.clear();
     auto view = registry.view<component>(exclude<sleeping_tag>);
+    std::uint32_t num_colours = 0;
     for (auto e : view) {
         auto &con = view.template get<component>(e);
         constraint_body_indices indices{body_index_of(body_index, con.body[0]),
                                         body_index_of(body_index, con.body[1])};
         // Neither body moves this step (both static, or asleep): nothing to solve.
         if (indices.a == 0 && indices.b == 0) continue;
-        batch.solvers.push_back(make_constraint_solver(registry, con, indices));
-        batch.entities.push_back(e);
+        batch.unsorted.push_back(make_constraint_solver(registry, con, indices));
+        batch.unsorted_entities.push_back(e);
+        batch.colours.push_back(colouring.assign(indices.a, indices.b));
+        num_colours = std::max(num_colours, batch.colours.back() + 1);
     }
+
+    // Colour by colour, in the order found within a colour (a counting sort).
+    batch.colour_begin.assign(num_colours + 1, 0);
+    for (auto colour : batch.colours)
+        ++batch.colour_begin[colour + 1];
+    for (std::uint32_t k = 0; k < num_colours; ++k)
+        batch.colour_begin[k + 1] += batch.colour_begin[k];
+    batch.solvers.resize(batch.unsorted.size());
+    batch.entities.resize(batch.unsorted.size());
+    for (std::size_t i = 0; i < batch.unsorted.size(); ++i) {
+        auto place = batch.colour_begin[batch.colours[i]]++;
+        batch.solvers[place] = batch.unsorted[i];
+        batch.entities[place] = batch.unsorted_entities[i];
+    }
+    // The counters now hold each colour's end; shifted back, its beginning.
+    for (auto k = num_colours; k > 0; --k)
+        batch.colour_begin[k] = batch.colour_begin[k - 1];
+    batch.colour_begin[0] = 0;
 }
 
 template<typename Fn>
@@ -36,9 +60,32 @@ void for_each_batch(const constraint_solver_state &state, Fn &&fn) {
 
 } // namespace
 
-void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index) {
-    for_each_batch(state, [&](auto &batch) { gather_batch(registry, batch, body_index); });
+void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index,
+                        std::span<const solver_body> bodies) {
+    state.colouring.reset(bodies);
+    for_each_batch(state, [&](auto &batch) { gather_batch(registry, batch, body_index, state.colouring); });
 }
+
+namespace {
+
+// Joints per parallel range: a joint's rows cost more than a contact's.
+constexpr std::size_t joints_per_task = 32;
+
+// Calls fn(solver) for every joint, colour after colour; within a colour, type by type, each
+// type's joints of that colour at once on the scheduler's threads.
+template<typename Fn>
+void for_each_in_colour_order(constraint_solver_state &state, Fn &&fn) {
+    auto num_colours = state.colouring.num_colours();
+    for (std::uint32_t k = 0; k < num_colours; ++k) {
+        for_each_batch(state, [&](auto &batch) {
+            if (k + 1 >= batch.colour_begin.size()) return;
+            parallel_for(state.scheduler, batch.colour_begin[k], batch.colour_begin[k + 1], joints_per_task,
+                         [&](std::uint32_t i) { fn(batch.solvers[i]); });
+        });
+    }
+}
+
+} // namespace
 
 constraint_solve_context make_constraint_solve_context(const constraint_solver_settings &settings, scalar h,
                                                        bool use_bias) noexcept {
@@ -54,35 +101,27 @@ constraint_solve_context make_constraint_solve_context(const constraint_solver_s
     return ctx;
 }
 
-void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies) noexcept {
-    for_each_batch(state, [&](auto &batch) {
-        for (auto &s : batch.solvers)
-            warm_start(s, bodies);
-    });
+void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies) {
+    for_each_in_colour_order(state, [&](auto &s) { warm_start(s, bodies); });
 }
 
 void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solve_context &ctx) noexcept {
+                             const constraint_solve_context &ctx) {
     state.inv_h = ctx.inv_h;
-    for_each_batch(state, [&](auto &batch) {
-        for (auto &s : batch.solvers)
-            solve(s, bodies, ctx);
-    });
+    for_each_in_colour_order(state, [&](auto &s) { solve(s, bodies, ctx); });
 }
 
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solver_settings &settings) noexcept {
+                             const constraint_solver_settings &settings) {
     if (settings.position_projection <= 0) return;
     // Each joint's projection moves bodies that other joints share: in a chain one pass leaves
     // the error spread along it, and a few passes gather it out.
     for (unsigned pass = 0; pass < settings.position_projection_iterations; ++pass) {
-        for_each_batch(state, [&](auto &batch) {
-            for (auto &s : batch.solvers) {
-                if constexpr (requires {
-                                  project_positions(s, bodies, settings.position_projection, state.inv_h);
-                              }) {
-                    project_positions(s, bodies, settings.position_projection, state.inv_h);
-                }
+        for_each_in_colour_order(state, [&](auto &s) {
+            if constexpr (requires {
+                              project_positions(s, bodies, settings.position_projection, state.inv_h);
+                          }) {
+                project_positions(s, bodies, settings.position_projection, state.inv_h);
             }
         });
     }

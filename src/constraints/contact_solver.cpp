@@ -58,7 +58,7 @@ void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler
 // not (the static body, a kinematic body) may be read by many constraints of one colour at once,
 // so each works on its own copy, which is dropped.
 inline solver_body &solved(solver_body &body, solver_body &copy) {
-    if (body.inv_mass > 0) return body;
+    if (moves(body)) return body;
     copy = body;
     return copy;
 }

@@ -30,8 +30,8 @@ void solve(gravity_constraint_solver &s, std::span<solver_body> bodies,
     if (!(dist_sqr > scalar(1e-12))) return;
     // Impulse on A towards B over the sub-step, and its opposite on B.
     auto p = d * (s.strength * ctx.h / (dist_sqr * std::sqrt(dist_sqr)));
-    a.linvel += p * a.inv_mass;
-    b.linvel -= p * b.inv_mass;
+    if (moves(a)) a.linvel += p * a.inv_mass;
+    if (moves(b)) b.linvel -= p * b.inv_mass;
 }
 
 } // namespace edyn

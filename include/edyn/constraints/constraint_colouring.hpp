@@ -14,7 +14,7 @@ namespace edyn {
 // constraints of one colour at once on any number of threads, then gives bit for bit what
 // solving them one after another in the given order gives: two constraints that share no moving
 // body touch no common state, and those that do keep their order. Bodies that do not move (the
-// static body, kinematic bodies: zero inverse mass) are only read by the solver and order
+// static body, kinematic bodies: see moves() in solver_body.hpp) are only read by the solver and order
 // nothing. A constraint's colour is one more than the highest colour taken so far by either of
 // its moving bodies, found in constant time; colouring allocates only when the world grows.
 //
@@ -23,8 +23,8 @@ namespace edyn {
 // solved end to end (which then runs on one thread, as it must to give the sequential result).
 class constraint_colouring {
 public:
-    // Starts a new colouring for these bodies, which must outlive it (only their inverse masses
-    // are read).
+    // Starts a new colouring for these bodies, which must outlive it (only whether they move
+    // is read).
     void reset(std::span<const solver_body> bodies);
 
     // The colour of the next constraint, between bodies a and b, with `num_points` rows of

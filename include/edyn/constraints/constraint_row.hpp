@@ -71,10 +71,14 @@ inline scalar row_effective_mass(const jacobian &j, const solver_body &a, const 
 }
 
 inline void apply_row_impulse(const jacobian &j, solver_body &a, solver_body &b, scalar lambda) noexcept {
-    a.linvel += j.linA * (a.inv_mass * lambda);
-    a.angvel += a.inv_inertia * (j.angA * lambda);
-    b.linvel += j.linB * (b.inv_mass * lambda);
-    b.angvel += b.inv_inertia * (j.angB * lambda);
+    if (moves(a)) {
+        a.linvel += j.linA * (a.inv_mass * lambda);
+        a.angvel += a.inv_inertia * (j.angA * lambda);
+    }
+    if (moves(b)) {
+        b.linvel += j.linB * (b.inv_mass * lambda);
+        b.angvel += b.inv_inertia * (j.angB * lambda);
+    }
 }
 
 // Soft coefficients of an implicit spring of stiffness k and damping c acting on a row of

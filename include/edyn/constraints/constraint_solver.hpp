@@ -2,6 +2,7 @@
 #define EDYN_CONSTRAINTS_CONSTRAINT_SOLVER_HPP
 
 #include "edyn/constraints/cone_constraint.hpp"
+#include "edyn/constraints/constraint_colouring.hpp"
 #include "edyn/constraints/cvjoint_constraint.hpp"
 #include "edyn/constraints/distance_constraint.hpp"
 #include "edyn/constraints/generic_constraint.hpp"
@@ -10,6 +11,7 @@
 #include "edyn/constraints/null_constraint.hpp"
 #include "edyn/constraints/point_constraint.hpp"
 #include "edyn/constraints/soft_distance_constraint.hpp"
+#include "edyn/parallel/task_scheduler.hpp"
 #include <cstdint>
 #include <span>
 #include <tuple>
@@ -36,11 +38,17 @@ struct constraint_solver_settings {
     unsigned position_projection_iterations{4};
 };
 
-// The constraints of one type as the solver sees them this step, and where they came from.
+// The constraints of one type as the solver sees them this step, and where they came from, in
+// colour order: colour k is [colour_begin[k], colour_begin[k + 1]) (see constraint_colouring).
 template<typename Solver>
 struct constraint_batch {
     std::vector<Solver> solvers;
     std::vector<entity> entities;
+    std::vector<std::uint32_t> colour_begin;
+    // Scratch for sorting by colour, reused from step to step.
+    std::vector<Solver> unsorted;
+    std::vector<entity> unsorted_entities;
+    std::vector<std::uint32_t> colours;
 };
 
 // Every joint of a step, packed per type in contiguous arrays reused from step to step.
@@ -53,6 +61,11 @@ struct constraint_solver_state {
     // 1 / h of the sub-step the joints were last solved with: the projection that follows turns
     // its corrections into velocities over that sub-step.
     scalar inv_h{0};
+    // Colours the joints in the order they are solved (type by type, each in the view's order),
+    // so that each colour's joints are solved at once on the scheduler's threads and the
+    // result is the same bit for bit. Null runs every pass on the calling thread.
+    constraint_colouring colouring;
+    task_scheduler *scheduler{nullptr};
 };
 
 // Maps an entity's index to its solver body (0, the static body, when it has none).
@@ -65,22 +78,23 @@ inline solver_body_index body_index_of(body_index_map body_index, entity e) noex
 }
 
 // Packs every awake constraint with at least one body in the solver, with its geometry at the
-// start of the step and last step's impulses.
-void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index);
+// start of the step and last step's impulses, and colours them for the bodies they join.
+void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index,
+                        std::span<const solver_body> bodies);
 
 constraint_solve_context make_constraint_solve_context(const constraint_solver_settings &settings, scalar h,
                                                        bool use_bias) noexcept;
 
 // Re-applies the accumulated impulses, at the start of each sub-step.
-void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies) noexcept;
+void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies);
 
 // One Gauss-Seidel pass over every joint row (biased or relax, as ctx says).
 void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solve_context &ctx) noexcept;
+                             const constraint_solve_context &ctx);
 
 // Position projection of the joints that keep pivots together, after integrating positions.
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solver_settings &settings) noexcept;
+                             const constraint_solver_settings &settings);
 
 // Stores the impulses in the components, for next step's warm start.
 void store_constraint_impulses(registry &registry, const constraint_solver_state &state);

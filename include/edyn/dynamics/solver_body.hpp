@@ -36,18 +36,29 @@ struct softness {
 
 softness make_softness(scalar hertz, scalar zeta, scalar h) noexcept;
 
+// Whether impulses move the body: dynamic bodies; not the static body nor kinematic bodies
+// (zero inverse mass and inertia), which the solver never writes, so that constraints solved at
+// once on several threads may share them.
+inline bool moves(const solver_body &body) noexcept {
+    return body.inv_mass > 0 || body.inv_inertia != matrix3x3_zero;
+}
+
 // Applies the impulse `p` at the offsets rA, rB (from each centre of mass): +p to A, -p to B.
 inline void apply_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
                           const vector3 &rB) noexcept {
-    a.linvel += p * a.inv_mass;
-    a.angvel += a.inv_inertia * cross(rA, p);
-    b.linvel -= p * b.inv_mass;
-    b.angvel -= b.inv_inertia * cross(rB, p);
+    if (moves(a)) {
+        a.linvel += p * a.inv_mass;
+        a.angvel += a.inv_inertia * cross(rA, p);
+    }
+    if (moves(b)) {
+        b.linvel -= p * b.inv_mass;
+        b.angvel -= b.inv_inertia * cross(rB, p);
+    }
 }
 
 inline void apply_angular_impulse(solver_body &a, solver_body &b, const vector3 &l) noexcept {
-    a.angvel += a.inv_inertia * l;
-    b.angvel -= b.inv_inertia * l;
+    if (moves(a)) a.angvel += a.inv_inertia * l;
+    if (moves(b)) b.angvel -= b.inv_inertia * l;
 }
 
 // Velocity of A's point at rA relative to B's point at rB.
