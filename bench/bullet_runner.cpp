@@ -274,7 +274,8 @@ run_result run_bullet(const scene_spec &spec) {
     double dt = 0;
     {
         edyn::registry registry;
-        edyn::attach(registry);
+        // Only the scene's description is read from it, so nothing needs a worker.
+        edyn::attach(registry, edyn::init_config{edyn::execution_mode::sequential});
         auto tracked = build_scene(registry, spec);
         scene = describe_scene(registry, tracked);
         gravity = edyn::get_gravity(registry);

@@ -35,6 +35,7 @@ run_result run_edyn(const scene_spec &spec) {
 
     edyn::registry registry;
     edyn::init_config config;
+    config.execution_mode = edyn::execution_mode::sequential;
     if (spec.threads > 1) {
         config.execution_mode = edyn::execution_mode::sequential_multithreaded;
         config.num_worker_threads = spec.threads;

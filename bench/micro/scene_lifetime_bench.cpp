@@ -11,7 +11,7 @@ void build_and_destroy_ring(benchmark::State &state) {
     auto n = static_cast<int>(state.range(0));
     for (auto _ : state) {
         edyn::registry reg;
-        edyn::attach(reg);
+        edyn::attach(reg, edyn::init_config{edyn::execution_mode::sequential});
         std::vector<edyn::entity> bodies;
         for (int i = 0; i < n; ++i) {
             edyn::rigidbody_def def;

@@ -36,6 +36,7 @@ int main() {
 
     for (int step = 0; step < 60; ++step)
         edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
     auto standing_tilt = tilt(registry, box);
     std::printf("centre of mass at x = %.2f m, 0.30 m inside the edge: box tilted %.2f degrees after 1 s\n",
                 registry.get<edyn::position>(box).x, standing_tilt);
@@ -50,6 +51,7 @@ int main() {
 
     for (int step = 0; step < 60; ++step)
         edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
     auto tipped_tilt = tilt(registry, box);
     auto y = registry.get<edyn::position>(box).y;
     std::printf("box tilted %.1f degrees and its centre of mass dropped to y = %.2f m one second later "

@@ -12,6 +12,7 @@ bool settle_and_check(edyn::registry &registry, edyn::entity body, const char *w
                       edyn::scalar tolerance = 0.01f) {
     for (int step = 0; step < 60; ++step)
         edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
     auto y = registry.get<edyn::position>(body).y;
     auto ok = std::abs(y - expected) < tolerance;
     std::printf("%-28s y = %.3f m (expected %.3f)%s\n", what, y, expected, ok ? "" : "  <-- wrong");

@@ -97,6 +97,7 @@ int main() {
         auto before = ball_mass * registry.get<edyn::linvel>(cue).x;
         auto clicks = registry.ctx().get<break_log>().clicks;
         edyn::step_simulation(registry);
+        edyn::wait_for_simulation(registry);
         if (clicks == 0 && registry.ctx().get<break_log>().clicks > 0) {
             cue_momentum_before = before;
             cue_momentum_lost = before - ball_mass * registry.get<edyn::linvel>(cue).x;

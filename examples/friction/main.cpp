@@ -38,6 +38,7 @@ bool sliding() {
     auto box = edyn::make_rigidbody(registry, def);
     for (int step = 0; step < 120; ++step)
         edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
     auto slid = registry.get<edyn::position>(box).x;
     auto expected = v * v / (2 * mu * g);
     edyn::detach(registry);
@@ -62,6 +63,7 @@ bool spinning() {
     double stopped_at = 0;
     for (int step = 0; step < 300 && stopped_at == 0; ++step) {
         edyn::step_simulation(registry);
+        edyn::wait_for_simulation(registry);
         if (registry.get<edyn::angvel>(ball).y < 1e-3f) stopped_at = edyn::get_simulation_time(registry);
     }
     auto expected = w * 0.4f * m * r * r / (s * m * g);
@@ -90,6 +92,7 @@ bool rolling() {
     auto a = c * g / (1.4f * r);
     for (int step = 0; step < 60 * 2; ++step)
         edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
     auto rolled = registry.get<edyn::position>(ball).x;
     auto expected = v * v / (2 * a);
     edyn::detach(registry);

@@ -22,9 +22,12 @@ int main() {
     auto sphere = edyn::make_rigidbody(registry, def);
 
     // update() steps up to the time it is given; a game passes its clock, here 60 frames a second.
+    // The steps run on edyn's worker thread and update() never waits for them: a game draws
+    // what has arrived. This example waits, so that it prints the same numbers on every run.
     edyn::scalar box_y = 0, sphere_y = 0;
     for (int frame = 0; frame <= 120; ++frame) {
         edyn::update(registry, frame / 60.0);
+        edyn::wait_for_simulation(registry);
         box_y = registry.get<edyn::present_position>(box).y;
         sphere_y = registry.get<edyn::present_position>(sphere).y;
         if (frame % 30 == 0)

@@ -79,6 +79,7 @@ int main() {
     // The highest point after the first bounce (later bounces are lower).
     for (int step = 0; step < 120; ++step) {
         edyn::step_simulation(registry);
+        edyn::wait_for_simulation(registry);
         for (auto &d : drops) {
             auto vy = registry.get<edyn::linvel>(d.entity).y;
             if (vy > 0) d.bounced = true;

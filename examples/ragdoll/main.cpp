@@ -60,6 +60,7 @@ int main() {
     edyn::scalar worst_gap = 0;
     for (int step = 0; step < 180; ++step) {
         edyn::step_simulation(registry);
+        edyn::wait_for_simulation(registry);
         worst_gap = std::max(worst_gap, worst_joint_gap(registry, ragdoll));
     }
 

@@ -3,10 +3,30 @@
 #include <cmath>
 #include <cstdio>
 #include <edyn/edyn.hpp>
+#include <vector>
 
 namespace {
 
 bool near(const edyn::vector3 &a, const edyn::vector3 &b) { return edyn::distance(a, b) < 1e-4f; }
+
+void keep(edyn::raycast_result &out, edyn::raycast_id_type, const edyn::raycast_result &result, edyn::vector3,
+          edyn::vector3) {
+    out = result;
+}
+
+// In the asynchronous mode (the default) the bodies live in the simulation worker, so the ray
+// is cast there: raycast_async hands the result to a delegate during a later update(). A game
+// would carry on and act on it then; this example waits for it. (edyn::raycast casts at once,
+// in the sequential modes and inside step callbacks.)
+edyn::raycast_result cast(edyn::registry &registry, const edyn::vector3 &p0, const edyn::vector3 &p1,
+                          const std::vector<edyn::entity> &ignore = {}) {
+    edyn::raycast_result result;
+    edyn::raycast_delegate_type delegate;
+    delegate.connect<&keep>(result);
+    edyn::raycast_async(registry, p0, p1, delegate, ignore);
+    edyn::wait_for_simulation(registry);
+    return result;
+}
 
 } // namespace
 
@@ -32,7 +52,7 @@ int main() {
 
     // Straight down onto the box: its upper face (face 2, +y) at y = 1.
     edyn::vector3 p0{0.2, 5, 0.1}, p1{0.2, -5, 0.1};
-    auto result = edyn::raycast(registry, p0, p1);
+    auto result = cast(registry, p0, p1);
     if (result.entity != box) {
         std::printf("the ray down onto the box missed it\n");
         return 1;
@@ -48,7 +68,7 @@ int main() {
     // Sideways through the box towards the sphere: the box is first; ignoring it, the sphere.
     p0 = {-5, 0.5, 0};
     p1 = {5, 0.5, 0};
-    result = edyn::raycast(registry, p0, p1, {box});
+    result = cast(registry, p0, p1, {box});
     intersection = edyn::lerp(p0, p1, result.fraction);
     std::printf("sideways, box ignored: hit the %s at x = %.3f (expected the sphere at x = 2.5)\n",
                 result.entity == sphere ? "sphere" : "wrong body", intersection.x);
@@ -57,7 +77,7 @@ int main() {
     // Slanted at the sphere from above: the hit lies on its surface, the normal along the radius.
     p0 = {3, 3, 2};
     p1 = {3, 0.5, 0};
-    result = edyn::raycast(registry, p0, p1);
+    result = cast(registry, p0, p1);
     intersection = edyn::lerp(p0, p1, result.fraction);
     auto from_centre = edyn::distance(intersection, edyn::vector3{3, 0.5, 0});
     auto radial = edyn::dot(result.normal, edyn::normalize(intersection - edyn::vector3{3, 0.5, 0}));
@@ -70,8 +90,8 @@ int main() {
     // Past everything onto the ground, then a ray that hits nothing.
     p0 = {-3, 2, 0};
     p1 = {-3, -2, 0};
-    result = edyn::raycast(registry, p0, p1);
-    auto miss = edyn::raycast(registry, {0, 5, 0}, {0, 10, 0});
+    result = cast(registry, p0, p1);
+    auto miss = cast(registry, {0, 5, 0}, {0, 10, 0});
     std::printf("onto the ground: fraction %.2f (expected 0.50); upwards: %s (expected nothing)\n",
                 result.fraction, miss.entity == edyn::null ? "nothing" : "a hit");
     ok = ok && result.entity == ground && std::abs(result.fraction - 0.5f) < 1e-4f &&

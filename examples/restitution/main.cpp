@@ -45,6 +45,7 @@ int main() {
     for (int step = 0; step < 120 && (impact_step < 0 || step < impact_step + 6); ++step) {
         auto speed_before = edyn::length(registry.get<edyn::linvel>(balls[0]));
         edyn::step_simulation(registry);
+        edyn::wait_for_simulation(registry);
         auto speed_last = edyn::length(registry.get<edyn::linvel>(balls[4]));
         if (impact_step < 0 && speed_last > 0.01f) {
             impact_step = step;

@@ -97,6 +97,7 @@ int main() {
 
     for (int step = 0; step < 120; ++step)
         edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
 
     bool ok = true;
     for (auto &b : bodies) {
@@ -132,6 +133,7 @@ int main() {
     // Kinds change at run time: the platform made static stops where it is.
     edyn::rigidbody_set_kind(registry, platform, edyn::rigidbody_kind::rb_static);
     edyn::step_simulation(registry);
+    edyn::wait_for_simulation(registry);
     auto stopped = registry.get<edyn::position>(platform).x == platform_pos.x;
     std::printf("platform made static %s\n", stopped ? "stopped" : "kept moving");
 

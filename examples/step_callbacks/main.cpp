@@ -2,6 +2,7 @@
 // the last call asks for, so logic that must act once per step goes in a step callback, not
 // beside update(). A drag that removes the fraction c dt of the velocity each step brings a
 // falling body to the terminal speed g / c.
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <edyn/edyn.hpp>
@@ -13,27 +14,28 @@ constexpr edyn::scalar drag_coefficient = 2; // 1/s
 // Marks the bodies the wind acts on.
 struct drag {};
 
-// Callbacks are plain functions of the registry: what they share lives in its context.
-struct counters {
-    int pre_steps{0};
-    int post_steps{0};
-};
+// Callbacks are plain functions of a registry. In the asynchronous mode (the default) they run
+// on the simulation worker's thread with the worker's registry, so what they share with the
+// program lives outside both registries and is safe to touch from two threads.
+std::atomic<int> pre_steps{0};
+std::atomic<int> post_steps{0};
 
 void apply_drag(edyn::registry &registry) {
     auto dt = edyn::get_fixed_dt(registry);
     for (auto entity : registry.view<drag, edyn::linvel>())
         registry.get<edyn::linvel>(entity) *= 1 - drag_coefficient * dt;
-    ++registry.ctx().get<counters>().pre_steps;
+    ++pre_steps;
 }
 
-void count_step(edyn::registry &registry) { ++registry.ctx().get<counters>().post_steps; }
+void count_step(edyn::registry &) { ++post_steps; }
 
 } // namespace
 
 int main() {
     edyn::registry registry;
     edyn::attach(registry);
-    registry.ctx().emplace<counters>();
+    // The worker's registry gets the program's drag tags once edyn knows to send them.
+    edyn::register_external_components<drag>(registry);
     edyn::set_pre_step_callback(registry, &apply_drag);
     edyn::set_post_step_callback(registry, &count_step);
 
@@ -47,17 +49,18 @@ int main() {
     // only starts the clock.
     for (int frame = 0; frame <= 120; ++frame)
         edyn::update(registry, frame / 30.0);
+    // update() never waits for the worker; here the results of the last update are wanted.
+    edyn::wait_for_simulation(registry);
 
-    auto &count = registry.ctx().get<counters>();
     auto speed = -registry.get<edyn::linvel>(leaf).y;
     auto expected = 9.8f / drag_coefficient;
     auto steps = int(edyn::get_step_count(registry));
     std::printf("120 updates ran %d steps (240, give or take one for rounding): pre-step callback called %d "
                 "times, post-step %d times\n",
-                steps, count.pre_steps, count.post_steps);
+                steps, pre_steps.load(), post_steps.load());
     std::printf("falling at %.3f m/s after 4 s (expected terminal speed g / c = %.3f)\n", speed, expected);
     // Rounding in the clock may leave the last step to the next update.
-    auto ok = count.pre_steps == steps && count.post_steps == steps && std::abs(steps - 240) <= 1 &&
+    auto ok = pre_steps.load() == steps && post_steps.load() == steps && std::abs(steps - 240) <= 1 &&
               std::abs(speed - expected) < 0.01f * expected;
     edyn::detach(registry);
     return ok ? 0 : 1;

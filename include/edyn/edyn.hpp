@@ -54,6 +54,8 @@
 #include "edyn/simulation/execution_mode.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/raycast.hpp"
+#include "edyn/simulation/raycast_async.hpp"
+#include "edyn/simulation/replication.hpp"
 #include "edyn/simulation/settings.hpp"
 #include "edyn/simulation/world.hpp"
 

@@ -7,6 +7,7 @@
 #include "edyn/dynamics/shape_index.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/worker_calls.hpp"
 #include "edyn/shapes/moment_of_inertia.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/shapes/validate_shape.hpp"
@@ -335,9 +336,9 @@ void clear_rigidbody(registry &registry, entity e) {
                     rigidbody_dynamic_mass>(e);
 }
 
-void set_center_of_mass(registry &registry, entity e, const vector3 &com) {
-    check_body("set_center_of_mass", registry, e);
-    check_finite("set_center_of_mass", "com", com);
+namespace {
+
+void shift_center_of_mass(registry &registry, entity e, const vector3 &com) {
     auto &orn = registry.get<orientation>(e);
     auto *current = registry.try_get<center_of_mass>(e);
     auto old_com = current ? static_cast<vector3>(*current) : vector3_zero;
@@ -356,13 +357,26 @@ void set_center_of_mass(registry &registry, entity e, const vector3 &com) {
     auto &w = registry.get<angvel>(e);
     registry.patch<position>(e, [&](position &p) { p += delta_world; });
     registry.patch<linvel>(e, [&](linvel &v) { v += cross(w, delta_world); });
-    registry.patch<present_position>(e, [&](present_position &p) { p += delta_world; });
+    // An asynchronous worker's bodies have no present transform: the main side presents them.
+    if (registry.all_of<present_position>(e))
+        registry.patch<present_position>(e, [&](present_position &p) { p += delta_world; });
     if (com == vector3_zero) {
         registry.remove<center_of_mass>(e);
     } else {
         registry.emplace_or_replace<center_of_mass>(e, com);
     }
     update_inertia_world(registry, e);
+}
+
+} // namespace
+
+void set_center_of_mass(registry &registry, entity e, const vector3 &com) {
+    check_body("set_center_of_mass", registry, e);
+    check_finite("set_center_of_mass", "com", com);
+    // It moves the position by the shift: in asynchronous mode the worker shifts its own.
+    call_here_and_in_worker(registry, e, [com](edyn::registry &r, entity body) {
+        if (r.all_of<rigidbody_tag>(body)) shift_center_of_mass(r, body, com);
+    });
 }
 
 vector3 get_rigidbody_origin(const registry &registry, entity e) {
@@ -391,11 +405,14 @@ void rigidbody_apply_impulse(registry &registry, entity e, const vector3 &impuls
     check_body("rigidbody_apply_impulse", registry, e);
     check_finite("rigidbody_apply_impulse", "impulse", impulse);
     check_finite("rigidbody_apply_impulse", "rel_location", rel_location);
-    if (!registry.all_of<dynamic_tag>(e)) return;
-    auto m_inv = registry.get<mass_inv>(e).s;
-    auto &i_inv = registry.get<inertia_world_inv>(e);
-    registry.patch<linvel>(e, [&](linvel &v) { v += impulse * m_inv; });
-    registry.patch<angvel>(e, [&](angvel &w) { w += i_inv * cross(rel_location, impulse); });
+    // It adds to the velocity: in asynchronous mode the worker adds to its own.
+    call_here_and_in_worker(registry, e, [impulse, rel_location](edyn::registry &r, entity body) {
+        if (!r.all_of<dynamic_tag>(body)) return;
+        auto m_inv = r.get<mass_inv>(body).s;
+        auto &i_inv = r.get<inertia_world_inv>(body);
+        r.patch<linvel>(body, [&](linvel &v) { v += impulse * m_inv; });
+        r.patch<angvel>(body, [&](angvel &w) { w += i_inv * cross(rel_location, impulse); });
+    });
 }
 
 void update_rigidbody_aabb(registry &registry, entity e) { refresh_aabb(registry, e); }

@@ -2,6 +2,7 @@
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/dynamics/visit_shape.hpp"
+#include "edyn/simulation/settings.hpp"
 #include "edyn/simulation/world_state.hpp"
 #include <algorithm>
 #include <sstream>
@@ -14,6 +15,10 @@ raycast_result raycast(const registry &registry, const vector3 &p0, const vector
     const auto *world = registry.ctx().find<world_state>();
     if (!world)
         throw std::invalid_argument("edyn::raycast: the registry is not attached (call edyn::attach)");
+    if (registry.ctx().get<settings>().execution_mode == execution_mode::asynchronous)
+        throw std::invalid_argument(
+            "edyn::raycast: in the asynchronous mode the bodies live in the simulation "
+            "worker; use raycast_async (raycast works inside step callbacks)");
     if (!isfinite(p0) || !isfinite(p1)) {
         std::ostringstream msg;
         msg << "edyn::raycast: p0 and p1 must be finite, got p0 = (" << p0.x << ", " << p0.y << ", " << p0.z

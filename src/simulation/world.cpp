@@ -1,4 +1,6 @@
 #include "edyn/simulation/world.hpp"
+#include "async_execution.hpp"
+#include "clock.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/should_collide.hpp"
@@ -13,6 +15,7 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/simulation/step.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include "pending_replies.hpp"
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -45,10 +48,6 @@ bool is_attached(const registry &registry) noexcept { return registry.ctx().cont
 namespace {
 
 void check_config(const char *function, const init_config &config) {
-    if (config.execution_mode == execution_mode::asynchronous) {
-        invalid(function, "execution_mode asynchronous is not available yet; use sequential or "
-                          "sequential_multithreaded");
-    }
     if (config.execution_mode != execution_mode::sequential_multithreaded) return;
     if (config.scheduler) {
         auto &hooks = *config.scheduler;
@@ -100,14 +99,26 @@ void attach(registry &registry, const init_config &config) {
     s.execution_mode = config.execution_mode;
     registry.ctx().emplace<world_state>().scheduler = std::move(scheduler);
     registry.ctx().emplace<contact_events>();
+    if (config.execution_mode == execution_mode::asynchronous) {
+        // The simulation lives in the worker; this registry mirrors it.
+        registry.ctx().emplace<async_execution>(registry);
+        return;
+    }
     connect_registry_listeners(registry);
     adopt_existing_bodies(registry);
 }
 
 void detach(registry &registry) {
     if (!is_attached(registry)) return;
-    disconnect_registry_listeners(registry);
+    if (auto *async = registry.ctx().find<async_execution>()) {
+        async->disconnect(registry);
+        // Stops and joins the worker.
+        registry.ctx().erase<async_execution>();
+    } else {
+        disconnect_registry_listeners(registry);
+    }
     remove_edyn_components(registry);
+    registry.ctx().erase<pending_replies>();
     registry.ctx().erase<world_state>();
     registry.ctx().erase<settings>();
     registry.ctx().erase<contact_events>();
@@ -117,28 +128,24 @@ void detach(registry &registry) {
 
 void step_simulation(registry &registry) {
     world(registry);
+    if (auto *async = registry.ctx().find<async_execution>()) {
+        async->step_simulation(registry);
+        return;
+    }
     save_previous_transforms(registry);
     run_step(registry);
     interpolate_present_transforms(registry, 1);
 }
 
-void update(registry &registry, double time) {
-    if (!std::isfinite(time)) invalid("update", "time must be finite, got " + std::to_string(time));
-    auto &w = world(registry);
+std::uint64_t take_due_steps(world_state &w, const settings &s, double time) {
     if (!w.started) {
         w.started = true;
         w.last_time = time;
-        interpolate_present_transforms(registry, 1);
-        return;
+        return 0;
     }
     auto elapsed = std::max(time - w.last_time, 0.0);
     w.last_time = time;
-    if (w.paused) {
-        interpolate_present_transforms(registry, 1);
-        return;
-    }
-
-    auto &s = registry.ctx().get<settings>();
+    if (w.paused) return 0;
     double dt = s.fixed_dt;
     w.accumulator += elapsed;
     auto steps = static_cast<std::uint64_t>(std::floor(w.accumulator / dt));
@@ -147,13 +154,37 @@ void update(registry &registry, double time) {
         w.accumulator = std::fmod(w.accumulator, dt) + dt * s.max_steps_per_update;
         steps = s.max_steps_per_update;
     }
+    // One subtraction per step, as the steps are run, so that the fraction left is the same.
+    for (std::uint64_t i = 0; i < steps; ++i)
+        w.accumulator -= dt;
+    return steps;
+}
+
+scalar present_fraction(const world_state &w, const settings &s) {
+    if (w.paused || !w.started) return 1;
+    return static_cast<scalar>(std::clamp(w.accumulator / s.fixed_dt, 0.0, 1.0));
+}
+
+void update(registry &registry, double time) {
+    if (!std::isfinite(time)) invalid("update", "time must be finite, got " + std::to_string(time));
+    auto &w = world(registry);
+    if (auto *async = registry.ctx().find<async_execution>()) {
+        async->update(registry, time);
+        return;
+    }
+    auto &s = registry.ctx().get<settings>();
+    auto steps = take_due_steps(w, s, time);
     for (std::uint64_t i = 0; i < steps; ++i) {
         save_previous_transforms(registry);
         run_step(registry);
-        w.accumulator -= dt;
     }
-    auto alpha = std::clamp(w.accumulator / dt, 0.0, 1.0);
-    interpolate_present_transforms(registry, static_cast<scalar>(alpha));
+    interpolate_present_transforms(registry, present_fraction(w, s));
+    run_pending_replies(registry);
+}
+
+void wait_for_simulation(registry &registry) {
+    world(registry);
+    if (auto *async = registry.ctx().find<async_execution>()) async->wait(registry);
 }
 
 void update(registry &registry) {
@@ -174,7 +205,12 @@ scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fi
 void set_gravity(registry &registry, const vector3 &gravity) {
     if (!isfinite(gravity)) invalid("set_gravity", "gravity must be finite");
     mutable_settings(registry).gravity = gravity;
-    // Resting bodies must notice a new gravity.
+    // Resting bodies must notice a new gravity (in asynchronous mode the worker wakes its own;
+    // here they are shown awake at once).
+    if (registry.ctx().contains<async_execution>()) {
+        registry.clear<sleeping_tag>();
+        return;
+    }
     auto &w = world(registry);
     for (auto e : registry.view<dynamic_tag, sleeping_tag>())
         w.islands.wake_entity(registry, e);

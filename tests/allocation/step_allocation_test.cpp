@@ -105,7 +105,8 @@ std::size_t allocations_per_100_settled_steps(const init_config &config) {
 }
 
 TEST(step_allocation, a_settled_pile_steps_without_allocating) {
-    EXPECT_EQ(allocations_per_100_settled_steps({}), 0u) << "allocations in 100 steps (sequential)";
+    EXPECT_EQ(allocations_per_100_settled_steps(init_config{execution_mode::sequential}), 0u)
+        << "allocations in 100 steps (sequential)";
 }
 
 TEST(step_allocation, a_settled_pile_steps_without_allocating_on_worker_threads) {

@@ -13,18 +13,40 @@
 namespace edyn::test {
 
 // The configuration every behaviour test attaches with: sequential, or, when
-// EDYN_TEST_EXECUTION_MODE is sequential_multithreaded (CTest runs the suite both ways), the
-// multithreaded step on two worker threads. The behaviour must hold in both.
+// EDYN_TEST_EXECUTION_MODE says so (CTest runs the suite in each mode), the multithreaded step
+// on two worker threads or the asynchronous worker. The behaviour must hold in all three.
 inline init_config test_config() {
     init_config config;
+    config.execution_mode = execution_mode::sequential;
     auto *mode = std::getenv("EDYN_TEST_EXECUTION_MODE");
     if (mode && std::string_view(mode) == "sequential_multithreaded") {
         config.execution_mode = execution_mode::sequential_multithreaded;
         config.num_worker_threads = 2;
+    } else if (mode && std::string_view(mode) == "asynchronous") {
+        config.execution_mode = execution_mode::asynchronous;
     } else if (mode && std::string_view(mode) != "sequential") {
         throw std::invalid_argument(std::string("EDYN_TEST_EXECUTION_MODE: unknown mode ") + mode);
     }
     return config;
+}
+
+// Whether the simulation's own state (islands, contact reuse marks) lives in this registry: in
+// the asynchronous mode it lives in the worker's, and tests of it run in the other modes.
+inline bool simulates_here(const registry &reg) {
+    return get_settings(reg).execution_mode != execution_mode::asynchronous;
+}
+
+// One fixed step, its results in the registry on return in every mode (in the asynchronous
+// one, the worker runs it and the main registry receives it before this returns).
+inline void step(registry &reg) {
+    step_simulation(reg);
+    wait_for_simulation(reg);
+}
+
+// update(reg, time), likewise with its results in the registry on return.
+inline void advance_to(registry &reg, double time) {
+    update(reg, time);
+    wait_for_simulation(reg);
 }
 
 // A world with default settings in the tests' execution mode, attached on construction,
@@ -40,6 +62,7 @@ struct world_fixture : ::testing::Test {
         auto steps = int(std::lround(seconds / double(get_fixed_dt(reg))));
         for (int i = 0; i < steps; ++i)
             step_simulation(reg);
+        wait_for_simulation(reg);
         return steps;
     }
 
@@ -88,7 +111,7 @@ inline scalar rebound_peak(registry &reg, entity ball, scalar radius, int max_st
     bool bounced = false;
     scalar peak = 0;
     for (int i = 0; i < max_steps; ++i) {
-        step_simulation(reg);
+        step(reg);
         auto v = reg.get<linvel>(ball).y;
         if (!bounced && v > 0) bounced = true;
         if (bounced) {

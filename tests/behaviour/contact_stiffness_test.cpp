@@ -103,7 +103,7 @@ TEST_F(contact_stiffness, a_lightly_damped_contact_oscillates_at_the_spring_freq
     std::vector<scalar> minima_times;
     scalar y0 = pos(sphere).y, y1 = y0;
     for (int i = 1; i <= 240; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         auto y2 = pos(sphere).y;
         if (i >= 2 && y1 < y0 && y1 <= y2) {
             auto offset = (y0 - y2) / (2 * (y0 - 2 * y1 + y2)); // in steps, from sample i - 1
@@ -130,7 +130,7 @@ TEST_F(contact_stiffness, an_underdamped_contact_overshoots_as_a_damped_spring_d
     auto sphere = make_sphere(k, 2 * zeta * std::sqrt(k * mass));
     scalar deepest = 0;
     for (int i = 0; i < 60; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         deepest = std::max(deepest, sink(sphere, radius));
     }
     auto overshoot = [](scalar z) {

@@ -47,7 +47,7 @@ TEST_F(friction, rolling_friction_decelerates_a_rolling_sphere_at_c_g_over_1_4_r
     const scalar r = scalar(0.5), v0 = 5, c = scalar(0.05);
     auto ball = make_rolling_sphere(r, v0, c);
     // Let the contact settle for a step before measuring.
-    step_simulation(reg);
+    edyn::test::step(reg);
     auto v_start = vel(ball).x;
     auto seconds = scalar(2);
     run_for(seconds);
@@ -99,7 +99,7 @@ TEST_F(friction, rolling_friction_slows_a_cylinder_rolling_about_its_axis_at_c_g
     def.angvel = {0, 0, -v0 / r};
     def.sleeping_disabled = true;
     auto wheel = make_rigidbody(reg, def);
-    step_simulation(reg);
+    edyn::test::step(reg);
     auto v_start = vel(wheel).x;
     auto seconds = scalar(2);
     run_for(seconds);
@@ -121,7 +121,7 @@ TEST_F(friction, spinning_friction_stops_a_spinning_sphere_after_w0_i_over_s_m_g
     auto alpha = s * m * g / I;
     auto stop_time = w0 * I / (s * m * g);
 
-    step_simulation(reg);
+    edyn::test::step(reg);
     auto w_start = angular(ball).y;
     run_for(1);
     auto measured = w_start - angular(ball).y;
@@ -131,7 +131,7 @@ TEST_F(friction, spinning_friction_stops_a_spinning_sphere_after_w0_i_over_s_m_g
     // Find when it stops.
     auto t = get_fixed_dt(reg) * 61;
     while (angular(ball).y > scalar(1e-3) && t < 2 * stop_time) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         t += get_fixed_dt(reg);
     }
     EXPECT_NEAR(t, stop_time, scalar(0.03) * stop_time)

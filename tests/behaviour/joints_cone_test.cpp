@@ -61,7 +61,7 @@ TEST_F(cone_joint, pendulum_pushed_hard_stays_inside_a_thirty_degree_cone) {
     rigidbody_apply_impulse(reg, rod, {4, 0, scalar(1.5)}, {0, -rod_half_length, 0});
     scalar worst = -1, largest_tilt = 0;
     for (int i = 0; i < 60 * 3; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         auto m = measure(span, span);
         worst = std::max(worst, m.excess);
         largest_tilt = std::max(largest_tilt, m.tilt);
@@ -88,7 +88,7 @@ TEST_F(cone_joint, elliptical_cone_respects_each_span) {
         rigidbody_apply_impulse(reg, rod, pushes[k], {0, -rod_half_length, 0});
         scalar worst = -1, largest_tilt = 0;
         for (int i = 0; i < 60 * 2; ++i) {
-            step_simulation(reg);
+            edyn::test::step(reg);
             auto m = measure(span0, span1);
             worst = std::max(worst, m.excess);
             largest_tilt = std::max(largest_tilt, m.tilt);
@@ -147,7 +147,7 @@ TEST_F(cone_joint, bump_stop_slows_the_swing_before_the_wall) {
     make_constraint<distance_constraint>(reg, anchor, ball, [](distance_constraint &c) { c.distance = 1; });
     scalar largest = 0;
     for (int i = 0; i < 60 * 3; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         largest = std::max(largest, std::atan2(std::abs(pos(ball).y), pos(ball).x));
     }
     // It enters the spring's 10 degrees at w0 and turns back a quarter period of w = sqrt(k / I)

@@ -97,7 +97,7 @@ TEST_F(cvjoint_shafts, a_driven_shaft_brings_a_resting_one_up_to_its_speed_throu
     scalar worst_spin_up = 0, worst_momentum = 0, worst_rate = 0, worst_twist = 0;
     for (int i = 0; i < spin_up + revolution; ++i) {
         reg.replace<angvel>(input, vector3_x * omega);
-        step_simulation(reg);
+        edyn::test::step(reg);
         taken += double(input_inertia * (omega - input_rate()));
         auto gained = output_inertia * output_rate();
         worst_momentum = std::max(worst_momentum, std::abs(scalar(taken) - gained));
@@ -156,7 +156,7 @@ TEST_F(cvjoint, twist_limits_hold) {
     });
     scalar largest = 0;
     for (int i = 0; i < 60 * 2; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         largest = std::max(largest, reg.get<cvjoint_constraint>(joint).twist_angle);
     }
     EXPECT_LT(largest, scalar(0.5) + scalar(0.01)) << "largest twist " << largest << " rad, limit 0.5";
@@ -193,7 +193,7 @@ TEST_F(cvjoint, twist_stiffness_oscillates_at_sqrt_k_over_i) {
     });
     crossing_timer timer;
     for (int i = 0; i < 60 * 5; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         timer.sample(get_simulation_time(reg), angular(ball).x);
     }
     auto expected = 2 * pi * std::sqrt(ball_inertia / k);

@@ -28,7 +28,7 @@ TEST_F(generic_joint, all_locked_welds_a_body_to_the_ground_under_gravity) {
     });
     scalar worst_offset = 0, worst_angle = 0;
     for (int i = 0; i < 60 * 3; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         worst_offset = std::max(worst_offset, distance(pos(box), vector3{1, 2, 0}));
         worst_angle = std::max(worst_angle, quaternion_angle(reg.get<orientation>(box)));
     }
@@ -46,7 +46,7 @@ TEST_F(generic_joint, all_locked_keeps_two_falling_bodies_together) {
     });
     scalar worst = 0;
     for (int i = 0; i < 60; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         auto pa = edyn::test::world_pivot(reg, a, {scalar(0.5), 0, 0});
         auto pb = edyn::test::world_pivot(reg, b, {-scalar(0.3), 0, 0});
         worst = std::max(worst, distance(pa, pb));
@@ -70,7 +70,7 @@ TEST_F(generic_joint, one_free_linear_axis_is_a_slider) {
     });
     scalar worst = 0;
     for (int i = 0; i < 60; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         auto p = pos(body);
         worst = std::max(worst, length(p - axis * dot(p, axis)));
     }
@@ -107,7 +107,7 @@ TEST_F(generic_joint, linear_spring_oscillates_at_sqrt_k_over_m) {
     });
     crossing_timer timer;
     for (int i = 0; i < 60 * 5; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         timer.sample(get_simulation_time(reg), vel(body).x);
     }
     auto expected = 2 * pi * std::sqrt(m / k);
@@ -131,7 +131,7 @@ TEST_F(generic_joint, angular_spring_oscillates_at_sqrt_k_over_i) {
     });
     crossing_timer timer;
     for (int i = 0; i < 60 * 5; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         timer.sample(get_simulation_time(reg), angular(body).z);
     }
     auto expected = 2 * pi * std::sqrt(inertia / k);

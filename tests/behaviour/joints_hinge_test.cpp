@@ -52,7 +52,7 @@ TEST_F(hinge_joint, door_swings_only_about_its_axis) {
     rigidbody_apply_impulse(reg, door, {0, 0, 10}, {scalar(0.5), 0, 0});
     scalar worst_tilt = 0, worst_drift = 0;
     for (int i = 0; i < 120; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         auto w = angular(door);
         worst_tilt = std::max(worst_tilt, std::sqrt(w.x * w.x + w.z * w.z));
         // The door's centre stays on a horizontal circle of radius 0.5 around the hinge line.
@@ -100,7 +100,7 @@ TEST_F(hinge_joint, stiffness_oscillates_about_rest_angle_at_sqrt_k_over_i) {
     });
     crossing_timer timer;
     for (int i = 0; i < 60 * 4; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         timer.sample(get_simulation_time(reg), angular(body).z);
     }
     auto expected = 2 * pi * std::sqrt(bar_inertia / k);

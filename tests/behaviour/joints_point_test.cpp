@@ -23,7 +23,7 @@ TEST_F(point_joint, pendulum_period_is_two_pi_sqrt_l_over_g) {
 
     crossing_timer timer;
     for (int i = 0; i < 60 * 12; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         timer.sample(get_simulation_time(reg), pos(bob).x);
     }
     // A sphere on a massless rod is a physical pendulum: I = m L^2 + 2/5 m r^2 about the pivot.
@@ -90,7 +90,7 @@ TEST_F(distance_joint, chain_of_twenty_keeps_every_length_within_half_a_percent)
     }
     scalar worst = 0, lowest_x = 0;
     for (int step = 0; step < 60 * 5; ++step) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         for (int i = 1; i <= links; ++i) {
             auto error = std::abs(distance(pos(bodies[i - 1]), pos(bodies[i])) - spacing) / spacing;
             worst = std::max(worst, error);
@@ -162,7 +162,7 @@ TEST_F(soft_distance_spring, oscillates_at_sqrt_k_over_m) {
     crossing_timer timer;
     const int steps = 60 * 5;
     for (int i = 0; i < steps; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         timer.sample(get_simulation_time(reg), vel(body).x);
     }
     auto expected = 2 * pi / std::sqrt(k / m);
@@ -189,16 +189,24 @@ TEST_F(soft_distance_spring, damping_decays_the_amplitude_exponentially) {
 }
 
 TEST_F(null_joint, keeps_two_distant_bodies_in_one_island) {
+    // Islands live where the step runs: the worker's registry in the asynchronous mode.
+    auto island = [&](entity e) { return reg.get<island_resident>(e).island_entity; };
     auto a = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, 5, 0}));
     auto b = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {50, 5, 0}));
-    EXPECT_NE(reg.get<island_resident>(a).island_entity, reg.get<island_resident>(b).island_entity);
+    if (edyn::test::simulates_here(reg)) {
+        EXPECT_NE(island(a), island(b));
+    }
     auto edge = make_constraint<null_constraint>(reg, a, b);
-    EXPECT_EQ(reg.get<island_resident>(a).island_entity, reg.get<island_resident>(b).island_entity);
-    EXPECT_EQ(reg.get<island_resident>(edge).island_entity, reg.get<island_resident>(a).island_entity);
+    if (edyn::test::simulates_here(reg)) {
+        EXPECT_EQ(island(a), island(b));
+        EXPECT_EQ(island(edge), island(a));
+    }
     run_for(1);
     // They fall freely: no force between them.
     EXPECT_NEAR(pos(b).x, 50, scalar(1e-5));
-    EXPECT_EQ(reg.get<island_resident>(a).island_entity, reg.get<island_resident>(b).island_entity);
+    if (edyn::test::simulates_here(reg)) {
+        EXPECT_EQ(island(a), island(b));
+    }
     // Destroying a body destroys its constraints.
     reg.destroy(b);
     EXPECT_FALSE(reg.valid(edge));
@@ -209,7 +217,9 @@ TEST_F(null_joint, connects_an_external_entity_to_a_body_island) {
     auto external = reg.create();
     tag_external_entity(reg, external);
     auto edge = make_constraint<null_constraint>(reg, body, external);
-    EXPECT_EQ(reg.get<island_resident>(edge).island_entity, reg.get<island_resident>(body).island_entity);
+    if (edyn::test::simulates_here(reg)) {
+        EXPECT_EQ(reg.get<island_resident>(edge).island_entity, reg.get<island_resident>(body).island_entity);
+    }
     reg.destroy(external);
     EXPECT_FALSE(reg.valid(edge));
     run_for(scalar(0.1));
@@ -244,7 +254,7 @@ TEST_F(point_joint, a_light_link_between_heavy_bodies_holds_when_they_hit_the_gr
     }
     scalar worst = 0;
     for (int step = 0; step < 90; ++step) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         for (auto e : joints) {
             auto &c = reg.get<point_constraint>(e);
             worst = std::max(worst, distance(edyn::test::world_pivot(reg, c.body[0], c.pivot[0]),

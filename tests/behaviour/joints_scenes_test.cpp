@@ -29,7 +29,7 @@ TEST_F(joint_scenes, bridge_holds_a_box_dropped_onto_it) {
         reg, edyn::test::box_def({scalar(0.3), scalar(0.3), scalar(0.3)}, {span / 2, height + 1, 0}, 20));
     scalar worst = 0;
     for (int i = 0; i < 60 * 4; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         for (auto e : bridge.hinges)
             worst = std::max(worst, hinge_error(reg, e));
     }
@@ -56,7 +56,7 @@ TEST_F(joint_scenes, bridge_with_a_box_on_it_comes_to_rest) {
     int asleep_at = -1;
     scalar fastest_late = 0; // planks' top speed over the last 5 s
     for (int i = 1; i <= 60 * seconds; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         if (asleep_at < 0 && reg.all_of<sleeping_tag>(box)) asleep_at = i;
         if (i > 60 * (seconds - 5)) {
             for (auto plank : bridge.planks)
@@ -75,7 +75,7 @@ TEST_F(joint_scenes, chain_hangs_straight_down_with_its_links_joined) {
     auto chain = scenes::make_chain(reg, links, link_length, top);
     scalar worst = 0;
     for (int i = 0; i < 60 * 10; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         for (auto e : chain.joints) {
             auto &c = reg.get<point_constraint>(e);
             worst = std::max(worst, distance(edyn::test::world_pivot(reg, c.body[0], c.pivot[0]),

@@ -70,7 +70,7 @@ TEST_F(ragdolls, pile_of_ten_settles_with_joints_together_and_falls_asleep) {
     scalar worst = 0;
     double worst_at = 0, asleep_at = -1;
     for (int i = 0; i < int(time_limit / dt) && asleep_at < 0; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         auto t = (i + 1) * dt;
         ASSERT_TRUE(all_finite(reg)) << "a body is not finite at t = " << t << " s";
         if (auto separation = scenes::max_pivot_separation(reg); separation > worst) {
@@ -102,7 +102,7 @@ TEST_F(ragdolls, falling_from_standing_keeps_every_joint_within_its_limits) {
     limit_report falling, resting;
     scalar separation = 0;
     for (int i = 0; i < 60 * 4; ++i) {
-        step_simulation(reg);
+        edyn::test::step(reg);
         ASSERT_TRUE(all_finite(reg)) << "a body is not finite after step " << i + 1;
         measure_limits(reg, e, i < 60 * 3 ? falling : resting);
         separation = std::max(separation, scenes::max_pivot_separation(reg));

@@ -23,7 +23,7 @@ struct stacking : edyn::test::world_fixture {
         drift worst;
         auto steps = int(std::lround(seconds / double(get_fixed_dt(reg))));
         for (int i = 0; i < steps; ++i) {
-            step_simulation(reg);
+            edyn::test::step(reg);
             for (std::size_t k = 0; k < bodies.size(); ++k) {
                 auto d = pos(bodies[k]) - start[k];
                 EXPECT_TRUE(isfinite(d)) << "body " << k << " is not finite after step " << i + 1;

@@ -36,7 +36,7 @@ struct hasher {
 struct pile_run {
     registry reg;
     std::vector<entity> bodies;
-    explicit pile_run(const init_config &config = {}) {
+    explicit pile_run(const init_config &config = init_config{execution_mode::sequential}) {
         attach(reg, config);
         scenes::make_ground(reg);
         bodies = scenes::make_pile(reg, pile_bodies, 8, 2, scenes::pile_shapes::with_polyhedra);
@@ -55,7 +55,7 @@ struct pile_run {
     }
 };
 
-std::uint64_t run_pile(const init_config &config = {}) {
+std::uint64_t run_pile(const init_config &config = init_config{execution_mode::sequential}) {
     pile_run run(config);
     for (int i = 0; i < pile_steps; ++i)
         step_simulation(run.reg);
@@ -89,7 +89,7 @@ TEST(determinism, the_multithreaded_step_gives_the_sequential_transforms) {
 // Joints too are solved colour by colour on the worker threads: a heap of rag dolls (hinges, CV
 // joints and cones, all between moving bodies, landing on each other) gives the sequential
 // step's transforms bit for bit.
-std::uint64_t run_ragdolls(const init_config &config = {}) {
+std::uint64_t run_ragdolls(const init_config &config = init_config{execution_mode::sequential}) {
     registry reg;
     attach(reg, config);
     scenes::make_ground(reg);

@@ -2,6 +2,7 @@
 #define EDYN_COLLISION_COLLISION_FILTER_HPP
 
 #include "edyn/ecs/entity.hpp"
+#include "edyn/ecs/entity_members.hpp"
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -32,6 +33,15 @@ struct collision_exclusion {
             if (entities[i] == other) return true;
         }
         return false;
+    }
+};
+
+template<>
+struct entity_members<collision_exclusion> {
+    template<typename Fn>
+    static void each(collision_exclusion &exclusion, Fn &&fn) {
+        for (std::size_t i = 0; i < exclusion.num_entities; ++i)
+            fn(exclusion.entities[i]);
     }
 };
 

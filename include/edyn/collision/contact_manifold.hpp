@@ -4,6 +4,7 @@
 #include "edyn/collision/contact_point.hpp"
 #include "edyn/collision/shape_epoch.hpp"
 #include "edyn/ecs/entity.hpp"
+#include "edyn/ecs/entity_members.hpp"
 #include "edyn/math/quaternion.hpp"
 #include "edyn/math/vector3.hpp"
 #include <array>
@@ -66,6 +67,15 @@ struct contact_manifold {
     void each_point(Fn &&fn) const {
         for (std::uint32_t i = 0; i < num_points; ++i)
             fn(point[ids[i]]);
+    }
+};
+
+template<>
+struct entity_members<contact_manifold> {
+    template<typename Fn>
+    static void each(contact_manifold &manifold, Fn &&fn) {
+        fn(manifold.body[0]);
+        fn(manifold.body[1]);
     }
 };
 

@@ -11,6 +11,8 @@
 #include "edyn/constraints/null_constraint.hpp"
 #include "edyn/constraints/point_constraint.hpp"
 #include "edyn/constraints/soft_distance_constraint.hpp"
+#include "edyn/ecs/entity_members.hpp"
+#include <type_traits>
 
 namespace edyn {
 
@@ -21,6 +23,24 @@ struct constraint_type_list {};
 using constraint_types = constraint_type_list<point_constraint, distance_constraint, soft_distance_constraint,
                                               hinge_constraint, cvjoint_constraint, cone_constraint,
                                               generic_constraint, gravity_constraint, null_constraint>;
+
+template<typename T, typename... Ts>
+constexpr bool is_constraint_in(constraint_type_list<Ts...>) noexcept {
+    return (std::is_same_v<T, Ts> || ...);
+}
+
+template<typename T>
+concept constraint_component = is_constraint_in<T>(constraint_types{});
+
+// A constraint holds its two bodies.
+template<constraint_component T>
+struct entity_members<T> {
+    template<typename Fn>
+    static void each(T &con, Fn &&fn) {
+        fn(con.body[0]);
+        fn(con.body[1]);
+    }
+};
 
 } // namespace edyn
 

@@ -7,6 +7,7 @@
 #include "edyn/ecs/delegate.hpp"
 #include "edyn/ecs/entity.hpp"
 #include "edyn/ecs/entity_allocator.hpp"
+#include "edyn/ecs/entity_members.hpp"
 #include "edyn/ecs/fwd.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/ecs/sigh.hpp"

@@ -130,7 +130,7 @@ public:
             ids = std::move(other.ids);
             records = std::move(other.records);
             slots = std::move(other.slots);
-            destroying = std::move(other.destroying);
+            in_destroy = std::move(other.in_destroy);
             vars = std::move(other.vars);
         }
         return *this;
@@ -153,14 +153,20 @@ public:
         if (!valid(e)) {
             detail::throw_invalid_entity("registry::destroy", e, {});
         }
-        if (std::find(destroying.begin(), destroying.end(), e) != destroying.end()) {
+        if (std::find(in_destroy.begin(), in_destroy.end(), e) != in_destroy.end()) {
             return;
         }
         ids.reserve_release();
-        destroying.push_back(e);
-        const destroy_guard guard{destroying};
+        in_destroy.push_back(e);
+        const destroy_guard guard{in_destroy};
         remove_all(e);
         ids.release(e);
+    }
+
+    // Whether `destroy(e)` is under way: true inside the on_destroy listeners it fires, which
+    // can so tell an entity going away from one component being removed.
+    [[nodiscard]] bool destroying(entity e) const noexcept {
+        return std::find(in_destroy.begin(), in_destroy.end(), e) != in_destroy.end();
     }
 
     // Destroys each entity of the range (each at most once). Throws, destroying none, if one
@@ -586,7 +592,7 @@ private:
     entity_allocator ids;
     std::vector<pool_record> records; // in order of creation
     std::vector<pool_slot> slots;     // by type_index
-    std::vector<entity> destroying;   // entities inside `destroy`, innermost last
+    std::vector<entity> in_destroy;   // entities inside `destroy`, innermost last
     context vars;
 };
 

@@ -12,14 +12,15 @@ enum class execution_mode : std::uint8_t {
     sequential,
     // As sequential, with parts of the step spread over worker threads.
     sequential_multithreaded,
-    // A worker thread owns the simulation; update() exchanges state with it.
+    // A worker thread owns the simulation in a registry of its own; update() sends it the changes
+    // made to the main registry and applies the results it has finished, never waiting for it.
     asynchronous
 };
 
 struct init_config {
-    // The manual makes asynchronous the default; until that mode is available, sequential is,
-    // and asking for asynchronous throws std::invalid_argument.
-    edyn::execution_mode execution_mode{edyn::execution_mode::sequential};
+    // Asynchronous by default: a simulation worker thread steps the world while the calling
+    // thread goes on (see update() in world.hpp).
+    edyn::execution_mode execution_mode{edyn::execution_mode::asynchronous};
     // sequential_multithreaded only: threads that run the step's parallel phases, the calling
     // thread included; 0 means one per hardware thread, and more than max_worker_threads is
     // refused. Threads are made once, in attach.

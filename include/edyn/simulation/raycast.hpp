@@ -30,7 +30,8 @@ struct raycast_result {
 //
 // Reads the broadphase, whose AABBs are those of the last step (and of bodies created since):
 // call it between steps or from a step callback, not while a step runs. Throws
-// std::invalid_argument when the registry is not attached or p0 or p1 is not finite.
+// std::invalid_argument when the registry is not attached or p0 or p1 is not finite, and on
+// the main registry of the asynchronous mode, where raycast_async casts in the worker.
 raycast_result raycast(const registry &registry, const vector3 &p0, const vector3 &p1,
                        const std::vector<entity> &ignore_entities = {});
 

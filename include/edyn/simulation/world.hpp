@@ -28,11 +28,27 @@ bool is_attached(const registry &registry) noexcept;
 // Advances the simulation to `time` (seconds, from the caller's clock; the first call only
 // sets the start) in fixed steps, then interpolates present_position / present_orientation
 // between the last two steps. update(registry) uses the steady clock.
+//
+// In asynchronous mode update() never waits: it applies what the worker has finished since the
+// last call (motion, sleeping, manifolds; collision events and query replies are delivered to
+// their listeners here, on the calling thread), sends the changes made to the main registry
+// and the new time, and presents the transforms one update behind the sequential mode's. An
+// exception thrown in the worker by a step callback, or by a listener or delegate during this
+// call, is rethrown from here once the rest is applied; the worker keeps running.
 void update(registry &registry, double time);
 void update(registry &registry);
 
-// Runs exactly one fixed step now, paused or not, and sets the present transforms to it.
+// Runs exactly one fixed step now, paused or not, and sets the present transforms to it. In
+// asynchronous mode the worker runs it as soon as it can; its result arrives with a later
+// update() or wait_for_simulation().
 void step_simulation(registry &registry);
+
+// Asynchronous mode: sends everything done to the main registry so far, waits until the worker
+// has applied it (and run the steps already asked for), then applies the worker's results to
+// the main registry as update() does, without advancing time. Tools and tests use it, with
+// set_paused and step_simulation, to run the worker step by step. In the other modes there is
+// nothing to wait for and it returns at once.
+void wait_for_simulation(registry &registry);
 
 void set_paused(registry &registry, bool paused);
 bool is_paused(const registry &registry);

@@ -50,12 +50,13 @@ TEST(world, attach_detach_attach_keeps_the_programs_entities) {
     detach(reg);
 }
 
-TEST(world, the_asynchronous_mode_not_yet_available_is_refused) {
+TEST(world, the_asynchronous_mode_is_the_default) {
+    EXPECT_EQ(init_config{}.execution_mode, execution_mode::asynchronous);
     registry reg;
-    EXPECT_THROW(attach(reg, init_config{execution_mode::asynchronous}), std::invalid_argument);
+    attach(reg, init_config{});
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::asynchronous);
+    detach(reg);
     EXPECT_FALSE(is_attached(reg));
-    attach(reg, init_config{execution_mode::sequential});
-    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential);
 }
 
 TEST(world, sequential_multithreaded_attaches_with_its_own_threads_or_the_programs_scheduler) {
@@ -102,14 +103,15 @@ TEST(world, init_sets_the_configuration_attach_uses_when_given_none) {
     detach(reg);
 
     // Refused as attach would refuse it, naming the field; the previous configuration stays.
+    auto bad = config;
+    bad.num_worker_threads = 100000;
     try {
-        init(init_config{execution_mode::asynchronous});
-        ADD_FAILURE() << "init accepted the asynchronous mode, which is not available";
+        init(bad);
+        ADD_FAILURE() << "init accepted 100000 worker threads";
     } catch (const std::invalid_argument &e) {
-        EXPECT_NE(std::string(e.what()).find("init: execution_mode"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("init: init_config::num_worker_threads"), std::string::npos)
+            << e.what();
     }
-    config.num_worker_threads = 100000;
-    EXPECT_THROW(init(config), std::invalid_argument);
     attach(reg);
     EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential_multithreaded);
     detach(reg);
@@ -120,7 +122,10 @@ TEST(world, init_sets_the_configuration_attach_uses_when_given_none) {
     detach(reg);
     init();
     attach(reg);
-    EXPECT_EQ(get_settings(reg).execution_mode, init_config{}.execution_mode);
+    EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::asynchronous);
+    detach(reg);
+    // Back to what the other unit tests expect (support/sequential_default.cpp).
+    init(init_config{execution_mode::sequential});
 }
 
 TEST(world, update_runs_as_many_fixed_steps_as_the_time_asks_for) {

@@ -1,0 +1,122 @@
+#ifndef EDYN_SIMULATION_REPLICATION_HPP
+#define EDYN_SIMULATION_REPLICATION_HPP
+
+#include "edyn/ecs/entity_members.hpp"
+#include "edyn/ecs/registry.hpp"
+#include <functional>
+#include <memory>
+#include <type_traits>
+
+namespace edyn {
+
+// How a value arriving from the main registry is merged into the simulation worker's copy of a
+// component the entity already has: by default it replaces it. Specialise it to merge
+// otherwise (before calling register_external_components for that type):
+//
+//   template<>
+//   void edyn::merge_component<my_component>(my_component &current, const my_component &incoming) {
+//       current.items.insert(current.items.end(), incoming.items.begin(), incoming.items.end());
+//   }
+template<typename Component>
+void merge_component(Component &current, const Component &new_value) {
+    current = new_value;
+}
+
+namespace detail {
+
+// Type-erased handlers of one replicated component type, built where its type is known.
+struct replicated_type {
+    const void *id; // unique per type
+    void (*connect)(registry &);
+    void (*disconnect)(registry &);
+    // Sends the component's current value of entity e, if it has one.
+    void (*send_existing)(registry &, entity);
+};
+
+// Registers the type with the main registry's asynchronous link (a no-op in the other modes).
+// Throws std::invalid_argument naming `function` when the registry is not attached.
+void register_replicated(registry &registry, const char *function, const replicated_type &type);
+
+// Called by the listeners below: queue a copy, a removal, for the worker.
+struct replication_sink {
+    virtual ~replication_sink() = default;
+    virtual bool accepts(registry &registry, entity e, bool edyn_component) = 0;
+    virtual void send(entity e, std::function<void(registry &worker, entity worker_entity,
+                                                   const std::function<entity(entity)> &to_worker)>
+                                    apply) = 0;
+};
+replication_sink *find_replication_sink(registry &registry) noexcept;
+
+template<typename Component, bool EdynComponent>
+void send_value(registry &registry, entity e) {
+    auto *sink = find_replication_sink(registry);
+    if (!sink || !sink->accepts(registry, e, EdynComponent)) return;
+    if constexpr (std::is_empty_v<Component>) {
+        sink->send(e, [](edyn::registry &worker, entity local, const std::function<entity(entity)> &) {
+            if (!worker.all_of<Component>(local)) worker.emplace<Component>(local);
+        });
+    } else {
+        sink->send(e, [value = registry.get<Component>(e)](edyn::registry &worker, entity local,
+                                                           const std::function<entity(entity)> &to_worker) {
+            auto copy = value;
+            map_entity_members(copy, to_worker);
+            if (auto *current = worker.try_get<Component>(local)) {
+                merge_component(*current, copy);
+                worker.patch<Component>(local);
+            } else {
+                worker.emplace<Component>(local, std::move(copy));
+            }
+        });
+    }
+}
+
+template<typename Component, bool EdynComponent>
+void send_removal(registry &registry, entity e) {
+    // An entity being destroyed is sent as a whole; its components are not sent one by one.
+    if (registry.destroying(e)) return;
+    auto *sink = find_replication_sink(registry);
+    if (!sink || !sink->accepts(registry, e, EdynComponent)) return;
+    sink->send(e, [](edyn::registry &worker, entity local, const std::function<entity(entity)> &) {
+        worker.remove<Component>(local);
+    });
+}
+
+template<typename Component, bool EdynComponent>
+replicated_type make_replicated_type() {
+    static const char id = 0;
+    return {&id,
+            [](registry &r) {
+                r.on_construct<Component>().template connect<&send_value<Component, EdynComponent>>();
+                r.on_update<Component>().template connect<&send_value<Component, EdynComponent>>();
+                r.on_destroy<Component>().template connect<&send_removal<Component, EdynComponent>>();
+            },
+            [](registry &r) {
+                r.on_construct<Component>().template disconnect<&send_value<Component, EdynComponent>>();
+                r.on_update<Component>().template disconnect<&send_value<Component, EdynComponent>>();
+                r.on_destroy<Component>().template disconnect<&send_removal<Component, EdynComponent>>();
+            },
+            [](registry &r, entity e) {
+                if (r.all_of<Component>(e)) send_value<Component, EdynComponent>(r, e);
+            }};
+}
+
+} // namespace detail
+
+// Makes the program's own components travel to the simulation worker in asynchronous mode:
+// on the entities the worker has (rigid bodies, constraints, external entities), their
+// emplace, replace, patch and removal are applied in the worker's registry at the start of its
+// next step, in the order they were made, and step callbacks see them there. Entities the
+// components hold are translated into the worker's: declare them with edyn::entity_members
+// (ecs/entity_members.hpp). Registering a type twice does nothing more; in the other modes
+// nothing needs to travel and this does nothing. Throws std::invalid_argument naming the
+// function when the registry is not attached.
+template<typename... Components>
+void register_external_components(registry &registry) {
+    (detail::register_replicated(registry, "register_external_components",
+                                 detail::make_replicated_type<Components, false>()),
+     ...);
+}
+
+} // namespace edyn
+
+#endif // EDYN_SIMULATION_REPLICATION_HPP

@@ -1,0 +1,438 @@
+#include "async_execution.hpp"
+#include "clock.hpp"
+#include "edyn/collision/collision_filter.hpp"
+#include "edyn/collision/should_collide.hpp"
+#include "edyn/constraints/constraint_links.hpp"
+#include "edyn/constraints/constraints.hpp"
+#include "edyn/constraints/external_entity.hpp"
+#include "edyn/dynamics/mass.hpp"
+#include "edyn/dynamics/material.hpp"
+#include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/dynamics/shape_index.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/worker_calls.hpp"
+#include "edyn/shapes/aabb.hpp"
+#include "edyn/shapes/shapes.hpp"
+#include "edyn/simulation/interpolation.hpp"
+#include "edyn/simulation/world.hpp"
+#include "edyn/simulation/world_state.hpp"
+#include "simulation_worker.hpp"
+#include <optional>
+
+namespace edyn {
+
+namespace {
+
+// On every main entity the worker has a counterpart of. Only destroy() removes it (detach
+// clears it with the listeners gone), so its removal means the entity is going away.
+struct replicated_tag {};
+
+template<typename... Components>
+struct component_list {};
+
+// edyn's components that travel to the worker, in an order in which a body's parts arrive
+// before the tag that makes it a body and before its AABB, and bodies before constraints (so
+// that bodies made before attach() are sent in an order the worker's listeners accept).
+using replicated_components =
+    component_list<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
+                   compound_shape, shape_index, position, orientation, linvel, angvel, gravity, mass,
+                   mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass, rigidbody_dynamic_mass,
+                   material, collision_filter, collision_exclusion, sensor_tag, sleeping_disabled_tag,
+                   dynamic_tag, static_tag, kinematic_tag, rigidbody_tag, AABB, external_tag>;
+
+template<typename... Components, typename... Constraints>
+std::vector<detail::replicated_type> edyn_types(component_list<Components...>,
+                                                constraint_type_list<Constraints...>) {
+    return {detail::make_replicated_type<Components, true>()...,
+            detail::make_replicated_type<Constraints, true>()...};
+}
+
+worker_calls &calls(registry &registry) { return registry.ctx().get<worker_calls>(); }
+
+struct scoped_mute {
+    worker_calls &c;
+    explicit scoped_mute(registry &registry)
+        : c(calls(registry)) {
+        ++c.muted;
+    }
+    ~scoped_mute() { --c.muted; }
+    scoped_mute(const scoped_mute &) = delete;
+    scoped_mute &operator=(const scoped_mute &) = delete;
+};
+
+// Main-side bookkeeping the sequential listeners do as well: the previous transform for
+// interpolation, and constraint lists, so that a body's constraints go with it on this side.
+void on_construct_body(registry &registry, entity e) {
+    if (!registry.all_of<static_tag>(e) && registry.all_of<position, orientation>(e))
+        registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e),
+                                                        registry.get<orientation>(e));
+}
+
+void destroy_constraints_of(registry &registry, entity e) {
+    std::vector<constraint_ref> refs;
+    constraints_of(registry, e, refs);
+    for (auto &ref : refs) {
+        if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
+    }
+}
+
+void on_destroy_body(registry &registry, entity e) {
+    destroy_constraints_of(registry, e);
+    registry.remove<previous_transform>(e);
+}
+
+void on_construct_static(registry &registry, entity e) { registry.remove<previous_transform>(e); }
+void on_destroy_static(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag>(e)) {
+        registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e),
+                                                        registry.get<orientation>(e));
+    }
+}
+
+// A body the program changes wakes (with its island, in the worker): it is shown awake here
+// at once.
+void on_update_wake(registry &registry, entity e) { registry.remove<sleeping_tag>(e); }
+
+// A teleport is not interpolated.
+void on_update_transform(registry &registry, entity e) {
+    if (auto *prev = registry.try_get<previous_transform>(e))
+        *prev = {registry.get<position>(e), registry.get<orientation>(e)};
+    on_update_wake(registry, e);
+}
+
+// The components whose change wakes a body in the worker (registry_listeners.cpp).
+using waking_components =
+    component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape, sphere_shape,
+                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape>;
+
+template<typename... Components>
+void connect_wake(registry &registry, component_list<Components...>, bool connect) {
+    if (connect)
+        (registry.on_update<Components>().template connect<&on_update_wake>(), ...);
+    else
+        (registry.on_update<Components>().template disconnect<&on_update_wake>(), ...);
+}
+
+template<typename T>
+void on_construct_constraint(registry &registry, entity e) {
+    auto &con = registry.get<T>(e);
+    link_constraint(registry, e, con.body[0], con.body[1]);
+}
+
+void on_destroy_constraint(registry &registry, entity e) { release_constraint(registry, e); }
+void on_destroy_links(registry &registry, entity e) { unlink_constraint(registry, e); }
+
+void on_destroy_replicated(registry &registry, entity e) {
+    auto *link = registry.ctx().find<async_execution>();
+    if (!link || calls(registry).muted) return;
+    link->push_call(e, [](edyn::registry &worker, entity local) { worker.destroy(local); });
+}
+
+template<typename... Constraints>
+void connect_main_listeners(registry &registry, constraint_type_list<Constraints...>, bool connect) {
+    if (connect) {
+        registry.on_construct<rigidbody_tag>().connect<&on_construct_body>();
+        registry.on_destroy<rigidbody_tag>().connect<&on_destroy_body>();
+        registry.on_construct<static_tag>().connect<&on_construct_static>();
+        registry.on_destroy<static_tag>().connect<&on_destroy_static>();
+        registry.on_update<position>().connect<&on_update_transform>();
+        registry.on_update<orientation>().connect<&on_update_transform>();
+        (registry.on_construct<Constraints>().template connect<&on_construct_constraint<Constraints>>(), ...);
+        (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint>(), ...);
+        registry.on_destroy<constraint_links>().connect<&on_destroy_links>();
+        registry.on_destroy<constraint_list>().connect<&destroy_constraints_of>();
+        registry.on_destroy<external_tag>().connect<&destroy_constraints_of>();
+        registry.on_destroy<replicated_tag>().connect<&on_destroy_replicated>();
+        connect_wake(registry, waking_components{}, true);
+    } else {
+        connect_wake(registry, waking_components{}, false);
+        registry.on_construct<rigidbody_tag>().disconnect<&on_construct_body>();
+        registry.on_destroy<rigidbody_tag>().disconnect<&on_destroy_body>();
+        registry.on_construct<static_tag>().disconnect<&on_construct_static>();
+        registry.on_destroy<static_tag>().disconnect<&on_destroy_static>();
+        registry.on_update<position>().disconnect<&on_update_transform>();
+        registry.on_update<orientation>().disconnect<&on_update_transform>();
+        (registry.on_construct<Constraints>().template disconnect<&on_construct_constraint<Constraints>>(),
+         ...);
+        (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint>(), ...);
+        registry.on_destroy<constraint_links>().disconnect<&on_destroy_links>();
+        registry.on_destroy<constraint_list>().disconnect<&destroy_constraints_of>();
+        registry.on_destroy<external_tag>().disconnect<&destroy_constraints_of>();
+        registry.on_destroy<replicated_tag>().disconnect<&on_destroy_replicated>();
+    }
+}
+
+// The settings, filter and material table as they are now on the main side.
+worker_op settings_op(registry &registry) {
+    auto s = get_settings(registry);
+    auto paused = is_paused(registry);
+    auto filter = get_should_collide(registry);
+    std::optional<material_mix_table> table;
+    if (auto *t = registry.ctx().find<material_mix_table>()) table = *t;
+    return [s, paused, filter, table = std::move(table)](worker_context &w) {
+        auto &reg = w.reg;
+        auto &current = reg.ctx().get<settings>();
+        auto mode = current.execution_mode;
+        auto gravity_changed = current.gravity != s.gravity;
+        current = s;
+        current.execution_mode = mode;
+        // set_gravity wakes resting bodies, which must fall the new way.
+        if (gravity_changed) set_gravity(reg, s.gravity);
+        set_paused(reg, paused);
+        if (filter == &should_collide_default)
+            reset_should_collide(reg);
+        else
+            set_should_collide(reg, filter);
+        if (table)
+            reg.ctx().emplace_or_replace<material_mix_table>(*table);
+        else
+            reg.ctx().erase<material_mix_table>();
+    };
+}
+
+} // namespace
+
+async_execution::async_execution(registry &registry)
+    : worker(std::make_unique<simulation_worker>())
+    , types(edyn_types(replicated_components{}, constraint_types{})) {
+    registry.ctx().emplace<worker_calls>().forward = [this](entity e, worker_calls::call_type call) {
+        push_call(e, std::move(call));
+    };
+    connect_main_listeners(registry, constraint_types{}, true);
+    for (auto &type : types)
+        type.connect(registry);
+    // Entities made before attach(), type by type in the order above.
+    for (auto &type : types) {
+        std::vector<entity> entities;
+        registry.each([&](entity e) { entities.push_back(e); });
+        for (auto e : entities)
+            type.send_existing(registry, e);
+    }
+}
+
+async_execution::~async_execution() = default;
+
+void async_execution::disconnect(registry &registry) {
+    for (auto &type : types)
+        type.disconnect(registry);
+    for (auto &type : external_types)
+        type.disconnect(registry);
+    connect_main_listeners(registry, constraint_types{}, false);
+    registry.clear<replicated_tag>();
+    registry.ctx().erase<worker_calls>();
+}
+
+void async_execution::add_type(registry &registry, const detail::replicated_type &type) {
+    for (auto &known : external_types) {
+        if (known.id == type.id) return;
+    }
+    for (auto &known : types) {
+        if (known.id == type.id) return;
+    }
+    external_types.push_back(type);
+    type.connect(registry);
+    for (auto e : registry.view<replicated_tag>())
+        type.send_existing(registry, e);
+}
+
+bool async_execution::accepts(registry &registry, entity e, bool edyn_component) {
+    if (calls(registry).muted) return false;
+    if (registry.all_of<replicated_tag>(e)) return true;
+    if (!edyn_component) return false;
+    // The first of edyn's components on this entity: the worker will have it from now on,
+    // with the program's registered components it already holds.
+    registry.emplace<replicated_tag>(e);
+    for (auto &type : external_types)
+        type.send_existing(registry, e);
+    return true;
+}
+
+void async_execution::send(
+    entity e, std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply) {
+    mark_pending(e);
+    ops.push_back([e, apply = std::move(apply)](worker_context &w) {
+        auto local = w.local(e);
+        apply(w.reg, local, [&w](entity main) { return w.local(main); });
+    });
+    ++ops_made;
+}
+
+void async_execution::push(worker_op op) {
+    ops.push_back(std::move(op));
+    ++ops_made;
+}
+
+void async_execution::push_call(entity e, std::function<void(registry &, entity)> call) {
+    mark_pending(e);
+    push([e, call = std::move(call)](worker_context &w) {
+        auto local = w.find(e);
+        if (local != null) call(w.reg, local);
+    });
+}
+
+void async_execution::mark_pending(entity e) {
+    auto i = to_index(e);
+    if (i >= pending.size()) pending.resize(std::size_t(i) + 1);
+    // The operation about to be queued is number ops_made + 1.
+    pending[i] = {e, ops_made + 1};
+}
+
+bool async_execution::pending_after(entity e, std::uint64_t ops_applied) const noexcept {
+    auto i = to_index(e);
+    return i < pending.size() && pending[i].e == e && pending[i].seq > ops_applied;
+}
+
+void async_execution::send_batch(registry &registry, worker_op last) {
+    push(settings_op(registry));
+    if (last) push(std::move(last));
+    last_batch = worker->send(ops);
+}
+
+void async_execution::update(registry &registry, double time) {
+    apply_messages(registry);
+    send_batch(registry, [time](worker_context &w) { w.advance(time); });
+    interpolate_present_transforms(registry, alpha);
+    if (!errors.empty()) {
+        auto error = errors.front();
+        errors.clear();
+        std::rethrow_exception(error);
+    }
+}
+
+void async_execution::step_simulation(registry &registry) {
+    send_batch(registry, [](worker_context &w) { w.step_once(); });
+}
+
+void async_execution::wait(registry &registry) {
+    send_batch(registry, {});
+    worker->wait(last_batch);
+    apply_messages(registry);
+    interpolate_present_transforms(registry, alpha);
+    if (!errors.empty()) {
+        auto error = errors.front();
+        errors.clear();
+        std::rethrow_exception(error);
+    }
+}
+
+void async_execution::apply_messages(registry &registry) {
+    auto messages = worker->receive();
+    for (auto &message : messages)
+        apply(registry, message);
+}
+
+void async_execution::apply(registry &registry, worker_message &message) {
+    scoped_mute mute(registry);
+    // Motion first: events were delivered at the end of the worker's step, when the bodies
+    // already stood where the step left them.
+    if (message.stepped) {
+        save_previous_transforms(registry);
+        for (auto &state : message.bodies) {
+            if (!registry.valid(state.main) || pending_after(state.main, message.ops_applied)) continue;
+            if (!registry.all_of<position, orientation, linvel, angvel>(state.main)) continue;
+            registry.get<position>(state.main) = state.pos;
+            registry.get<orientation>(state.main) = state.orn;
+            registry.get<linvel>(state.main) = state.v;
+            registry.get<angvel>(state.main) = state.w;
+        }
+        std::apply(
+            [&](auto &...lists) { (apply_constraint_states(registry, lists, message.ops_applied), ...); },
+            message.constraints);
+        auto &world = registry.ctx().get<world_state>();
+        world.simulation_time = message.simulation_time;
+        world.step_count = message.step_count;
+    }
+    apply_records(registry, message.records);
+    for (auto &[worker_entity, manifold] : message.manifolds) {
+        auto m = manifolds.find(worker_entity);
+        if (m == null || !registry.valid(m)) continue;
+        auto &current = registry.get<contact_manifold>(m);
+        auto bodies = current.body;
+        current = manifold;
+        current.body = bodies;
+    }
+    for (auto e : message.slept) {
+        if (registry.valid(e) && !registry.all_of<sleeping_tag>(e)) registry.emplace<sleeping_tag>(e);
+    }
+    for (auto e : message.woke) {
+        if (registry.valid(e)) registry.remove<sleeping_tag>(e);
+    }
+    for (auto &reply : message.replies) {
+        try {
+            reply(registry);
+        } catch (...) {
+            errors.push_back(std::current_exception());
+        }
+    }
+    for (auto &error : message.errors)
+        errors.push_back(error);
+    if (message.has_alpha) alpha = message.alpha;
+}
+
+template<typename Constraint>
+void async_execution::apply_constraint_states(registry &registry,
+                                              const std::vector<std::pair<entity, Constraint>> &states,
+                                              std::uint64_t ops_applied) {
+    for (auto &[e, con] : states) {
+        if (!registry.valid(e) || pending_after(e, ops_applied)) continue;
+        auto *current = registry.try_get<Constraint>(e);
+        if (!current) continue;
+        entity body0 = current->body[0], body1 = current->body[1];
+        *current = con;
+        current->body[0] = body0;
+        current->body[1] = body1;
+    }
+}
+
+void async_execution::apply_records(registry &registry, const std::vector<worker_record> &records) {
+    auto &events = registry.ctx().get<contact_events>();
+    using kind = worker_record::kind;
+    for (auto &record : records) {
+        switch (record.type) {
+        case kind::manifold_created: {
+            auto m = registry.create();
+            registry.emplace<contact_manifold>(m, record.manifold);
+            manifolds.insert(record.worker_entity, m);
+            break;
+        }
+        case kind::manifold_destroyed: {
+            auto m = manifolds.find(record.worker_entity);
+            manifolds.erase(record.worker_entity);
+            if (m != null && registry.valid(m)) registry.destroy(m);
+            break;
+        }
+        case kind::contact_event: {
+            auto m = manifolds.find(record.worker_entity);
+            if (m == null || !registry.valid(m)) break;
+            registry.get<contact_manifold>(m) = record.manifold;
+            try {
+                events.publish({record.event.type, m, record.event.id});
+            } catch (...) {
+                errors.push_back(std::current_exception());
+            }
+            break;
+        }
+        case kind::entity_destroyed:
+            // Destroyed in the worker (by a step callback, or by an operation from here).
+            if (registry.valid(record.main_entity)) registry.destroy(record.main_entity);
+            break;
+        }
+    }
+}
+
+namespace detail {
+
+void register_replicated(registry &registry, const char *function, const replicated_type &type) {
+    if (!is_attached(registry))
+        throw std::invalid_argument(std::string(function) +
+                                    ": the registry is not attached (call edyn::attach first)");
+    if (auto *link = registry.ctx().find<async_execution>()) link->add_type(registry, type);
+}
+
+replication_sink *find_replication_sink(registry &registry) noexcept {
+    return registry.ctx().find<async_execution>();
+}
+
+} // namespace detail
+
+} // namespace edyn

@@ -1,0 +1,78 @@
+#ifndef EDYN_SRC_SIMULATION_ASYNC_EXECUTION_HPP
+#define EDYN_SRC_SIMULATION_ASYNC_EXECUTION_HPP
+
+#include "async_protocol.hpp"
+#include "edyn/ecs/registry.hpp"
+#include "edyn/simulation/replication.hpp"
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <vector>
+
+namespace edyn {
+
+class simulation_worker;
+
+// The main registry's side of execution_mode::asynchronous, in its context: the worker, the
+// operations waiting to be sent, and what the main side needs to apply the worker's messages.
+//
+// Main -> worker: every change to a replicated component (edyn's own, and those registered
+// with register_external_components) of an entity the worker has is queued as an operation;
+// update() sends the queue, the settings and the time to advance to as one batch.
+// Worker -> main: update() applies the messages finished since the last call, without waiting:
+// manifolds made and destroyed, collision events, body motion, sleeping, replies to queries.
+// The present transforms are interpolated as the sequential mode would have one update earlier.
+class async_execution final : public detail::replication_sink {
+public:
+    explicit async_execution(registry &registry);
+    ~async_execution() override;
+
+    void update(registry &registry, double time);
+    void step_simulation(registry &registry);
+    // Sends what is queued, waits until the worker has applied it and applies its messages.
+    void wait(registry &registry);
+    // Queues an operation made by the main side (not tied to one entity).
+    void push(worker_op op);
+    // Queues `call` to run in the worker on main entity e's worker entity, if it has one.
+    void push_call(entity e, std::function<void(registry &, entity)> call);
+
+    void add_type(registry &registry, const detail::replicated_type &type);
+    // Stops the listeners (detach).
+    void disconnect(registry &registry);
+
+    bool accepts(registry &registry, entity e, bool edyn_component) override;
+    void send(entity e,
+              std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply) override;
+
+private:
+    void send_batch(registry &registry, worker_op last);
+    void apply_messages(registry &registry);
+    void apply(registry &registry, worker_message &message);
+    void apply_records(registry &registry, const std::vector<worker_record> &records);
+    template<typename Constraint>
+    void apply_constraint_states(registry &registry, const std::vector<std::pair<entity, Constraint>> &states,
+                                 std::uint64_t ops_applied);
+    void mark_pending(entity e);
+    bool pending_after(entity e, std::uint64_t ops_applied) const noexcept;
+
+    std::unique_ptr<simulation_worker> worker;
+    std::vector<worker_op> ops;
+    std::uint64_t ops_made{0};
+    std::uint64_t last_batch{0};
+    entity_map manifolds; // worker manifold -> main manifold
+    // The last operation made for each main entity (by index), so that motion the worker
+    // computed before applying it does not overwrite what the program just set.
+    struct pending_slot {
+        entity e{null};
+        std::uint64_t seq{0};
+    };
+    std::vector<pending_slot> pending;
+    std::vector<detail::replicated_type> types;
+    std::vector<detail::replicated_type> external_types;
+    std::vector<std::exception_ptr> errors;
+    scalar alpha{1};
+};
+
+} // namespace edyn
+
+#endif // EDYN_SRC_SIMULATION_ASYNC_EXECUTION_HPP

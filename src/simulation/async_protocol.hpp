@@ -1,0 +1,124 @@
+#ifndef EDYN_SRC_SIMULATION_ASYNC_PROTOCOL_HPP
+#define EDYN_SRC_SIMULATION_ASYNC_PROTOCOL_HPP
+
+// What the main thread and the simulation worker of execution_mode::asynchronous send each
+// other. The main thread sends operations (closures run by the worker on its registry, in the
+// order they were made); the worker sends one message per step it ran, and one more when a
+// batch of operations ends, with what the main registry must learn.
+
+#include "edyn/collision/contact_manifold.hpp"
+#include "edyn/constraints/constraints.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/ecs/registry.hpp"
+#include "edyn/simulation/contact_events.hpp"
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <tuple>
+#include <vector>
+
+namespace edyn {
+
+// Entities of one registry mapped to those of another, indexed by the source entity's index
+// (entities are dense, so this is an array look-up); a stale source (another version at that
+// index) maps to null.
+class entity_map {
+public:
+    entity find(entity source) const noexcept {
+        auto i = to_index(source);
+        if (i >= slots.size() || slots[i].source != source) return null;
+        return slots[i].target;
+    }
+    void insert(entity source, entity target) {
+        auto i = to_index(source);
+        if (i >= slots.size()) slots.resize(std::size_t(i) + 1);
+        slots[i] = {source, target};
+    }
+    void erase(entity source) noexcept {
+        auto i = to_index(source);
+        if (i < slots.size() && slots[i].source == source) slots[i] = {};
+    }
+
+private:
+    struct slot {
+        entity source{null};
+        entity target{null};
+    };
+    std::vector<slot> slots;
+};
+
+// On a worker entity made for a main entity: which one. Its removal (by an operation that
+// destroys the entity, or by a step callback) tells the main side the entity is gone.
+struct remote_entity {
+    entity value;
+};
+
+struct worker_context;
+using worker_op = std::function<void(worker_context &)>;
+
+// Motion of a body that moved in a step, addressed by its main entity.
+struct body_state {
+    entity main;
+    position pos;
+    orientation orn;
+    linvel v;
+    angvel w;
+};
+
+// Something the main side replays in order: a manifold made or destroyed by the worker, a
+// collision event (with the manifold as it was when the event fired, so listeners on the main
+// thread read the same points the worker's would), or a main entity the worker destroyed.
+struct worker_record {
+    enum class kind : std::uint8_t { manifold_created, manifold_destroyed, contact_event, entity_destroyed };
+    kind type;
+    entity worker_entity{null};    // the manifold (worker side)
+    entity main_entity{null};      // entity_destroyed: the main entity
+    contact_events::event event{}; // contact_event (event.manifold is the worker's)
+    contact_manifold manifold{};   // manifold_created and contact_event (bodies: main side)
+};
+
+// A reply to run on the main thread during update() (entities in it already the main side's).
+using main_reply = std::function<void(registry &main)>;
+
+// Each constraint type's components after a step, addressed by main entity: what the solver
+// keeps in them (angles, impulses) is read on the main side too.
+template<typename... Constraints>
+using constraint_states_of = std::tuple<std::vector<std::pair<entity, Constraints>>...>;
+
+template<typename... Constraints>
+constraint_states_of<Constraints...> constraint_states_type(constraint_type_list<Constraints...>);
+
+using constraint_states = decltype(constraint_states_type(constraint_types{}));
+
+struct worker_message {
+    // Main entities the worker made its own entity for, in order: (main, worker).
+    std::vector<std::pair<entity, entity>> mapped;
+    std::vector<worker_record> records;
+    // State after the step (when `stepped`): every awake moving body, and every manifold of an
+    // awake island with points (bodies as the main side knows them).
+    std::vector<body_state> bodies;
+    std::vector<std::pair<entity, contact_manifold>> manifolds;
+    edyn::constraint_states constraints;
+    std::vector<entity> slept, woke; // main entities
+    std::vector<main_reply> replies;
+    std::vector<std::exception_ptr> errors;
+    bool stepped{false};
+    double simulation_time{0};
+    std::uint64_t step_count{0};
+    // Interpolation fraction for the present transforms, when the message ends an advance.
+    bool has_alpha{false};
+    scalar alpha{1};
+    // Sequence number of the last operation applied before this message was made.
+    std::uint64_t ops_applied{0};
+
+    bool empty() const noexcept {
+        return mapped.empty() && records.empty() && replies.empty() && errors.empty() && !stepped &&
+               !has_alpha && slept.empty() && woke.empty();
+    }
+};
+
+} // namespace edyn
+
+#endif // EDYN_SRC_SIMULATION_ASYNC_PROTOCOL_HPP

@@ -1,0 +1,20 @@
+#ifndef EDYN_SRC_SIMULATION_CLOCK_HPP
+#define EDYN_SRC_SIMULATION_CLOCK_HPP
+
+#include "edyn/simulation/settings.hpp"
+#include "edyn/simulation/world_state.hpp"
+#include <cstdint>
+
+namespace edyn {
+
+// The fixed-step clock shared by update() and the asynchronous worker: takes the caller's
+// `time`, returns how many fixed steps are due (none on the first call, which only sets the
+// start, and none while paused), and leaves in the accumulator the time past the last of them.
+std::uint64_t take_due_steps(world_state &world, const settings &settings, double time);
+
+// Where the present lies between the last two steps, for interpolation.
+scalar present_fraction(const world_state &world, const settings &settings);
+
+} // namespace edyn
+
+#endif // EDYN_SRC_SIMULATION_CLOCK_HPP

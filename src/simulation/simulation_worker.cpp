@@ -1,0 +1,249 @@
+#include "simulation_worker.hpp"
+#include "clock.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/simulation/step.hpp"
+#include "edyn/simulation/world.hpp"
+#include "edyn/simulation/world_state.hpp"
+
+namespace edyn {
+
+namespace {
+
+void on_destroy_remote(worker_context &w, registry &reg, entity e) {
+    auto main = reg.get<remote_entity>(e).value;
+    w.to_worker.erase(main);
+    auto &record = w.message.records.emplace_back();
+    record.type = worker_record::kind::entity_destroyed;
+    record.main_entity = main;
+}
+
+// The manifold with its bodies named as the main side knows them.
+contact_manifold main_side(const worker_context &w, const contact_manifold &manifold) {
+    auto copy = manifold;
+    copy.body = {w.main_of(manifold.body[0]), w.main_of(manifold.body[1])};
+    return copy;
+}
+
+void on_construct_manifold(worker_context &w, registry &reg, entity e) {
+    auto &record = w.message.records.emplace_back();
+    record.type = worker_record::kind::manifold_created;
+    record.worker_entity = e;
+    record.manifold = main_side(w, reg.get<contact_manifold>(e));
+}
+
+void on_destroy_manifold(worker_context &w, registry &, entity e) {
+    auto &record = w.message.records.emplace_back();
+    record.type = worker_record::kind::manifold_destroyed;
+    record.worker_entity = e;
+}
+
+void record_event(worker_context &w, contact_events::kind type, entity manifold,
+                  contact_manifold::id_type id) {
+    auto &record = w.message.records.emplace_back();
+    record.type = worker_record::kind::contact_event;
+    record.worker_entity = manifold;
+    record.event = {type, manifold, id};
+    if (auto *m = w.reg.try_get<contact_manifold>(manifold)) record.manifold = main_side(w, *m);
+}
+
+void on_started(worker_context &w, entity m) { record_event(w, contact_events::kind::started, m, 0); }
+void on_ended(worker_context &w, entity m) { record_event(w, contact_events::kind::ended, m, 0); }
+void on_point_created(worker_context &w, entity m, contact_manifold::id_type id) {
+    record_event(w, contact_events::kind::point_created, m, id);
+}
+void on_point_destroyed(worker_context &w, entity m, contact_manifold::id_type id) {
+    record_event(w, contact_events::kind::point_destroyed, m, id);
+}
+
+void on_construct_sleeping(worker_context &w, registry &reg, entity e) {
+    if (reg.all_of<remote_entity>(e)) w.slept.push_back(e);
+}
+
+void on_destroy_sleeping(worker_context &w, registry &reg, entity e) {
+    if (auto *remote = reg.try_get<remote_entity>(e)) w.message.woke.push_back(remote->value);
+}
+
+} // namespace
+
+worker_context::worker_context() {
+    init_config config;
+    config.execution_mode = execution_mode::sequential;
+    attach(reg, config);
+    reg.on_destroy<remote_entity>().connect<&on_destroy_remote>(*this);
+    reg.on_construct<contact_manifold>().connect<&on_construct_manifold>(*this);
+    reg.on_destroy<contact_manifold>().connect<&on_destroy_manifold>(*this);
+    reg.on_construct<sleeping_tag>().connect<&on_construct_sleeping>(*this);
+    reg.on_destroy<sleeping_tag>().connect<&on_destroy_sleeping>(*this);
+    on_contact_started(reg).connect<&on_started>(*this);
+    on_contact_ended(reg).connect<&on_ended>(*this);
+    on_contact_point_created(reg).connect<&on_point_created>(*this);
+    on_contact_point_destroyed(reg).connect<&on_point_destroyed>(*this);
+}
+
+entity worker_context::local(entity main) {
+    auto e = find(main);
+    if (e != null) return e;
+    e = reg.create();
+    reg.emplace<remote_entity>(e, main);
+    to_worker.insert(main, e);
+    return e;
+}
+
+entity worker_context::find(entity main) const noexcept {
+    auto e = to_worker.find(main);
+    return e != null && reg.valid(e) ? e : entity{null};
+}
+
+entity worker_context::main_of(entity worker) const noexcept {
+    if (worker == null) return null;
+    auto *remote = reg.try_get<remote_entity>(worker);
+    return remote ? remote->value : entity{null};
+}
+
+void worker_context::advance(double time) {
+    auto &world = reg.ctx().get<world_state>();
+    auto &s = get_settings(reg);
+    auto steps = take_due_steps(world, s, time);
+    for (std::uint64_t i = 0; i < steps; ++i)
+        step();
+    message.has_alpha = true;
+    message.alpha = present_fraction(world, s);
+}
+
+void worker_context::step_once() {
+    step();
+    message.has_alpha = true;
+    message.alpha = 1;
+}
+
+void worker_context::step() {
+    try {
+        run_step(reg);
+    } catch (...) {
+        // A step callback threw: the main thread rethrows it from update(). The step stops
+        // where it threw; the worker goes on with the next.
+        message.errors.push_back(std::current_exception());
+    }
+    snapshot();
+    finish_message();
+}
+
+void worker_context::snapshot() {
+    auto &world = reg.ctx().get<world_state>();
+    message.stepped = true;
+    message.simulation_time = world.simulation_time;
+    message.step_count = world.step_count;
+    auto add_body = [&](entity, const remote_entity &remote, const position &pos, const orientation &orn,
+                        const linvel &v, const angvel &w) {
+        message.bodies.push_back({remote.value, pos, orn, v, w});
+    };
+    reg.view<remote_entity, position, orientation, linvel, angvel>(exclude<sleeping_tag, static_tag>)
+        .each(add_body);
+    // Bodies that fell asleep in this step rest where the step left them.
+    for (auto e : slept) {
+        if (!reg.valid(e) || !reg.all_of<sleeping_tag, position, orientation, linvel, angvel>(e)) continue;
+        auto &remote = reg.get<remote_entity>(e);
+        add_body(e, remote, reg.get<position>(e), reg.get<orientation>(e), reg.get<linvel>(e),
+                 reg.get<angvel>(e));
+        message.slept.push_back(remote.value);
+    }
+    slept.clear();
+    reg.view<contact_manifold>(exclude<sleeping_tag>).each([&](entity e, const contact_manifold &manifold) {
+        message.manifolds.emplace_back(e, manifold);
+    });
+    std::apply(
+        [&](auto &...states) {
+            auto add = [&](auto &list) {
+                using constraint = typename std::decay_t<decltype(list)>::value_type::second_type;
+                reg.view<remote_entity, constraint>(exclude<sleeping_tag>)
+                    .each([&](entity, const remote_entity &remote, const constraint &con) {
+                        list.emplace_back(remote.value, con);
+                    });
+            };
+            (add(states), ...);
+        },
+        message.constraints);
+}
+
+void worker_context::finish_message() {
+    for (auto e : slept) {
+        if (auto *remote = reg.try_get<remote_entity>(e); remote && reg.all_of<sleeping_tag>(e))
+            message.slept.push_back(remote->value);
+    }
+    slept.clear();
+    if (message.empty()) return;
+    message.ops_applied = ops_applied;
+    ready.push_back(std::move(message));
+    message = {};
+}
+
+simulation_worker::simulation_worker()
+    : thread([this] { run(); }) {}
+
+simulation_worker::~simulation_worker() {
+    {
+        std::lock_guard lock(mutex);
+        stopping = true;
+    }
+    work_arrived.notify_one();
+    thread.join();
+}
+
+std::uint64_t simulation_worker::send(std::vector<worker_op> &ops) {
+    std::uint64_t batch;
+    {
+        std::lock_guard lock(mutex);
+        for (auto &op : ops)
+            inbox.push_back(std::move(op));
+        batch = ++batches_sent;
+    }
+    ops.clear();
+    work_arrived.notify_one();
+    return batch;
+}
+
+std::vector<worker_message> simulation_worker::receive() {
+    std::vector<worker_message> messages;
+    std::lock_guard lock(mutex);
+    messages.swap(outbox);
+    return messages;
+}
+
+void simulation_worker::wait(std::uint64_t batch) {
+    std::unique_lock lock(mutex);
+    batch_done.wait(lock, [&] { return batches_done >= batch; });
+}
+
+void simulation_worker::run() {
+    std::vector<worker_op> ops;
+    for (;;) {
+        std::uint64_t batch;
+        {
+            std::unique_lock lock(mutex);
+            work_arrived.wait(lock, [&] { return stopping || batches_sent > batches_done; });
+            if (stopping) return;
+            ops.swap(inbox);
+            batch = batches_sent;
+        }
+        for (auto &op : ops) {
+            ++context.ops_applied;
+            try {
+                op(context);
+            } catch (...) {
+                context.message.errors.push_back(std::current_exception());
+            }
+        }
+        ops.clear();
+        context.finish_message();
+        {
+            std::lock_guard lock(mutex);
+            for (auto &m : context.ready)
+                outbox.push_back(std::move(m));
+            batches_done = batch;
+        }
+        context.ready.clear();
+        batch_done.notify_all();
+    }
+}
+
+} // namespace edyn
