@@ -73,6 +73,23 @@ step_stats summarize_steps(const std::vector<double> &step_ms, unsigned warmup);
 
 // Runs the scene with one engine in this process and fills every field but peak_rss_mb.
 run_result run_edyn(const scene_spec &spec);
+
+// The asynchronous mode on one scene (async_runner.cpp): update() as a 60 Hz game loop calls
+// it on the main thread, the worker's own step times, and the sequential run beside them.
+struct async_result {
+    std::string scene;
+    unsigned bodies{0};
+    unsigned frames{0};
+    double update_median_ms{0}; // main thread, inside update(), after warm-up
+    double update_p99_ms{0};
+    double worker_median_ms{0}; // one step in the worker
+    std::uint64_t steps_run{0};
+    double steps_per_second{0}; // the worker's, over the whole run
+    run_result sequential;
+    bool ok{false};
+};
+async_result run_edyn_async(const scene_spec &spec);
+std::string async_table(const std::vector<async_result> &results);
 run_result run_bullet(const scene_spec &spec);
 
 // Peak resident memory of this process in MB (VmHWM), and a reset of that peak to the current

@@ -167,9 +167,11 @@ worker_op settings_op(registry &registry) {
     auto s = get_settings(registry);
     auto paused = is_paused(registry);
     auto filter = get_should_collide(registry);
+    auto events = registry.ctx().get<contact_events>().has_listeners();
     std::optional<material_mix_table> table;
     if (auto *t = registry.ctx().find<material_mix_table>()) table = *t;
-    return [s, paused, filter, table = std::move(table)](worker_context &w) {
+    return [s, paused, filter, events, table = std::move(table)](worker_context &w) {
+        w.send_events(events);
         auto &reg = w.reg;
         auto &current = reg.ctx().get<settings>();
         auto mode = current.execution_mode;
@@ -282,15 +284,22 @@ bool async_execution::pending_after(entity e, std::uint64_t ops_applied) const n
     return i < pending.size() && pending[i].e == e && pending[i].seq > ops_applied;
 }
 
-void async_execution::send_batch(registry &registry, worker_op last) {
+void async_execution::send_batch(registry &registry, worker_op last, std::optional<double> time) {
     push(settings_op(registry));
     if (last) push(std::move(last));
-    last_batch = worker->send(ops);
+    last_batch = worker->send(ops, time);
 }
 
 void async_execution::update(registry &registry, double time) {
     apply_messages(registry);
-    send_batch(registry, [time](worker_context &w) { w.advance(time); });
+    auto &world = registry.ctx().get<world_state>();
+    if (!world.started) {
+        // The first time only sets the start: it is never merged with a later one.
+        world.started = true;
+        send_batch(registry, [time](worker_context &w) { w.advance(time); });
+    } else {
+        send_batch(registry, {}, time);
+    }
     interpolate_present_transforms(registry, alpha);
     if (!errors.empty()) {
         auto error = errors.front();
@@ -317,40 +326,49 @@ void async_execution::wait(registry &registry) {
 
 void async_execution::apply_messages(registry &registry) {
     auto messages = worker->receive();
-    for (auto &message : messages)
-        apply(registry, message);
+    // When several steps came back at once, only the last two steps' motion matters (the
+    // present lies between them) and only the last contacts: the others' records still apply.
+    std::size_t motion_from = messages.size(), contacts_from = messages.size();
+    for (std::size_t i = messages.size(), found = 0; i-- > 0 && found < 2;) {
+        if (messages[i].has_motion) {
+            motion_from = i;
+            ++found;
+        }
+    }
+    for (std::size_t i = messages.size(); i-- > 0;) {
+        if (messages[i].has_contacts) {
+            contacts_from = i;
+            break;
+        }
+    }
+    for (std::size_t i = 0; i < messages.size(); ++i)
+        apply(registry, messages[i], i >= motion_from, i >= contacts_from);
 }
 
-void async_execution::apply(registry &registry, worker_message &message) {
+void async_execution::apply(registry &registry, worker_message &message, bool motion, bool contacts) {
     scoped_mute mute(registry);
-    // Motion first: events were delivered at the end of the worker's step, when the bodies
-    // already stood where the step left them.
     if (message.stepped) {
-        save_previous_transforms(registry);
-        for (auto &state : message.bodies) {
-            if (!registry.valid(state.main) || pending_after(state.main, message.ops_applied)) continue;
-            if (!registry.all_of<position, orientation, linvel, angvel>(state.main)) continue;
-            registry.get<position>(state.main) = state.pos;
-            registry.get<orientation>(state.main) = state.orn;
-            registry.get<linvel>(state.main) = state.v;
-            registry.get<angvel>(state.main) = state.w;
-        }
-        std::apply(
-            [&](auto &...lists) { (apply_constraint_states(registry, lists, message.ops_applied), ...); },
-            message.constraints);
         auto &world = registry.ctx().get<world_state>();
         world.simulation_time = message.simulation_time;
         world.step_count = message.step_count;
     }
-    apply_records(registry, message.records);
-    for (auto &[worker_entity, manifold] : message.manifolds) {
-        auto m = manifolds.find(worker_entity);
-        if (m == null || !registry.valid(m)) continue;
-        auto &current = registry.get<contact_manifold>(m);
-        auto bodies = current.body;
-        current = manifold;
-        current.body = bodies;
+    // Motion first: events were delivered at the end of the worker's step, when the bodies
+    // already stood where the step left them.
+    if (motion && message.has_motion) {
+        save_previous_transforms(registry);
+        apply_motion(registry, message.bodies, message.ops_applied);
     }
+    apply_motion(registry, message.rested, message.ops_applied);
+    auto apply_constraints = [&](const constraint_states &states) {
+        std::apply(
+            [&](auto &...lists) { (apply_constraint_states(registry, lists, message.ops_applied), ...); },
+            states);
+    };
+    if (contacts && message.has_contacts) apply_constraints(message.constraints);
+    apply_constraints(message.rested_constraints);
+    apply_records(registry, message.records);
+    if (contacts && message.has_contacts) apply_manifolds(registry, message.manifolds);
+    apply_manifolds(registry, message.rested_manifolds);
     for (auto e : message.slept) {
         if (registry.valid(e) && !registry.all_of<sleeping_tag>(e)) registry.emplace<sleeping_tag>(e);
     }
@@ -367,6 +385,39 @@ void async_execution::apply(registry &registry, worker_message &message) {
     for (auto &error : message.errors)
         errors.push_back(error);
     if (message.has_alpha) alpha = message.alpha;
+}
+
+void async_execution::apply_motion(registry &registry, const std::vector<body_state> &states,
+                                   std::uint64_t ops_applied) {
+    // Straight into the pools: the hottest loop of update().
+    auto &positions = registry.storage<position>();
+    auto &orientations = registry.storage<orientation>();
+    auto &linvels = registry.storage<linvel>();
+    auto &angvels = registry.storage<angvel>();
+    for (auto &state : states) {
+        auto *pos = positions.try_get(state.main);
+        if (!pos || pending_after(state.main, ops_applied)) continue;
+        auto *orn = orientations.try_get(state.main);
+        auto *v = linvels.try_get(state.main);
+        auto *w = angvels.try_get(state.main);
+        if (!orn || !v || !w) continue;
+        *pos = state.pos;
+        *orn = state.orn;
+        *v = state.v;
+        *w = state.w;
+    }
+}
+
+void async_execution::apply_manifolds(registry &registry,
+                                      const std::vector<std::pair<entity, contact_manifold>> &states) {
+    auto &pool = registry.storage<contact_manifold>();
+    for (auto &[worker_entity, manifold] : states) {
+        auto *current = pool.try_get(manifolds.find(worker_entity));
+        if (!current) continue;
+        auto bodies = current->body;
+        *current = manifold;
+        current->body = bodies;
+    }
 }
 
 template<typename Constraint>

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace edyn {
@@ -45,10 +46,14 @@ public:
               std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply) override;
 
 private:
-    void send_batch(registry &registry, worker_op last);
+    void send_batch(registry &registry, worker_op last, std::optional<double> time = std::nullopt);
     void apply_messages(registry &registry);
-    void apply(registry &registry, worker_message &message);
+    // `motion` and `contacts`: whether to apply the message's body motion, and its manifolds and
+    // constraints (skipped when later messages of the same update carry newer ones).
+    void apply(registry &registry, worker_message &message, bool motion, bool contacts);
     void apply_records(registry &registry, const std::vector<worker_record> &records);
+    void apply_motion(registry &registry, const std::vector<body_state> &states, std::uint64_t ops_applied);
+    void apply_manifolds(registry &registry, const std::vector<std::pair<entity, contact_manifold>> &states);
     template<typename Constraint>
     void apply_constraint_states(registry &registry, const std::vector<std::pair<entity, Constraint>> &states,
                                  std::uint64_t ops_applied);

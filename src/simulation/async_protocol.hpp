@@ -92,19 +92,28 @@ constraint_states_of<Constraints...> constraint_states_type(constraint_type_list
 
 using constraint_states = decltype(constraint_states_type(constraint_types{}));
 
+// Manifolds whose points did not change are refreshed on the main side once in this many steps
+// (their impulses are at most this many steps old there).
+inline constexpr std::uint64_t manifold_refresh_steps = 8;
+
 struct worker_message {
-    // Main entities the worker made its own entity for, in order: (main, worker).
-    std::vector<std::pair<entity, entity>> mapped;
     std::vector<worker_record> records;
-    // State after the step (when `stepped`): every awake moving body, and every manifold of an
-    // awake island with points (bodies as the main side knows them).
+    // State after the step: every awake moving body; manifolds whose points changed, and a share
+    // of the others (see manifold_refresh_steps).
     std::vector<body_state> bodies;
     std::vector<std::pair<entity, contact_manifold>> manifolds;
     edyn::constraint_states constraints;
     std::vector<entity> slept, woke; // main entities
+    // Bodies and manifolds that fell asleep, as they rest (applied from every message).
+    std::vector<body_state> rested;
+    std::vector<std::pair<entity, contact_manifold>> rested_manifolds;
+    edyn::constraint_states rested_constraints;
     std::vector<main_reply> replies;
     std::vector<std::exception_ptr> errors;
     bool stepped{false};
+    // Whether `bodies` (and `slept`'s motion), and `manifolds` and `constraints`, were filled.
+    bool has_motion{false};
+    bool has_contacts{false};
     double simulation_time{0};
     std::uint64_t step_count{0};
     // Interpolation fraction for the present transforms, when the message ends an advance.
@@ -114,8 +123,8 @@ struct worker_message {
     std::uint64_t ops_applied{0};
 
     bool empty() const noexcept {
-        return mapped.empty() && records.empty() && replies.empty() && errors.empty() && !stepped &&
-               !has_alpha && slept.empty() && woke.empty();
+        return records.empty() && replies.empty() && errors.empty() && !stepped && !has_alpha &&
+               slept.empty() && woke.empty() && rested_manifolds.empty();
     }
 };
 

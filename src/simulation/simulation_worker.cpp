@@ -55,9 +55,7 @@ void on_point_destroyed(worker_context &w, entity m, contact_manifold::id_type i
     record_event(w, contact_events::kind::point_destroyed, m, id);
 }
 
-void on_construct_sleeping(worker_context &w, registry &reg, entity e) {
-    if (reg.all_of<remote_entity>(e)) w.slept.push_back(e);
-}
+void on_construct_sleeping(worker_context &w, registry &, entity e) { w.slept.push_back(e); }
 
 void on_destroy_sleeping(worker_context &w, registry &reg, entity e) {
     if (auto *remote = reg.try_get<remote_entity>(e)) w.message.woke.push_back(remote->value);
@@ -74,10 +72,24 @@ worker_context::worker_context() {
     reg.on_destroy<contact_manifold>().connect<&on_destroy_manifold>(*this);
     reg.on_construct<sleeping_tag>().connect<&on_construct_sleeping>(*this);
     reg.on_destroy<sleeping_tag>().connect<&on_destroy_sleeping>(*this);
-    on_contact_started(reg).connect<&on_started>(*this);
-    on_contact_ended(reg).connect<&on_ended>(*this);
-    on_contact_point_created(reg).connect<&on_point_created>(*this);
-    on_contact_point_destroyed(reg).connect<&on_point_destroyed>(*this);
+}
+
+void worker_context::send_events(bool on) {
+    if (on == sends_events) return;
+    sends_events = on;
+    // The narrowphase records events only while someone listens: connected only when the main
+    // side has listeners, so that a program without any pays nothing for them.
+    if (on) {
+        on_contact_started(reg).connect<&on_started>(*this);
+        on_contact_ended(reg).connect<&on_ended>(*this);
+        on_contact_point_created(reg).connect<&on_point_created>(*this);
+        on_contact_point_destroyed(reg).connect<&on_point_destroyed>(*this);
+    } else {
+        on_contact_started(reg).disconnect<&on_started>(*this);
+        on_contact_ended(reg).disconnect<&on_ended>(*this);
+        on_contact_point_created(reg).disconnect<&on_point_created>(*this);
+        on_contact_point_destroyed(reg).disconnect<&on_point_destroyed>(*this);
+    }
 }
 
 entity worker_context::local(entity main) {
@@ -104,19 +116,22 @@ void worker_context::advance(double time) {
     auto &world = reg.ctx().get<world_state>();
     auto &s = get_settings(reg);
     auto steps = take_due_steps(world, s, time);
+    // The main side interpolates between the last two steps' motion and shows the last one's
+    // contacts: steps before those send only their records (manifolds made and destroyed,
+    // events, sleeping).
     for (std::uint64_t i = 0; i < steps; ++i)
-        step();
+        step(i + 2 >= steps, i + 1 == steps);
     message.has_alpha = true;
     message.alpha = present_fraction(world, s);
 }
 
 void worker_context::step_once() {
-    step();
+    step(true, true);
     message.has_alpha = true;
     message.alpha = 1;
 }
 
-void worker_context::step() {
+void worker_context::step(bool motion, bool contacts) {
     try {
         run_step(reg);
     } catch (...) {
@@ -124,33 +139,41 @@ void worker_context::step() {
         // where it threw; the worker goes on with the next.
         message.errors.push_back(std::current_exception());
     }
-    snapshot();
-    finish_message();
-}
-
-void worker_context::snapshot() {
     auto &world = reg.ctx().get<world_state>();
     message.stepped = true;
     message.simulation_time = world.simulation_time;
     message.step_count = world.step_count;
+    if (motion) snapshot_motion();
+    if (contacts) snapshot_contacts();
+    finish_message();
+}
+
+void worker_context::snapshot_motion() {
+    message.has_motion = true;
     auto add_body = [&](entity, const remote_entity &remote, const position &pos, const orientation &orn,
                         const linvel &v, const angvel &w) {
         message.bodies.push_back({remote.value, pos, orn, v, w});
     };
     reg.view<remote_entity, position, orientation, linvel, angvel>(exclude<sleeping_tag, static_tag>)
         .each(add_body);
-    // Bodies that fell asleep in this step rest where the step left them.
-    for (auto e : slept) {
-        if (!reg.valid(e) || !reg.all_of<sleeping_tag, position, orientation, linvel, angvel>(e)) continue;
-        auto &remote = reg.get<remote_entity>(e);
-        add_body(e, remote, reg.get<position>(e), reg.get<orientation>(e), reg.get<linvel>(e),
-                 reg.get<angvel>(e));
-        message.slept.push_back(remote.value);
+}
+
+void worker_context::snapshot_contacts() {
+    message.has_contacts = true;
+    // A manifold goes to the main side when its points changed in this step (made, dropped,
+    // or the last one gone), and otherwise once every manifold_refresh_steps steps, each step
+    // taking its share: copying every manifold every step would cost the main thread more
+    // than the rest of update() together.
+    auto &world = reg.ctx().get<world_state>();
+    auto &pool = reg.storage<contact_manifold>();
+    for (std::size_t i = 0; i < world.manifolds.size(); ++i) {
+        auto e = world.manifolds[i];
+        if (!reg.valid(e) || !pool.contains(e)) continue;
+        auto &changes = world.manifold_changes[i];
+        auto changed = changes.num_created > 0 || changes.num_destroyed > 0;
+        auto due = (to_index(e) + world.step_count) % manifold_refresh_steps == 0;
+        if (changed || (due && pool.get(e).num_points > 0)) message.manifolds.emplace_back(e, pool.get(e));
     }
-    slept.clear();
-    reg.view<contact_manifold>(exclude<sleeping_tag>).each([&](entity e, const contact_manifold &manifold) {
-        message.manifolds.emplace_back(e, manifold);
-    });
     std::apply(
         [&](auto &...states) {
             auto add = [&](auto &list) {
@@ -166,19 +189,45 @@ void worker_context::snapshot() {
 }
 
 void worker_context::finish_message() {
+    // What fell asleep rests where it is now, and no later step will send it: its last state
+    // goes with every message, whatever the main side skips.
     for (auto e : slept) {
-        if (auto *remote = reg.try_get<remote_entity>(e); remote && reg.all_of<sleeping_tag>(e))
-            message.slept.push_back(remote->value);
+        if (!reg.valid(e) || !reg.all_of<sleeping_tag>(e)) continue;
+        if (auto *manifold = reg.try_get<contact_manifold>(e))
+            message.rested_manifolds.emplace_back(e, *manifold);
+        auto *remote = reg.try_get<remote_entity>(e);
+        if (!remote) continue;
+        message.slept.push_back(remote->value);
+        std::apply(
+            [&](auto &...lists) {
+                auto add = [&](auto &list) {
+                    using constraint = typename std::decay_t<decltype(list)>::value_type::second_type;
+                    if (auto *con = reg.try_get<constraint>(e)) list.emplace_back(remote->value, *con);
+                };
+                (add(lists), ...);
+            },
+            message.rested_constraints);
+        if (reg.all_of<position, orientation, linvel, angvel>(e)) {
+            message.rested.push_back({remote->value, reg.get<position>(e), reg.get<orientation>(e),
+                                      reg.get<linvel>(e), reg.get<angvel>(e)});
+        }
     }
     slept.clear();
     if (message.empty()) return;
     message.ops_applied = ops_applied;
-    ready.push_back(std::move(message));
+    publish(std::move(message));
     message = {};
 }
 
-simulation_worker::simulation_worker()
-    : thread([this] { run(); }) {}
+simulation_worker::simulation_worker() {
+    // Each message is handed over as soon as it is finished, so that the main side receives a
+    // step while the worker runs the next.
+    context.publish = [this](worker_message &&message) {
+        std::lock_guard lock(mutex);
+        outbox.push_back(std::move(message));
+    };
+    thread = std::thread([this] { run(); });
+}
 
 simulation_worker::~simulation_worker() {
     {
@@ -189,12 +238,13 @@ simulation_worker::~simulation_worker() {
     thread.join();
 }
 
-std::uint64_t simulation_worker::send(std::vector<worker_op> &ops) {
+std::uint64_t simulation_worker::send(std::vector<worker_op> &ops, std::optional<double> time) {
     std::uint64_t batch;
     {
         std::lock_guard lock(mutex);
         for (auto &op : ops)
             inbox.push_back(std::move(op));
+        if (time) target_time = time;
         batch = ++batches_sent;
     }
     ops.clear();
@@ -218,11 +268,14 @@ void simulation_worker::run() {
     std::vector<worker_op> ops;
     for (;;) {
         std::uint64_t batch;
+        std::optional<double> time;
         {
             std::unique_lock lock(mutex);
             work_arrived.wait(lock, [&] { return stopping || batches_sent > batches_done; });
             if (stopping) return;
             ops.swap(inbox);
+            time = target_time;
+            target_time.reset();
             batch = batches_sent;
         }
         for (auto &op : ops) {
@@ -234,14 +287,12 @@ void simulation_worker::run() {
             }
         }
         ops.clear();
+        if (time) context.advance(*time);
         context.finish_message();
         {
             std::lock_guard lock(mutex);
-            for (auto &m : context.ready)
-                outbox.push_back(std::move(m));
             batches_done = batch;
         }
-        context.ready.clear();
         batch_done.notify_all();
     }
 }

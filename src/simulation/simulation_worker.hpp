@@ -5,7 +5,9 @@
 #include "edyn/ecs/registry.hpp"
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -16,10 +18,13 @@ namespace edyn {
 struct worker_context {
     registry reg;
     entity_map to_worker;      // main entity -> worker entity
-    std::vector<entity> slept; // worker entities that fell asleep in this message
+    std::vector<entity> slept; // worker entities that fell asleep since the last message
     worker_message message;
-    std::vector<worker_message> ready; // finished messages, not yet handed over
+    // Hands a finished message to the main side (set by simulation_worker).
+    std::function<void(worker_message &&)> publish;
     std::uint64_t ops_applied{0};
+    // Whether collision events are recorded and sent (only while the main side listens).
+    bool sends_events{false};
 
     worker_context();
     worker_context(const worker_context &) = delete;
@@ -40,10 +45,15 @@ struct worker_context {
     void step_once();
     // Hands the message being filled over, if it holds anything.
     void finish_message();
+    // Starts or stops recording collision events for the main side.
+    void send_events(bool on);
 
 private:
-    void step();
-    void snapshot();
+    // Runs a step; `motion` sends every awake body's motion, `contacts` every awake manifold
+    // and constraint.
+    void step(bool motion, bool contacts);
+    void snapshot_motion();
+    void snapshot_contacts();
 };
 
 // The thread of execution_mode::asynchronous. The main thread sends batches of operations and
@@ -56,8 +66,12 @@ public:
     simulation_worker(const simulation_worker &) = delete;
     simulation_worker &operator=(const simulation_worker &) = delete;
 
-    // Queues `ops` (emptying it) as one batch; returns the batch's number.
-    std::uint64_t send(std::vector<worker_op> &ops);
+    // Queues `ops` (emptying it) as one batch, and, with `time`, asks for the steps due at that
+    // time to run after them; returns the batch's number. Batches that wait while the worker is
+    // busy are applied together, and only the latest time is stepped to: a worker that falls
+    // behind drops time (at most max_steps_per_update steps) as the sequential mode does,
+    // rather than queueing ever more work.
+    std::uint64_t send(std::vector<worker_op> &ops, std::optional<double> time = std::nullopt);
     // The messages finished so far, oldest first.
     std::vector<worker_message> receive();
     // Blocks until batch `batch` has been applied and its messages are ready.
@@ -70,6 +84,7 @@ private:
     std::condition_variable work_arrived;
     std::condition_variable batch_done;
     std::vector<worker_op> inbox;
+    std::optional<double> target_time;
     std::vector<worker_message> outbox;
     std::uint64_t batches_sent{0};
     std::uint64_t batches_done{0};

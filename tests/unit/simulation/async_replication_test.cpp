@@ -1,0 +1,496 @@
+// The asynchronous mode's two directions: what the main registry sends the worker (every kind of
+// component operation, entity-valued members, external components and entities, settings,
+// calls that read motion) and what comes back (motion, events, query replies), checked in the
+// worker's own registry through a step callback.
+#include <cmath>
+#include <edyn/edyn.hpp>
+#include <functional>
+#include <gtest/gtest.h>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace edyn;
+
+init_config async_config() { return init_config{execution_mode::asynchronous}; }
+
+// Components of the program's own.
+struct tag_value {
+    int value;
+};
+struct link_to {
+    entity target;
+};
+struct log_list {
+    std::vector<int> items;
+};
+
+} // namespace
+
+// link_to holds an entity: declared so that it is translated into the worker's.
+template<>
+struct edyn::entity_members<link_to> {
+    template<typename Fn>
+    static void each(link_to &link, Fn &&fn) {
+        fn(link.target);
+    }
+};
+
+// log_list grows in the worker instead of being replaced.
+template<>
+void edyn::merge_component<log_list>(log_list &current, const log_list &incoming) {
+    current.items.insert(current.items.end(), incoming.items.begin(), incoming.items.end());
+}
+
+namespace {
+
+// Runs in the worker after each step, on the worker's registry. The test thread sets it before
+// a step and reads what it wrote after wait_for_simulation, which orders both.
+std::function<void(registry &)> probe;
+void run_probe(registry &worker) {
+    if (probe) probe(worker);
+}
+
+struct async_world : ::testing::Test {
+    registry reg;
+
+    void SetUp() override {
+        attach(reg, async_config());
+        set_post_step_callback(reg, &run_probe);
+    }
+    void TearDown() override {
+        probe = nullptr;
+        detach(reg);
+    }
+    void step() {
+        step_simulation(reg);
+        wait_for_simulation(reg);
+    }
+    entity make_ground() {
+        rigidbody_def def;
+        def.kind = rigidbody_kind::rb_static;
+        def.shape = plane_shape{vector3_y, 0};
+        return make_rigidbody(reg, def);
+    }
+    entity make_ball(const vector3 &at, rigidbody_kind kind = rigidbody_kind::rb_dynamic) {
+        rigidbody_def def;
+        def.kind = kind;
+        def.mass = 2;
+        def.shape = sphere_shape{scalar(0.5)};
+        def.position = at;
+        return make_rigidbody(reg, def);
+    }
+    // The tag_value values the worker's registry holds, in view order.
+    std::vector<int> worker_values() {
+        std::vector<int> values;
+        probe = [&](registry &worker) {
+            values.clear();
+            for (auto e : worker.view<tag_value>())
+                values.push_back(worker.get<tag_value>(e).value);
+        };
+        step();
+        probe = nullptr;
+        return values;
+    }
+};
+
+TEST_F(async_world, external_components_follow_emplace_replace_patch_remove_and_destroy) {
+    register_external_components<tag_value>(reg);
+    auto ball = make_ball({0, 5, 0});
+    reg.emplace<tag_value>(ball, 7);
+    EXPECT_EQ(worker_values(), std::vector<int>{7});
+    reg.replace<tag_value>(ball, 8);
+    EXPECT_EQ(worker_values(), std::vector<int>{8});
+    reg.patch<tag_value>(ball, [](tag_value &t) { t.value = 9; });
+    EXPECT_EQ(worker_values(), std::vector<int>{9});
+    // Assigned in place, then announced with patch (the manual's way).
+    reg.get<tag_value>(ball).value = 10;
+    reg.patch<tag_value>(ball);
+    EXPECT_EQ(worker_values(), std::vector<int>{10});
+    reg.remove<tag_value>(ball);
+    EXPECT_EQ(worker_values(), std::vector<int>{});
+    reg.emplace<tag_value>(ball, 11);
+    EXPECT_EQ(worker_values(), std::vector<int>{11});
+
+    std::size_t bodies = 0;
+    probe = [&](registry &worker) { bodies = worker.view<rigidbody_tag>().size(); };
+    step();
+    EXPECT_EQ(bodies, 1u);
+    reg.destroy(ball);
+    EXPECT_EQ(worker_values(), std::vector<int>{});
+    probe = [&](registry &worker) { bodies = worker.view<rigidbody_tag>().size(); };
+    step();
+    EXPECT_EQ(bodies, 0u) << "the destroyed body is still in the worker";
+}
+
+TEST_F(async_world, components_on_entities_outside_the_simulation_stay_on_the_main_side) {
+    register_external_components<tag_value>(reg);
+    auto loose = reg.create();
+    reg.emplace<tag_value>(loose, 99);
+    // Held before the entity became a body: it travels when the entity does.
+    auto early = reg.create();
+    reg.emplace<tag_value>(early, 5);
+    rigidbody_def def;
+    def.shape = sphere_shape{1};
+    make_rigidbody(early, reg, def);
+    EXPECT_EQ(worker_values(), std::vector<int>{5});
+}
+
+TEST_F(async_world, components_registered_after_they_were_emplaced_are_sent) {
+    auto ball = make_ball({0, 5, 0});
+    reg.emplace<tag_value>(ball, 3);
+    step();
+    register_external_components<tag_value>(reg);
+    // Twice is harmless: one copy, one value.
+    register_external_components<tag_value>(reg);
+    EXPECT_EQ(worker_values(), std::vector<int>{3});
+}
+
+TEST_F(async_world, entity_valued_members_name_the_workers_entities) {
+    register_external_components<link_to>(reg);
+    make_ground();
+    auto anchor = make_ball({5, 1, 0}, rigidbody_kind::rb_static);
+    auto ball = make_ball({0, 5, 0});
+    reg.emplace<link_to>(ball, anchor);
+    vector3 seen{0, 0, 0};
+    bool found = false;
+    probe = [&](registry &worker) {
+        for (auto e : worker.view<link_to>()) {
+            auto target = worker.get<link_to>(e).target;
+            found = worker.valid(target) && worker.all_of<position>(target);
+            if (found) seen = worker.get<position>(target);
+        }
+    };
+    step();
+    ASSERT_TRUE(found) << "link_to names no body in the worker";
+    EXPECT_EQ(seen, (vector3{5, 1, 0})) << "link_to names another body in the worker";
+}
+
+TEST_F(async_world, merge_component_specialisations_decide_how_values_merge) {
+    register_external_components<log_list>(reg);
+    auto ball = make_ball({0, 5, 0});
+    reg.emplace<log_list>(ball, log_list{{1, 2}});
+    step();
+    reg.replace<log_list>(ball, log_list{{3}});
+    std::vector<int> items;
+    probe = [&](registry &worker) {
+        for (auto e : worker.view<log_list>())
+            items = worker.get<log_list>(e).items;
+    };
+    step();
+    EXPECT_EQ(items, (std::vector<int>{1, 2, 3}));
+}
+
+TEST_F(async_world, an_external_entity_joined_by_a_null_constraint_reaches_the_worker) {
+    register_external_components<tag_value>(reg);
+    auto ball = make_ball({0, 5, 0});
+    auto external = reg.create();
+    tag_external_entity(reg, external);
+    reg.emplace<tag_value>(external, 42);
+    make_constraint<null_constraint>(reg, ball, external);
+    EXPECT_EQ(worker_values(), std::vector<int>{42});
+    bool tagged = false;
+    probe = [&](registry &worker) {
+        for (auto e : worker.view<tag_value>())
+            tagged = worker.all_of<external_tag>(e) && !worker.all_of<rigidbody_tag>(e);
+    };
+    step();
+    EXPECT_TRUE(tagged);
+}
+
+TEST_F(async_world, settings_reach_the_worker) {
+    auto ball = make_ball({0, 5, 0});
+    set_gravity(reg, vector3_zero);
+    set_fixed_dt(reg, scalar(1) / 120);
+    set_solver_substeps(reg, 3);
+    material_base mixed;
+    mixed.friction = scalar(0.123);
+    insert_material_mixing(reg, 4, 5, mixed);
+    settings seen;
+    scalar mixed_friction = 0;
+    probe = [&](registry &worker) {
+        seen = get_settings(worker);
+        material a, b;
+        a.id = 4;
+        b.id = 5;
+        mixed_friction = get_mixed_material(worker, a, b).friction;
+    };
+    step();
+    EXPECT_EQ(seen.gravity, vector3_zero);
+    EXPECT_EQ(seen.fixed_dt, scalar(1) / 120);
+    EXPECT_EQ(seen.num_substeps, 3u);
+    EXPECT_EQ(mixed_friction, scalar(0.123));
+    EXPECT_EQ(reg.get<position>(ball), (vector3{0, 5, 0})) << "the ball fell without gravity";
+
+    // Paused, time passes and no step runs.
+    update(reg, 0);
+    wait_for_simulation(reg);
+    auto steps = get_step_count(reg);
+    set_paused(reg, true);
+    update(reg, 1);
+    wait_for_simulation(reg);
+    EXPECT_EQ(get_step_count(reg), steps);
+    set_paused(reg, false);
+    update(reg, 1 + 6.5 / 120);
+    wait_for_simulation(reg);
+    EXPECT_EQ(get_step_count(reg), steps + 6) << "six and a half steps of time at 120 Hz";
+}
+
+TEST_F(async_world, a_custom_collision_filter_runs_in_the_worker) {
+    make_ground();
+    auto ball = make_ball({0, scalar(0.6), 0});
+    set_should_collide(reg, [](const registry &, entity, entity) { return false; });
+    for (int i = 0; i < 30; ++i)
+        step_simulation(reg);
+    wait_for_simulation(reg);
+    EXPECT_LT(reg.get<position>(ball).y, 0) << "the filter let the ball land";
+}
+
+TEST_F(async_world, impulses_add_to_the_workers_velocity_not_the_main_copy) {
+    set_gravity(reg, vector3_zero);
+    auto ball = make_ball({0, 5, 0});
+    reg.replace<linvel>(ball, vector3{1, 0, 0});
+    // Shown at once on this side...
+    rigidbody_apply_impulse(reg, ball, {0, 4, 0}, vector3_zero);
+    EXPECT_EQ(reg.get<linvel>(ball), (vector3{1, 2, 0}));
+    // ...and applied once in the worker, on top of the velocity it has there.
+    step();
+    EXPECT_EQ(reg.get<linvel>(ball), (vector3{1, 2, 0}));
+    rigidbody_apply_impulse(reg, ball, {-2, 0, 0}, vector3_zero);
+    step();
+    EXPECT_EQ(reg.get<linvel>(ball), (vector3{0, 2, 0}));
+}
+
+TEST_F(async_world, a_teleport_is_not_undone_by_steps_run_before_it_arrived) {
+    auto ball = make_ball({0, 50, 0});
+    update(reg, 0);
+    // Steps asked for, then a teleport made before their results are back.
+    update(reg, 0.5);
+    reg.replace<position>(ball, vector3{10, 20, 0});
+    wait_for_simulation(reg);
+    // The worker may have run the steps before the teleport arrived (their motion is then
+    // dropped) or, when it took both at once, after it (from the new place): never on the old
+    // track.
+    auto p = reg.get<position>(ball);
+    EXPECT_EQ(p.x, 10) << "back on the old track at x = " << p.x;
+    EXPECT_LE(p.y, 20);
+    EXPECT_GT(p.y, scalar(19.8)) << "more than ten steps of fall from the new place";
+    EXPECT_EQ(reg.get<present_position>(ball).x, 10);
+    step();
+    EXPECT_EQ(reg.get<position>(ball).x, 10);
+    EXPECT_LT(reg.get<position>(ball).y, 20);
+}
+
+TEST_F(async_world, contact_events_fire_on_the_calling_thread_with_main_entities) {
+    make_ground();
+    auto ball = make_ball({0, 2, 0});
+    struct seen_event {
+        std::thread::id thread;
+        bool valid;
+        bool names_ball;
+        std::uint32_t points;
+    };
+    static std::vector<seen_event> seen;
+    seen.clear();
+    on_contact_started(reg).connect<[](registry &r, entity m) {
+        auto *manifold = r.try_get<contact_manifold>(m);
+        seen.push_back({std::this_thread::get_id(), manifold != nullptr,
+                        manifold && (manifold->body[0] == entity{1} || manifold->body[1] == entity{1}),
+                        manifold ? manifold->num_points : 0u});
+    }>(reg);
+    ASSERT_EQ(ball, entity{1});
+    for (int i = 0; i < 90; ++i)
+        step_simulation(reg);
+    wait_for_simulation(reg);
+    ASSERT_EQ(seen.size(), 1u);
+    EXPECT_EQ(seen[0].thread, std::this_thread::get_id());
+    EXPECT_TRUE(seen[0].valid);
+    EXPECT_TRUE(seen[0].names_ball);
+    EXPECT_GT(seen[0].points, 0u);
+}
+
+TEST_F(async_world, step_callbacks_run_on_the_worker_and_may_cast_rays_there) {
+    auto ground = make_ground();
+    std::thread::id thread;
+    bool hit = false;
+    probe = [&](registry &worker) {
+        thread = std::this_thread::get_id();
+        hit = raycast(worker, {0, 5, 0}, {0, -5, 0}).hit();
+    };
+    step();
+    EXPECT_NE(thread, std::this_thread::get_id());
+    EXPECT_TRUE(hit) << "the ray missed the ground";
+    (void)ground;
+}
+
+struct ray_catch {
+    int calls{0};
+    raycast_id_type id{0};
+    raycast_result result;
+};
+void keep_ray(ray_catch &c, raycast_id_type id, const raycast_result &result, vector3, vector3) {
+    ++c.calls;
+    c.id = id;
+    c.result = result;
+}
+
+// One scene built the same way in two registries, entity for entity.
+void build_scene(registry &r) {
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_static;
+    def.shape = plane_shape{vector3_y, 0};
+    make_rigidbody(r, def);
+    def.shape = box_shape{scalar(0.5), scalar(0.5), scalar(0.5)};
+    def.position = {0, scalar(0.5), 0};
+    make_rigidbody(r, def);
+    def.shape = sphere_shape{scalar(0.5)};
+    def.position = {3, scalar(0.5), 0};
+    make_rigidbody(r, def);
+}
+
+TEST(async_raycast, gives_the_hit_raycast_gives_in_the_sequential_mode) {
+    registry sequential;
+    attach(sequential, init_config{execution_mode::sequential});
+    build_scene(sequential);
+    registry async;
+    attach(async, async_config());
+    build_scene(async);
+
+    struct ray {
+        vector3 p0, p1;
+        std::vector<entity> ignore;
+    };
+    std::vector<ray> rays{{{scalar(0.2), 5, scalar(0.1)}, {scalar(0.2), -5, scalar(0.1)}, {}},
+                          {{-5, scalar(0.5), 0}, {5, scalar(0.5), 0}, {entity{1}}},
+                          {{3, 3, 2}, {3, scalar(0.5), 0}, {}},
+                          {{-3, 2, 0}, {-3, -2, 0}, {}},
+                          {{0, 5, 0}, {0, 10, 0}, {}}};
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        auto expected = raycast(sequential, rays[i].p0, rays[i].p1, rays[i].ignore);
+        ray_catch caught;
+        raycast_delegate_type delegate;
+        delegate.connect<&keep_ray>(caught);
+        auto id = raycast_async(async, rays[i].p0, rays[i].p1, delegate, rays[i].ignore);
+        EXPECT_EQ(caught.calls, 0) << "the reply came before an update";
+        wait_for_simulation(async);
+        ASSERT_EQ(caught.calls, 1) << "ray " << i;
+        EXPECT_EQ(caught.id, id);
+        EXPECT_EQ(caught.result.entity, expected.entity) << "ray " << i;
+        EXPECT_EQ(caught.result.fraction, expected.fraction) << "ray " << i;
+        EXPECT_EQ(caught.result.normal, expected.normal) << "ray " << i;
+        EXPECT_EQ(caught.result.info_var.index(), expected.info_var.index()) << "ray " << i;
+    }
+    detach(async);
+    detach(sequential);
+}
+
+TEST(async_raycast, replies_in_the_sequential_mode_at_the_next_update) {
+    registry reg;
+    attach(reg, init_config{execution_mode::sequential});
+    build_scene(reg);
+    ray_catch caught;
+    raycast_delegate_type delegate;
+    delegate.connect<&keep_ray>(caught);
+    raycast_async(reg, {0, 5, 0}, {0, -5, 0}, delegate);
+    EXPECT_EQ(caught.calls, 0);
+    update(reg, 0);
+    ASSERT_EQ(caught.calls, 1);
+    EXPECT_EQ(caught.result.entity, entity{1}) << "the box";
+}
+
+struct aabb_catch {
+    int calls{0};
+    query_aabb_result result;
+};
+void keep_aabb(aabb_catch &c, query_aabb_id_type, const query_aabb_result &result) {
+    ++c.calls;
+    c.result = result;
+}
+
+TEST(async_query_aabb, lists_the_bodies_whose_boxes_overlap_it) {
+    for (auto mode : {execution_mode::sequential, execution_mode::asynchronous}) {
+        registry reg;
+        attach(reg, init_config{mode});
+        build_scene(reg);
+        aabb_catch caught;
+        query_aabb_delegate_type delegate;
+        delegate.connect<&keep_aabb>(caught);
+        // Around the sphere only, then around everything above the ground's surface.
+        query_aabb_async(reg, AABB{{2, 0, -1}, {4, 1, 1}}, delegate);
+        update(reg, 0);
+        wait_for_simulation(reg);
+        ASSERT_EQ(caught.calls, 1);
+        EXPECT_EQ(caught.result.entities, (std::vector<entity>{entity{0}, entity{2}})) << "ground and sphere";
+        query_aabb_async(reg, AABB{{-10, 2, -10}, {10, 3, 10}}, delegate);
+        update(reg, 0);
+        wait_for_simulation(reg);
+        ASSERT_EQ(caught.calls, 2);
+        EXPECT_EQ(caught.result.entities, std::vector<entity>{}) << "nothing is that high";
+        detach(reg);
+    }
+}
+
+TEST(async_present, is_what_the_sequential_mode_presents_at_the_same_time) {
+    std::vector<vector3> presented[2];
+    std::vector<std::uint64_t> steps[2];
+    for (int m = 0; m < 2; ++m) {
+        registry reg;
+        attach(reg, init_config{m == 0 ? execution_mode::sequential : execution_mode::asynchronous});
+        build_scene(reg);
+        rigidbody_def def;
+        def.mass = 1;
+        def.shape = box_shape{scalar(0.3), scalar(0.3), scalar(0.3)};
+        def.position = {0, 4, 0};
+        def.angvel = {1, 2, 0};
+        auto box = make_rigidbody(reg, def);
+        // Uneven frames: 7, 23 and 41 ms.
+        double t = 10, frames[3] = {0.007, 0.023, 0.041};
+        for (int i = 0; i < 120; ++i) {
+            update(reg, t);
+            wait_for_simulation(reg);
+            presented[m].push_back(reg.get<present_position>(box));
+            steps[m].push_back(get_step_count(reg));
+            t += frames[i % 3];
+        }
+        detach(reg);
+    }
+    EXPECT_EQ(steps[0], steps[1]);
+    for (std::size_t i = 0; i < presented[0].size(); ++i) {
+        ASSERT_EQ(presented[0][i], presented[1][i])
+            << "frame " << i << ": sequential y = " << presented[0][i].y
+            << ", asynchronous y = " << presented[1][i].y;
+    }
+}
+
+TEST(async_bad_input, calls_that_need_attach_name_themselves) {
+    registry reg;
+    raycast_delegate_type ray_delegate;
+    query_aabb_delegate_type aabb_delegate;
+    auto expect_named = [](auto &&call, const std::string &name) {
+        try {
+            call();
+            ADD_FAILURE() << name << " accepted a registry that is not attached";
+        } catch (const std::invalid_argument &e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    };
+    expect_named([&] { raycast_async(reg, vector3_zero, vector3_y, ray_delegate); }, "raycast_async");
+    expect_named([&] { query_aabb_async(reg, AABB{}, aabb_delegate); }, "query_aabb_async");
+    expect_named([&] { register_external_components<tag_value>(reg); }, "register_external_components");
+
+    attach(reg, async_config());
+    expect_named([&] { raycast(reg, vector3_zero, vector3_y); }, "raycast_async");
+    auto nan = std::numeric_limits<scalar>::quiet_NaN();
+    expect_named([&] { raycast_async(reg, {nan, 0, 0}, vector3_y, ray_delegate); }, "raycast_async");
+    expect_named(
+        [&] {
+            query_aabb_async(reg, AABB{{1, 1, 1}, {0, 0, 0}}, aabb_delegate);
+        },
+        "query_aabb_async");
+    detach(reg);
+}
+
+} // namespace
