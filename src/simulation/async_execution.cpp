@@ -162,6 +162,25 @@ void connect_main_listeners(registry &registry, constraint_type_list<Constraints
     }
 }
 
+// Bodies and constraints made before attach() get the main side's bookkeeping too.
+template<typename... Constraints>
+void adopt_main_side(registry &registry, constraint_type_list<Constraints...>) {
+    std::vector<entity> entities;
+    for (auto e : registry.view<rigidbody_tag>())
+        entities.push_back(e);
+    for (auto e : entities)
+        on_construct_body(registry, e);
+    auto link_all = [&](auto *type) {
+        using constraint = std::remove_pointer_t<decltype(type)>;
+        entities.clear();
+        for (auto e : registry.view<constraint>())
+            entities.push_back(e);
+        for (auto e : entities)
+            on_construct_constraint<constraint>(registry, e);
+    };
+    (link_all(static_cast<Constraints *>(nullptr)), ...);
+}
+
 // The settings, filter and material table as they are now on the main side.
 worker_op settings_op(registry &registry) {
     auto s = get_settings(registry);
@@ -203,6 +222,10 @@ async_execution::async_execution(registry &registry)
     connect_main_listeners(registry, constraint_types{}, true);
     for (auto &type : types)
         type.connect(registry);
+}
+
+void async_execution::adopt_existing(registry &registry) {
+    adopt_main_side(registry, constraint_types{});
     // Entities made before attach(), type by type in the order above.
     for (auto &type : types) {
         std::vector<entity> entities;

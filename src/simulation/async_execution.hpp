@@ -28,6 +28,10 @@ public:
     explicit async_execution(registry &registry);
     ~async_execution() override;
 
+    // Sends the bodies, constraints and external entities made before attach() (once this
+    // object is in the registry's context, where the listeners find it).
+    void adopt_existing(registry &registry);
+
     void update(registry &registry, double time);
     void step_simulation(registry &registry);
     // Sends what is queued, waits until the worker has applied it and applies its messages.

@@ -5,6 +5,7 @@
 #include "pending_replies.hpp"
 #include "simulation_worker.hpp"
 #include <algorithm>
+#include <exception>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -36,8 +37,16 @@ void run_pending_replies(registry &registry) {
     if (!pending || pending->replies.empty()) return;
     auto replies = std::move(pending->replies);
     pending->replies.clear();
-    for (auto &reply : replies)
-        reply();
+    // Every delegate gets its reply; the first one that threw is rethrown afterwards.
+    std::exception_ptr error;
+    for (auto &reply : replies) {
+        try {
+            reply();
+        } catch (...) {
+            if (!error) error = std::current_exception();
+        }
+    }
+    if (error) std::rethrow_exception(error);
 }
 
 raycast_id_type raycast_async(registry &registry, const vector3 &p0, const vector3 &p1,

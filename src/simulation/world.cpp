@@ -101,7 +101,7 @@ void attach(registry &registry, const init_config &config) {
     registry.ctx().emplace<contact_events>();
     if (config.execution_mode == execution_mode::asynchronous) {
         // The simulation lives in the worker; this registry mirrors it.
-        registry.ctx().emplace<async_execution>(registry);
+        registry.ctx().emplace<async_execution>(registry).adopt_existing(registry);
         return;
     }
     connect_registry_listeners(registry);

@@ -351,6 +351,29 @@ void build_scene(registry &r) {
     make_rigidbody(r, def);
 }
 
+TEST(async_attach, bodies_and_constraints_made_before_attach_join_the_worker) {
+    registry reg;
+    rigidbody_def def;
+    def.mass = 1;
+    def.shape = sphere_shape{scalar(0.5)};
+    def.position = {0, 5, 0};
+    auto a = make_rigidbody(reg, def);
+    def.position = {2, 5, 0};
+    auto b = make_rigidbody(reg, def);
+    auto joint =
+        make_constraint<distance_constraint>(reg, a, b, [](distance_constraint &d) { d.distance = 2; });
+    attach(reg, async_config());
+    for (int i = 0; i < 30; ++i)
+        step_simulation(reg);
+    wait_for_simulation(reg);
+    EXPECT_LT(reg.get<position>(a).y, 5) << "the body made before attach did not fall";
+    EXPECT_NEAR(distance(reg.get<position>(a), reg.get<position>(b)), 2, 1e-3);
+    // The main side knows the joint belongs to its bodies.
+    reg.destroy(a);
+    EXPECT_FALSE(reg.valid(joint));
+    detach(reg);
+}
+
 TEST(async_raycast, gives_the_hit_raycast_gives_in_the_sequential_mode) {
     registry sequential;
     attach(sequential, init_config{execution_mode::sequential});
@@ -399,6 +422,38 @@ TEST(async_raycast, replies_in_the_sequential_mode_at_the_next_update) {
     update(reg, 0);
     ASSERT_EQ(caught.calls, 1);
     EXPECT_EQ(caught.result.entity, entity{1}) << "the box";
+}
+
+void throw_from_delegate(ray_catch &c, raycast_id_type, const raycast_result &, vector3, vector3) {
+    ++c.calls;
+    throw std::runtime_error("delegate failed");
+}
+
+TEST(async_raycast, a_delegate_that_throws_is_reported_by_update_and_the_others_still_reply) {
+    for (auto mode : {execution_mode::sequential, execution_mode::asynchronous}) {
+        registry reg;
+        attach(reg, init_config{mode});
+        build_scene(reg);
+        ray_catch thrower, keeper;
+        raycast_delegate_type throwing, keeping;
+        throwing.connect<&throw_from_delegate>(thrower);
+        keeping.connect<&keep_ray>(keeper);
+        raycast_async(reg, {0, 5, 0}, {0, -5, 0}, throwing);
+        raycast_async(reg, {0, 5, 0}, {0, -5, 0}, keeping);
+        try {
+            update(reg, 0);
+            wait_for_simulation(reg);
+            update(reg, 0);
+            ADD_FAILURE() << "the delegate's exception was swallowed";
+        } catch (const std::runtime_error &e) {
+            EXPECT_STREQ(e.what(), "delegate failed");
+        }
+        EXPECT_EQ(thrower.calls, 1);
+        EXPECT_EQ(keeper.calls, 1) << "the reply after the one that threw was lost";
+        // Reported once.
+        EXPECT_NO_THROW(update(reg, 0));
+        detach(reg);
+    }
 }
 
 struct aabb_catch {
