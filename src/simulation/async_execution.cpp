@@ -83,7 +83,8 @@ void on_destroy_body(registry &registry, entity e) {
 
 void on_construct_static(registry &registry, entity e) { registry.remove<previous_transform>(e); }
 void on_destroy_static(registry &registry, entity e) {
-    if (registry.all_of<rigidbody_tag>(e)) {
+    // An entity being destroyed may have lost its transform already (pools go newest first).
+    if (!registry.destroying(e) && registry.all_of<rigidbody_tag, position, orientation>(e)) {
         registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e),
                                                         registry.get<orientation>(e));
     }

@@ -104,7 +104,8 @@ struct worker_message {
     std::vector<std::pair<entity, contact_manifold>> manifolds;
     edyn::constraint_states constraints;
     std::vector<entity> slept, woke; // main entities
-    // Bodies and manifolds that fell asleep, as they rest (applied from every message).
+    // Bodies and manifolds that fell asleep (and bodies made static), as they rest: applied
+    // from every message.
     std::vector<body_state> rested;
     std::vector<std::pair<entity, contact_manifold>> rested_manifolds;
     edyn::constraint_states rested_constraints;
@@ -124,7 +125,7 @@ struct worker_message {
 
     bool empty() const noexcept {
         return records.empty() && replies.empty() && errors.empty() && !stepped && !has_alpha &&
-               slept.empty() && woke.empty() && rested_manifolds.empty();
+               slept.empty() && woke.empty() && rested.empty() && rested_manifolds.empty();
     }
 };
 

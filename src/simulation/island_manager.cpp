@@ -154,11 +154,10 @@ void island_manager::wake_island(registry &registry, entity island_entity) {
 
 void island_manager::wake_entity(registry &registry, entity e) {
     if (!registry.valid(e)) return;
-    if (auto *resident = registry.try_get<island_resident>(e)) {
-        wake_island(registry, resident->island_entity);
-    } else if (auto *timer = registry.try_get<sleep_timer>(e)) {
-        timer->time = 0;
-    }
+    if (auto *resident = registry.try_get<island_resident>(e)) wake_island(registry, resident->island_entity);
+    // Awake already, the body still starts its wait for sleep again: a change made just before
+    // its island would have slept (a new centre of mass, a push) must get the steps to act.
+    if (auto *timer = registry.try_get<sleep_timer>(e)) timer->time = 0;
 }
 
 void island_manager::put_to_sleep(registry &registry, entity island_entity) {

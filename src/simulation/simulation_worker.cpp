@@ -57,6 +57,9 @@ void on_point_destroyed(worker_context &w, entity m, contact_manifold::id_type i
 
 void on_construct_sleeping(worker_context &w, registry &, entity e) { w.slept.push_back(e); }
 
+// A body made static moves no more and no later step sends it: it goes once, as it stands.
+void on_construct_static(worker_context &w, registry &, entity e) { w.fixed.push_back(e); }
+
 void on_destroy_sleeping(worker_context &w, registry &reg, entity e) {
     if (auto *remote = reg.try_get<remote_entity>(e)) w.message.woke.push_back(remote->value);
 }
@@ -71,6 +74,7 @@ worker_context::worker_context() {
     reg.on_construct<contact_manifold>().connect<&on_construct_manifold>(*this);
     reg.on_destroy<contact_manifold>().connect<&on_destroy_manifold>(*this);
     reg.on_construct<sleeping_tag>().connect<&on_construct_sleeping>(*this);
+    reg.on_construct<static_tag>().connect<&on_construct_static>(*this);
     reg.on_destroy<sleeping_tag>().connect<&on_destroy_sleeping>(*this);
 }
 
@@ -213,6 +217,13 @@ void worker_context::finish_message() {
         }
     }
     slept.clear();
+    for (auto e : fixed) {
+        auto *remote = reg.valid(e) ? reg.try_get<remote_entity>(e) : nullptr;
+        if (!remote || !reg.all_of<static_tag, position, orientation, linvel, angvel>(e)) continue;
+        message.rested.push_back({remote->value, reg.get<position>(e), reg.get<orientation>(e),
+                                  reg.get<linvel>(e), reg.get<angvel>(e)});
+    }
+    fixed.clear();
     if (message.empty()) return;
     message.ops_applied = ops_applied;
     publish(std::move(message));

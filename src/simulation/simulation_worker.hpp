@@ -19,6 +19,7 @@ struct worker_context {
     registry reg;
     entity_map to_worker;      // main entity -> worker entity
     std::vector<entity> slept; // worker entities that fell asleep since the last message
+    std::vector<entity> fixed; // worker entities made static since the last message
     worker_message message;
     // Hands a finished message to the main side (set by simulation_worker).
     std::function<void(worker_message &&)> publish;
