@@ -72,4 +72,12 @@ void constraints_of(const registry &registry, entity body, std::vector<constrain
     }
 }
 
+void destroy_constraints_of(registry &registry, entity body) {
+    std::vector<constraint_ref> refs;
+    constraints_of(registry, body, refs);
+    for (auto &ref : refs) {
+        if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
+    }
+}
+
 } // namespace edyn

@@ -68,14 +68,6 @@ void on_construct_body(registry &registry, entity e) {
                                                         registry.get<orientation>(e));
 }
 
-void destroy_constraints_of(registry &registry, entity e) {
-    std::vector<constraint_ref> refs;
-    constraints_of(registry, e, refs);
-    for (auto &ref : refs) {
-        if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
-    }
-}
-
 void on_destroy_body(registry &registry, entity e) {
     destroy_constraints_of(registry, e);
     registry.remove<previous_transform>(e);

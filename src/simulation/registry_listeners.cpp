@@ -35,15 +35,6 @@ void on_construct_rigidbody(registry &registry, entity e) {
     if (registry.all_of<dynamic_tag>(e)) world(registry).islands.add_node(registry, e);
 }
 
-// A constraint does not outlive its bodies.
-void destroy_constraints_of(registry &registry, entity e) {
-    std::vector<constraint_ref> refs;
-    constraints_of(registry, e, refs);
-    for (auto &ref : refs) {
-        if (registry.valid(ref.constraint)) registry.destroy(ref.constraint);
-    }
-}
-
 void on_destroy_rigidbody(registry &registry, entity e) {
     destroy_constraints_of(registry, e);
     world(registry).islands.remove_node(registry, e);

@@ -42,6 +42,10 @@ struct constraint_ref {
 // Appends to `out` every constraint that has `body` as one of its bodies, newest first.
 void constraints_of(const registry &registry, entity body, std::vector<constraint_ref> &out);
 
+// Destroys every constraint that has `body` as one of its bodies (a constraint does not outlive
+// its bodies).
+void destroy_constraints_of(registry &registry, entity body);
+
 } // namespace edyn
 
 #endif // EDYN_CONSTRAINTS_CONSTRAINT_LINKS_HPP
