@@ -37,15 +37,4 @@ void validate_constraint_bodies(const registry &registry, const char *type, enti
     }
 }
 
-void tag_external_entity(registry &registry, entity e) {
-    if (!registry.valid(e)) {
-        throw std::invalid_argument("tag_external_entity: entity must be valid, got " + describe(e));
-    }
-    if (registry.all_of<rigidbody_tag>(e)) {
-        throw std::invalid_argument("tag_external_entity: " + describe(e) +
-                                    " is a rigid body, which is part of the simulation already");
-    }
-    if (!registry.all_of<external_tag>(e)) registry.emplace<external_tag>(e);
-}
-
 } // namespace edyn

@@ -18,6 +18,8 @@
 #include "edyn/simulation/world_state.hpp"
 #include "simulation_worker.hpp"
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace edyn {
 
@@ -485,6 +487,21 @@ void async_execution::apply_records(registry &registry, const std::vector<worker
             break;
         }
     }
+}
+
+void tag_external_entity(registry &registry, entity e) {
+    const char *function = "tag_external_entity";
+    if (!is_attached(registry))
+        throw std::invalid_argument(std::string(function) +
+                                    ": the registry is not attached (call edyn::attach first)");
+    if (!registry.valid(e))
+        throw std::invalid_argument(std::string(function) + ": entity must be valid, got " +
+                                    detail::describe(e));
+    if (registry.all_of<rigidbody_tag>(e)) {
+        throw std::invalid_argument(std::string(function) + ": " + detail::describe(e) +
+                                    " is a rigid body, which is part of the simulation already");
+    }
+    if (!registry.all_of<external_tag>(e)) registry.emplace<external_tag>(e);
 }
 
 namespace detail {

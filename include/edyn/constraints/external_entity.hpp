@@ -9,9 +9,7 @@ namespace edyn {
 // island with a null_constraint (so that it travels with it, e.g. to a simulation worker).
 struct external_tag {};
 
-// Marks `entity` as external. Throws std::invalid_argument for an invalid entity or a rigid
-// body (which is part of the simulation already).
-void tag_external_entity(registry &registry, entity entity);
+// tag_external_entity (simulation/replication.hpp) puts it on an entity.
 
 } // namespace edyn
 

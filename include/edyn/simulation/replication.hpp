@@ -117,6 +117,12 @@ void register_external_components(registry &registry) {
      ...);
 }
 
+// Marks `entity` as external (constraints/external_entity.hpp): joined to a rigid body with a
+// null_constraint, it and its registered components travel to the simulation worker. Throws
+// std::invalid_argument naming the function for a registry that is not attached, an invalid
+// entity or a rigid body (which is part of the simulation already).
+void tag_external_entity(registry &registry, entity entity);
+
 } // namespace edyn
 
 #endif // EDYN_SIMULATION_REPLICATION_HPP

@@ -535,6 +535,9 @@ TEST(async_bad_input, calls_that_need_attach_name_themselves) {
     expect_named([&] { raycast_async(reg, vector3_zero, vector3_y, ray_delegate); }, "raycast_async");
     expect_named([&] { query_aabb_async(reg, AABB{}, aabb_delegate); }, "query_aabb_async");
     expect_named([&] { register_external_components<tag_value>(reg); }, "register_external_components");
+    auto loose = reg.create();
+    expect_named([&] { tag_external_entity(reg, loose); }, "tag_external_entity");
+    EXPECT_FALSE(reg.all_of<external_tag>(loose));
 
     attach(reg, async_config());
     expect_named([&] { raycast(reg, vector3_zero, vector3_y); }, "raycast_async");
