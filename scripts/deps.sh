@@ -10,6 +10,8 @@ packages=(
   libbenchmark-dev
   libcli11-dev
   libbullet-dev gnuplot-nox
+  libenet-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -11,6 +11,7 @@
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/ecs/entity_map.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include <cstdint>
@@ -20,34 +21,6 @@
 #include <vector>
 
 namespace edyn {
-
-// Entities of one registry mapped to those of another, indexed by the source entity's index
-// (entities are dense, so this is an array look-up); a stale source (another version at that
-// index) maps to null.
-class entity_map {
-public:
-    entity find(entity source) const noexcept {
-        auto i = to_index(source);
-        if (i >= slots.size() || slots[i].source != source) return null;
-        return slots[i].target;
-    }
-    void insert(entity source, entity target) {
-        auto i = to_index(source);
-        if (i >= slots.size()) slots.resize(std::size_t(i) + 1);
-        slots[i] = {source, target};
-    }
-    void erase(entity source) noexcept {
-        auto i = to_index(source);
-        if (i < slots.size() && slots[i].source == source) slots[i] = {};
-    }
-
-private:
-    struct slot {
-        entity source{null};
-        entity target{null};
-    };
-    std::vector<slot> slots;
-};
 
 // On a worker entity made for a main entity: which one. Its removal (by an operation that
 // destroys the entity, or by a step callback) tells the main side the entity is gone.

@@ -3,6 +3,7 @@
 #include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/math/math.hpp"
+#include "edyn/simulation/discontinuity.hpp"
 #include <cmath>
 
 namespace edyn {
@@ -46,6 +47,11 @@ void interpolate_present_transforms(registry &registry, scalar alpha) {
     registry.view<position, orientation, present_position, present_orientation, sleeping_tag>().each(snap);
     registry.view<position, orientation, present_position, present_orientation>(exclude<previous_transform>)
         .each(snap);
+    registry.view<discontinuity, present_position, present_orientation>().each(
+        [](const discontinuity &d, present_position &present_pos, present_orientation &present_orn) {
+            present_pos = static_cast<const vector3 &>(present_pos) + d.position_offset;
+            present_orn = normalize(d.orientation_offset * present_orn);
+        });
 }
 
 } // namespace edyn

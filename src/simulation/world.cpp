@@ -10,6 +10,7 @@
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/worker_calls.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/interpolation.hpp"
 #include "edyn/simulation/registry_listeners.hpp"
@@ -190,6 +191,14 @@ void wait_for_simulation(registry &registry) {
 void update(registry &registry) {
     auto now = std::chrono::steady_clock::now().time_since_epoch();
     update(registry, std::chrono::duration<double>(now).count());
+}
+
+void wake_up_entity(registry &registry, entity e) {
+    if (!registry.valid(e))
+        invalid("wake_up_entity", "entity " + std::to_string(to_index(e)) + " is not valid");
+    call_here_and_in_worker(registry, e, [](edyn::registry &r, entity target) {
+        if (auto *w = r.ctx().find<world_state>()) w->islands.wake_entity(r, target);
+    });
 }
 
 void set_paused(registry &registry, bool paused) { world(registry).paused = paused; }

@@ -50,6 +50,10 @@ void step_simulation(registry &registry);
 // nothing to wait for and it returns at once.
 void wait_for_simulation(registry &registry);
 
+// Wakes the island of `entity` (a rigid body or a constraint) if it sleeps: for changes the
+// simulation cannot see, such as a component a step callback reads to push the body.
+void wake_up_entity(registry &registry, entity entity);
+
 void set_paused(registry &registry, bool paused);
 bool is_paused(const registry &registry);
 

@@ -1,0 +1,54 @@
+#ifndef EDYN_NETWORKING_CLIENT_HPP
+#define EDYN_NETWORKING_CLIENT_HPP
+
+#include "edyn/ecs/registry.hpp"
+#include "edyn/networking/packet/edyn_packet.hpp"
+
+namespace edyn {
+
+using network_client_packet_signal = sigh<void(const packet::edyn_packet &)>;
+using network_client_entity_signal = sigh<void(entity)>;
+
+// Makes `registry` (attached) a client: it instantiates what the server sends, sends its own
+// inputs and actions, and extrapolates the server's state, which arrives in the past, to the
+// present.
+void init_network_client(registry &registry);
+void deinit_network_client(registry &registry);
+
+// Packets for the server are handed to this signal:
+//   edyn::network_client_packet_sink(registry).connect<&send_to_server>();
+//   void send_to_server(const edyn::packet::edyn_packet &);
+sink<network_client_packet_signal> network_client_packet_sink(registry &registry);
+
+// Feeds a packet received from the server.
+void client_receive_packet(registry &registry, const packet::edyn_packet &packet);
+
+// Call before every update(): instantiates and destroys what the server said, merges finished
+// extrapolations (their corrections go into each body's discontinuity) and starts the next,
+// and sends a snapshot of the client's inputs and actions at its snapshot rate.
+void update_network_client(registry &registry);
+
+// The round-trip time to the server in seconds, from the transport.
+void set_network_client_round_trip_time(registry &registry, double rtt);
+// Snapshots sent to the server per second (default 30).
+void set_network_client_snapshot_rate(registry &registry, double rate);
+// In [0, 1): what fraction of a correction is still shown after one step (default 0.9).
+void set_network_client_discontinuity_decay_rate(registry &registry, scalar rate);
+
+// Waits until the extrapolation in progress, if any, has finished (the next
+// update_network_client merges it). For tools and tests that run frames faster than real time,
+// where a background job would otherwise always finish frames late.
+void wait_for_network_client(registry &registry);
+
+// The client's entity in the server, once the server said it (null before).
+entity get_network_client_entity(const registry &registry);
+// The local entity made for the server's entity `remote`, or null.
+entity client_local_entity(const registry &registry, entity remote);
+// The server's entity of the local entity `local`, or null.
+entity client_remote_entity(const registry &registry, entity local);
+// The server time the client is at: its inputs made now apply at this time in the server.
+double get_network_client_time(const registry &registry);
+
+} // namespace edyn
+
+#endif // EDYN_NETWORKING_CLIENT_HPP

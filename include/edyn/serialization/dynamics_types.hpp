@@ -1,0 +1,45 @@
+#ifndef EDYN_SERIALIZATION_DYNAMICS_TYPES_HPP
+#define EDYN_SERIALIZATION_DYNAMICS_TYPES_HPP
+
+// Serialization of materials and rigidbody_def: what a peer needs to make the same body with
+// make_rigidbody. Values are not checked beyond the enumerations and the shapes' own rebuilding
+// (shape_types.hpp); make_rigidbody validates the rest and throws, so a receiver calls it inside
+// try/catch.
+
+#include "edyn/dynamics/material.hpp"
+#include "edyn/dynamics/rigidbody_def.hpp"
+#include "edyn/serialization/enum_range.hpp"
+#include "edyn/serialization/math_types.hpp"
+#include "edyn/serialization/memory_archive.hpp"
+#include "edyn/serialization/shape_types.hpp"
+#include "edyn/serialization/std_types.hpp"
+
+namespace edyn {
+
+template<typename Archive>
+void serialize(Archive &archive, material_base &m) {
+    archive(m.friction, m.restitution, m.roll_friction, m.spin_friction, m.stiffness, m.damping);
+}
+
+template<typename Archive>
+void serialize(Archive &archive, material &m) {
+    archive(static_cast<material_base &>(m), m.id);
+}
+
+// Called directly by rigidbody_def's serializer: `archive(kind)` would bypass the range check.
+template<typename Archive>
+void serialize(Archive &archive, rigidbody_kind &kind) {
+    serialize_enum(archive, kind, rigidbody_kind::rb_kinematic);
+}
+
+template<typename Archive>
+void serialize(Archive &archive, rigidbody_def &def) {
+    serialize(archive, def.kind);
+    archive(def.mass, def.inertia, def.material, def.restitution, def.position, def.orientation, def.linvel,
+            def.angvel, def.gravity, def.shape, def.collision_group, def.collision_mask, def.center_of_mass,
+            def.sleeping_disabled);
+}
+
+} // namespace edyn
+
+#endif // EDYN_SERIALIZATION_DYNAMICS_TYPES_HPP

@@ -1,0 +1,262 @@
+#include "network_registry.hpp"
+#include "body_def.hpp"
+#include "edyn/constraints/constraints.hpp"
+#include "edyn/constraints/make_constraint.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/serialization/constraint_types.hpp"
+#include "edyn/serialization/dynamics_types.hpp"
+#include "edyn/serialization/shape_types.hpp"
+#include "edyn/simulation/world.hpp"
+#include "network_motion.hpp"
+#include <exception>
+
+namespace edyn {
+
+namespace {
+
+// Bodies are made with make_rigidbody on the receiving side, from a definition of the sender's.
+struct decoded_bodies : detail::typed_decoded_pool<rigidbody_def> {
+    void apply(registry &registry, const std::vector<entity> &entities,
+               const detail::entity_mapper &) override {
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            auto e = entities[positions[i]];
+            if (e == null || !registry.valid(e) || registry.all_of<rigidbody_tag>(e)) continue;
+            try {
+                make_rigidbody(e, registry, values[i]);
+            } catch (const std::exception &) {
+                // A definition this end refuses makes no body; the entity stays empty.
+            }
+        }
+    }
+};
+
+struct decoded_motion : detail::typed_decoded_pool<network_motion> {
+    void apply(registry &registry, const std::vector<entity> &entities,
+               const detail::entity_mapper &) override {
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            auto e = entities[positions[i]];
+            if (e == null || !registry.valid(e) || !registry.all_of<rigidbody_tag>(e)) continue;
+            auto &m = values[i];
+            registry.replace<position>(e, m.position);
+            registry.replace<orientation>(e, m.orientation);
+            if (!registry.all_of<static_tag>(e)) {
+                registry.replace<linvel>(e, m.linvel);
+                registry.replace<angvel>(e, m.angvel);
+            }
+        }
+    }
+};
+
+// Constraints are validated as make_constraint would, then set on the entity they came for.
+template<typename T>
+struct decoded_constraint : detail::typed_decoded_pool<T> {
+    void apply(registry &registry, const std::vector<entity> &entities,
+               const detail::entity_mapper &map) override {
+        for (std::size_t i = 0; i < this->positions.size(); ++i) {
+            auto e = entities[this->positions[i]];
+            if (e == null || !registry.valid(e) || registry.all_of<T>(e)) continue;
+            auto con = this->values[i];
+            if (map) map_entity_members(con, map);
+            try {
+                validate_constraint_bodies(registry, constraint_type_name<T>, con.body[0], con.body[1],
+                                           std::is_same_v<T, null_constraint>);
+                validate_constraint(con);
+            } catch (const std::exception &) {
+                continue;
+            }
+            registry.emplace<T>(e, con);
+        }
+    }
+};
+
+template<typename Pool, typename Value>
+std::unique_ptr<detail::decoded_pool> read_pool(const std::vector<std::uint8_t> &data,
+                                                std::size_t entity_count) {
+    auto pool = std::make_unique<Pool>();
+    auto archive = memory_input_archive(data.data(), data.size());
+    while (archive.remaining() > 0) {
+        if (entity_count == 0) return nullptr;
+        auto position = archive.read_size(entity_count - 1);
+        Value value{};
+        archive(value);
+        if (archive.failed() || pool->positions.size() >= entity_count) return nullptr;
+        pool->positions.push_back(std::uint32_t(position));
+        pool->values.push_back(std::move(value));
+    }
+    return pool;
+}
+
+detail::networked_type body_type() {
+    detail::networked_type t;
+    t.type = type_index<rigidbody_def>();
+    t.connect = [](registry &) {};
+    t.has = [](const registry &r, entity e) { return r.all_of<rigidbody_tag>(e); };
+    t.write = [](const registry &r, entity e, const detail::entity_mapper &, memory_output_archive &archive) {
+        archive(get_rigidbody_def(r, e));
+    };
+    t.read = &read_pool<decoded_bodies, rigidbody_def>;
+    return t;
+}
+
+void on_motion_change(registry &registry, entity e) {
+    if (auto *types = registry.ctx().find<network_registry>()) types->mark(type_index<network_motion>(), e);
+}
+
+detail::networked_type motion_type() {
+    detail::networked_type t;
+    t.type = type_index<network_motion>();
+    // The program moving a body, and a body falling asleep (its last pose must reach the
+    // clients, which stop receiving it then).
+    t.connect = [](registry &r) {
+        r.on_update<position>().connect<&on_motion_change>();
+        r.on_update<orientation>().connect<&on_motion_change>();
+        r.on_construct<sleeping_tag>().connect<&on_motion_change>();
+    };
+    t.has = [](const registry &r, entity e) {
+        return r.all_of<rigidbody_tag>(e) && !r.all_of<static_tag>(e);
+    };
+    t.write = [](const registry &r, entity e, const detail::entity_mapper &, memory_output_archive &archive) {
+        auto m =
+            network_motion{r.get<position>(e), r.get<orientation>(e), r.get<linvel>(e), r.get<angvel>(e)};
+        archive(m);
+    };
+    t.read = &read_pool<decoded_motion, network_motion>;
+    return t;
+}
+
+template<typename T>
+detail::networked_type constraint_type() {
+    auto t = detail::make_networked_type<T>();
+    // Constraints are sent whole when created; the solver's changes to them are its own.
+    t.connect = [](registry &) {};
+    t.read = &read_pool<decoded_constraint<T>, T>;
+    return t;
+}
+
+template<typename... Ts>
+void add_constraint_types(std::vector<detail::networked_type> &types, constraint_type_list<Ts...>) {
+    (types.push_back(constraint_type<Ts>()), ...);
+}
+
+void forget_destroyed(registry &registry, entity e) {
+    if (auto *types = registry.ctx().find<network_registry>()) types->forget(e);
+}
+
+} // namespace
+
+void network_registry::mark(std::size_t type, entity e) {
+    if (muted) return;
+    auto index = this->index_of(type);
+    if (index < 0) return;
+    auto &list = changes[std::size_t(index)];
+    auto i = to_index(e);
+    if (i >= list.size()) list.resize(std::size_t(i) + 1);
+    list[i] = {e, now};
+}
+
+double network_registry::changed_at(std::uint16_t index, entity e) const noexcept {
+    auto &list = changes[index];
+    auto i = to_index(e);
+    if (i >= list.size() || list[i].e != e) return -std::numeric_limits<double>::infinity();
+    return list[i].time;
+}
+
+void network_registry::forget(entity e) {
+    for (auto &list : changes) {
+        auto i = to_index(e);
+        if (i < list.size() && list[i].e == e) list[i] = {};
+    }
+}
+
+network_registry &ensure_network_registry(registry &registry) {
+    if (auto *existing = registry.ctx().find<network_registry>()) return *existing;
+    auto &types = registry.ctx().emplace<network_registry>();
+    auto builtins = std::vector<detail::networked_type>{body_type(), motion_type()};
+    add_constraint_types(builtins, constraint_types{});
+    registry.on_destroy<networked_tag>().connect<&forget_destroyed>();
+    detail::register_networked_types(registry, std::move(builtins));
+    types.first_program_type = std::uint16_t(types.types.size());
+    return types;
+}
+
+void detail::register_networked_types(registry &registry, std::vector<networked_type> new_types) {
+    auto &types = ensure_network_registry(registry);
+    for (auto &t : new_types) {
+        if (types.index_of(t.type) >= 0) continue;
+        if (t.type >= types.index_of_type.size()) types.index_of_type.resize(t.type + 1, -1);
+        types.index_of_type[t.type] = int(types.types.size());
+        types.types.push_back(t);
+        types.changes.emplace_back();
+        t.connect(registry);
+    }
+}
+
+void detail::mark_network_change(registry &registry, std::size_t type, entity e) {
+    if (auto *types = registry.ctx().find<network_registry>()) types->mark(type, e);
+}
+
+std::optional<std::vector<std::unique_ptr<detail::decoded_pool>>>
+decode_pools(const network_registry &types, const std::vector<packet::pool_snapshot> &pools,
+             std::size_t entity_count) {
+    std::vector<std::unique_ptr<detail::decoded_pool>> decoded;
+    decoded.reserve(pools.size());
+    for (auto &pool : pools) {
+        if (pool.component_index >= types.types.size()) return std::nullopt;
+        auto d = types.types[pool.component_index].read(pool.data, entity_count);
+        if (!d) return std::nullopt;
+        d->component_index = pool.component_index;
+        decoded.push_back(std::move(d));
+    }
+    return decoded;
+}
+
+void apply_pools(registry &registry, const network_registry &types,
+                 const std::vector<std::unique_ptr<detail::decoded_pool>> &pools,
+                 const std::vector<entity> &entities, const detail::entity_mapper &map) {
+    for (auto &pool : pools)
+        pool->apply(registry, entities, map);
+    for (auto &pool : pools) {
+        auto &t = types.types[pool->component_index];
+        if (!t.input && !t.action) continue;
+        for (auto position : pool->positions) {
+            auto e = entities[position];
+            if (e != null && registry.valid(e) && registry.all_of<rigidbody_tag>(e))
+                wake_up_entity(registry, e);
+        }
+    }
+}
+
+std::uint32_t pool_writer::position_of(entity e) {
+    auto i = to_index(e);
+    if (i >= positions.size()) positions.resize(std::size_t(i) + 1, {null, 0});
+    if (positions[i].first != e) {
+        positions[i] = {e, std::uint32_t(entities.size())};
+        entities.push_back(map ? map(e) : e);
+    }
+    return positions[i].second;
+}
+
+void pool_writer::add(entity e, std::uint16_t index) {
+    if (index >= pool_data.size()) pool_data.resize(std::size_t(index) + 1);
+    auto position = position_of(e);
+    auto archive = memory_output_archive(pool_data[index]);
+    archive.write_size(position);
+    types->types[index].write(*source, e, map, archive);
+}
+
+void pool_writer::finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out) {
+    entities_out = std::move(entities);
+    for (std::size_t i = 0; i < pool_data.size(); ++i) {
+        if (pool_data[i].empty()) continue;
+        pools_out.push_back({std::uint16_t(i), std::move(pool_data[i])});
+    }
+    entities.clear();
+    positions.clear();
+    pool_data.clear();
+}
+
+} // namespace edyn

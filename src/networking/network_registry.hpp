@@ -1,0 +1,93 @@
+#ifndef EDYN_SRC_NETWORKING_NETWORK_REGISTRY_HPP
+#define EDYN_SRC_NETWORKING_NETWORK_REGISTRY_HPP
+
+// What a server or client registry knows about networked component types, in its context: the
+// list both ends share (edyn's own first, then the program's in registration order), and when
+// each entity's value of each type last changed.
+
+#include "edyn/networking/networked_components.hpp"
+#include "edyn/networking/packet/pool_snapshot.hpp"
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace edyn {
+
+// Indices of edyn's own types in the list.
+namespace network_index {
+inline constexpr std::uint16_t body = 0;   // rigidbody_def: creates the rigid body
+inline constexpr std::uint16_t motion = 1; // network_motion: transform and velocities, quantised
+inline constexpr std::uint16_t first_constraint = 2;
+} // namespace network_index
+
+struct network_registry {
+    std::vector<detail::networked_type> types;
+    // edyn's own types come first: the program's start here.
+    std::uint16_t first_program_type{0};
+    // Network index by type_index, or -1.
+    std::vector<int> index_of_type;
+    // Per network index, per entity index: the entity and the time its value last changed.
+    struct change {
+        entity e{null};
+        double time{-std::numeric_limits<double>::infinity()};
+    };
+    std::vector<std::vector<change>> changes;
+    // Simulation time changes are recorded at (set by the server's and client's updates).
+    double now{0};
+    // While set, changes are not recorded (values being applied from the other end).
+    bool muted{false};
+
+    int index_of(std::size_t type) const noexcept {
+        return type < index_of_type.size() ? index_of_type[type] : -1;
+    }
+    void mark(std::size_t type, entity e);
+    // When `e`'s value of `index` last changed (-inf when it never did).
+    double changed_at(std::uint16_t index, entity e) const noexcept;
+    void forget(entity e);
+};
+
+// The registry's network_registry, made (with edyn's own types, listeners connected) if needed.
+network_registry &ensure_network_registry(registry &registry);
+
+// Decodes every pool of a packet; empty when one is malformed or names an unknown type.
+std::optional<std::vector<std::unique_ptr<detail::decoded_pool>>>
+decode_pools(const network_registry &types, const std::vector<packet::pool_snapshot> &pools,
+             std::size_t entity_count);
+
+// Applies the pools in order, then wakes the bodies that received inputs or actions (a step
+// callback reads them to push the body, which the simulation cannot see).
+void apply_pools(registry &registry, const network_registry &types,
+                 const std::vector<std::unique_ptr<detail::decoded_pool>> &pools,
+                 const std::vector<entity> &entities, const detail::entity_mapper &map);
+
+// Builds the entity list and pools of a packet, one value at a time.
+class pool_writer {
+public:
+    pool_writer(const network_registry &types, const registry &registry, detail::entity_mapper map = {})
+        : types(&types)
+        , source(&registry)
+        , map(std::move(map)) {}
+    // Adds `e`'s value of the type at `index` (which it must have); `e` joins the entity list
+    // (translated by the map) the first time.
+    void add(entity e, std::uint16_t index);
+    // Puts `e` in the entity list without a value.
+    void include(entity e) { position_of(e); }
+    bool empty() const noexcept { return entities.empty(); }
+    void finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out);
+
+private:
+    std::uint32_t position_of(entity e);
+
+    const network_registry *types;
+    const registry *source;
+    detail::entity_mapper map;
+    std::vector<entity> entities;
+    std::vector<std::pair<entity, std::uint32_t>> positions; // by entity index
+    std::vector<std::vector<std::uint8_t>> pool_data;        // by network index
+};
+
+} // namespace edyn
+
+#endif // EDYN_SRC_NETWORKING_NETWORK_REGISTRY_HPP

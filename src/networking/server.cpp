@@ -1,0 +1,412 @@
+#include "edyn/networking/server.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/tags.hpp"
+#include "edyn/simulation/island.hpp"
+#include "edyn/simulation/world.hpp"
+#include "entity_set.hpp"
+#include "network_registry.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace edyn {
+
+namespace {
+
+// A change is sent in this many consecutive snapshots, so that one lost packet loses nothing.
+constexpr double change_repeats = 3;
+// A client's jitter buffer holds at most this many snapshots; a client sending faster than the
+// server applies loses its oldest ones.
+constexpr std::size_t max_buffered_snapshots = 128;
+// Most entities one entity_request may ask for.
+constexpr std::size_t max_requested_entities = 1024;
+
+struct buffered_snapshot {
+    double timestamp;
+    std::vector<entity> entities;
+    std::vector<std::unique_ptr<detail::decoded_pool>> pools;
+};
+
+// The server's record of a client, on its entity next to remote_client.
+struct server_client_state {
+    entity_set known;
+    std::vector<buffered_snapshot> jitter_buffer; // by timestamp
+    double last_applied{-std::numeric_limits<double>::infinity()};
+    double next_snapshot_time{0};
+    // Added to half the round trip to make the playout delay; grows when snapshots arrive late.
+    double playout_margin{-1};
+    double playout_sent{-1};
+};
+
+struct server_context {
+    network_server_packet_signal packet_signal;
+    std::vector<entity> destroyed;
+    packet::server_settings settings_sent{};
+    bool actions_pending{false};
+    std::uint64_t actions_step{0};
+};
+
+server_context &get_server(registry &registry, const char *function) {
+    auto *ctx = registry.ctx().find<server_context>();
+    if (!ctx)
+        throw std::invalid_argument(std::string(function) + ": the registry is not a network server "
+                                                            "(call init_network_server first)");
+    return *ctx;
+}
+
+remote_client &get_client(registry &registry, entity client, const char *function) {
+    auto *rc = registry.valid(client) ? registry.try_get<remote_client>(client) : nullptr;
+    if (!rc || !registry.all_of<server_client_state>(client))
+        throw std::invalid_argument(std::string(function) + ": entity " + std::to_string(to_index(client)) +
+                                    " is not a client made by server_make_client");
+    return *rc;
+}
+
+void send(registry &registry, server_context &ctx, entity client, packet::edyn_packet packet) {
+    registry.get<remote_client>(client).packets_sent += 1;
+    ctx.packet_signal.publish(client, packet);
+}
+
+void on_networked_destroyed(registry &registry, entity e) {
+    if (auto *ctx = registry.ctx().find<server_context>()) ctx->destroyed.push_back(e);
+}
+
+packet::server_settings current_settings(const registry &registry) {
+    auto &s = get_settings(registry);
+    return {s.fixed_dt,
+            s.gravity,
+            s.num_substeps,
+            s.num_relax_iterations,
+            s.num_restitution_iterations,
+            s.num_individual_restitution_iterations};
+}
+
+bool same_settings(const packet::server_settings &a, const packet::server_settings &b) {
+    return a.fixed_dt == b.fixed_dt && a.gravity == b.gravity && a.num_substeps == b.num_substeps &&
+           a.num_relax_iterations == b.num_relax_iterations &&
+           a.num_restitution_iterations == b.num_restitution_iterations &&
+           a.num_individual_restitution_iterations == b.num_individual_restitution_iterations;
+}
+
+bool owns(const remote_client &rc, entity e) {
+    return std::find(rc.owned_entities.begin(), rc.owned_entities.end(), e) != rc.owned_entities.end();
+}
+
+bool inside(const AABB &aabb, const vector3 &p) {
+    return p.x >= aabb.min.x && p.y >= aabb.min.y && p.z >= aabb.min.z && p.x <= aabb.max.x &&
+           p.y <= aabb.max.y && p.z <= aabb.max.z;
+}
+
+void recentre_on_owned(registry &registry, remote_client &rc) {
+    if (!rc.aabb_follows_owned) return;
+    auto sum = vector3_zero;
+    auto count = 0;
+    for (auto e : rc.owned_entities) {
+        if (!registry.valid(e)) continue;
+        if (auto *pos = registry.try_get<position>(e)) {
+            sum = sum + *pos;
+            ++count;
+        }
+    }
+    if (count == 0) return;
+    auto centre = sum / scalar(count);
+    auto half = (rc.aabb_of_interest.max - rc.aabb_of_interest.min) * scalar(0.5);
+    rc.aabb_of_interest = {centre - half, centre + half};
+}
+
+// Adds `e` and, for a body in an island, the whole island: its bodies and the networked
+// constraints among them, and the bodies those constraints hold.
+void add_with_island(const registry &registry, entity e, entity_set &out) {
+    out.insert(e);
+    auto *resident = registry.try_get<island_resident>(e);
+    if (!resident || !registry.valid(resident->island_entity)) return;
+    auto *isl = registry.try_get<island>(resident->island_entity);
+    if (!isl) return;
+    for (auto node : isl->nodes)
+        if (registry.all_of<networked_tag>(node)) out.insert(node);
+    for (auto edge : isl->edges) {
+        if (!registry.all_of<networked_tag>(edge)) continue;
+        out.insert(edge);
+        if (auto *ends = registry.try_get<island_edge>(edge)) {
+            for (auto body : ends->body)
+                if (registry.valid(body) && registry.all_of<networked_tag>(body)) out.insert(body);
+        }
+    }
+}
+
+// Networked entities the client should have: static bodies everywhere (they are few and never
+// move), and the islands of the others whose position is in its AABB of interest.
+void collect_interest(const registry &registry, const AABB &aabb, entity_set &out) {
+    for (auto e : registry.view<networked_tag, static_tag>())
+        out.insert(e);
+    for (auto [e, pos] : registry.view<networked_tag, position>(exclude<static_tag>).each()) {
+        if (inside(aabb, pos) && !out.contains(e)) add_with_island(registry, e, out);
+    }
+}
+
+void send_create(registry &registry, server_context &ctx, const network_registry &types, entity client,
+                 const std::vector<entity> &entities) {
+    if (entities.empty()) return;
+    auto writer = pool_writer(types, registry);
+    for (auto e : entities) {
+        writer.include(e);
+        for (std::uint16_t i = 0; i < types.types.size(); ++i) {
+            auto &t = types.types[i];
+            if (i == network_index::motion || t.action) continue;
+            if (t.has(registry, e)) writer.add(e, i);
+        }
+    }
+    auto create = packet::create_entity{};
+    create.timestamp = get_simulation_time(registry);
+    writer.finish(create.entities, create.pools);
+    send(registry, ctx, client, {std::move(create)});
+}
+
+void update_interest(registry &registry, server_context &ctx, const network_registry &types, entity client,
+                     remote_client &rc, server_client_state &state) {
+    recentre_on_owned(registry, rc);
+    auto interest = entity_set{};
+    collect_interest(registry, rc.aabb_of_interest, interest);
+    // Owned entities are always the client's, wherever they are.
+    for (auto e : rc.owned_entities)
+        if (registry.valid(e) && registry.all_of<networked_tag>(e)) add_with_island(registry, e, interest);
+
+    auto exited = packet::entity_exited{};
+    for (auto e : state.known.entities())
+        if (!interest.contains(e)) exited.entities.push_back(e);
+    for (auto e : exited.entities)
+        state.known.erase(e);
+    if (!exited.entities.empty()) send(registry, ctx, client, {std::move(exited)});
+
+    auto entered = std::vector<entity>{};
+    for (auto e : interest.entities())
+        if (state.known.insert(e)) entered.push_back(e);
+    send_create(registry, ctx, types, client, entered);
+}
+
+bool moving(const registry &registry, entity e) { return !registry.any_of<sleeping_tag, static_tag>(e); }
+
+void send_snapshot(registry &registry, server_context &ctx, const network_registry &types, entity client,
+                   const remote_client &rc, const server_client_state &state) {
+    auto now = get_simulation_time(registry);
+    auto since = now - change_repeats / std::max(rc.snapshot_rate, 1e-3);
+    auto writer = pool_writer(types, registry);
+    auto &motion = types.types[network_index::motion];
+    for (auto e : state.known.entities()) {
+        if (!registry.valid(e)) continue;
+        if (motion.has(registry, e) &&
+            (moving(registry, e) || types.changed_at(network_index::motion, e) >= since))
+            writer.add(e, network_index::motion);
+        for (auto i = types.first_program_type; i < types.types.size(); ++i) {
+            auto &t = types.types[i];
+            if (!t.action && t.has(registry, e) && types.changed_at(i, e) >= since) writer.add(e, i);
+        }
+    }
+    auto snapshot = packet::registry_snapshot{};
+    snapshot.timestamp = now;
+    writer.finish(snapshot.entities, snapshot.pools);
+    send(registry, ctx, client, {std::move(snapshot)});
+}
+
+void update_playout_delay(registry &registry, server_context &ctx, entity client, remote_client &rc,
+                          server_client_state &state) {
+    auto dt = double(get_fixed_dt(registry));
+    if (state.playout_margin < 0) state.playout_margin = 2 * dt;
+    rc.playout_delay = rc.round_trip_time / 2 + state.playout_margin;
+    if (std::abs(rc.playout_delay - state.playout_sent) > 0.001) {
+        state.playout_sent = rc.playout_delay;
+        send(registry, ctx, client, {packet::set_playout_delay{rc.playout_delay}});
+    }
+}
+
+// Applies the client's snapshots that are due, in time order.
+bool apply_due_snapshots(registry &registry, server_client_state &state, double now) {
+    auto applied_actions = false;
+    auto &types = registry.ctx().get<network_registry>();
+    auto due = std::size_t{0};
+    while (due < state.jitter_buffer.size() && state.jitter_buffer[due].timestamp <= now)
+        ++due;
+    for (std::size_t i = 0; i < due; ++i) {
+        auto &snapshot = state.jitter_buffer[i];
+        apply_pools(registry, types, snapshot.pools, snapshot.entities, {});
+        for (auto &pool : snapshot.pools)
+            applied_actions |= types.types[pool->component_index].action;
+        state.last_applied = snapshot.timestamp;
+    }
+    state.jitter_buffer.erase(state.jitter_buffer.begin(), state.jitter_buffer.begin() + std::ptrdiff_t(due));
+    return applied_actions;
+}
+
+void receive_snapshot(registry &registry, entity client, remote_client &rc, server_client_state &state,
+                      const packet::registry_snapshot &snapshot) {
+    if (!std::isfinite(snapshot.timestamp)) {
+        rc.rejected.malformed += 1;
+        return;
+    }
+    for (auto e : snapshot.entities) {
+        if (!state.known.contains(e)) {
+            rc.rejected.unknown_entity += 1;
+            return;
+        }
+    }
+    auto &types = registry.ctx().get<network_registry>();
+    auto pools = decode_pools(types, snapshot.pools, snapshot.entities.size());
+    if (!pools) {
+        rc.rejected.malformed += 1;
+        return;
+    }
+    for (auto &pool : *pools) {
+        auto &t = types.types[pool->component_index];
+        if (!t.input && !t.action) {
+            rc.rejected.not_input += 1;
+            return;
+        }
+        for (auto position : pool->positions) {
+            if (!owns(rc, snapshot.entities[position])) {
+                rc.rejected.not_owned += 1;
+                return;
+            }
+        }
+    }
+    if (snapshot.timestamp <= state.last_applied) {
+        // Inputs are state: an older one must not undo a newer one. Actions in it are repeated
+        // in the newer snapshots.
+        rc.rejected.late += 1;
+        return;
+    }
+    auto now = get_simulation_time(registry);
+    if (snapshot.timestamp < now) {
+        rc.rejected.late += 1;
+        auto &margin = state.playout_margin;
+        auto dt = double(get_fixed_dt(registry));
+        margin = std::min(margin + dt / 4, 10 * dt);
+    }
+    auto &buffer = state.jitter_buffer;
+    auto at = std::upper_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
+                               [](double t, const buffered_snapshot &s) { return t < s.timestamp; });
+    buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools)});
+    if (buffer.size() > max_buffered_snapshots) buffer.erase(buffer.begin());
+    (void)client;
+}
+
+} // namespace
+
+void init_network_server(registry &registry) {
+    if (!is_attached(registry))
+        throw std::invalid_argument(
+            "init_network_server: the registry is not attached (call edyn::attach first)");
+    if (registry.ctx().contains<server_context>()) return;
+    ensure_network_registry(registry);
+    auto &ctx = registry.ctx().emplace<server_context>();
+    ctx.settings_sent = current_settings(registry);
+    registry.on_destroy<networked_tag>().connect<&on_networked_destroyed>();
+}
+
+void deinit_network_server(registry &registry) {
+    if (!registry.ctx().contains<server_context>()) return;
+    registry.on_destroy<networked_tag>().disconnect<&on_networked_destroyed>();
+    registry.clear<server_client_state>();
+    registry.ctx().erase<server_context>();
+}
+
+sink<network_server_packet_signal> network_server_packet_sink(registry &registry) {
+    return sink{get_server(registry, "network_server_packet_sink").packet_signal};
+}
+
+entity server_make_client(registry &registry) {
+    auto &ctx = get_server(registry, "server_make_client");
+    auto client = registry.create();
+    registry.emplace<remote_client>(client);
+    auto &state = registry.emplace<server_client_state>(client);
+    state.next_snapshot_time = get_simulation_time(registry);
+    send(registry, ctx, client, {packet::client_created{client}});
+    send(registry, ctx, client, {current_settings(registry)});
+    update_playout_delay(registry, ctx, client, registry.get<remote_client>(client), state);
+    return client;
+}
+
+void server_set_client_round_trip_time(registry &registry, entity client, double rtt) {
+    auto &rc = get_client(registry, client, "server_set_client_round_trip_time");
+    if (!(rtt >= 0) || !std::isfinite(rtt))
+        throw std::invalid_argument("server_set_client_round_trip_time: rtt must be finite and >= 0, got " +
+                                    std::to_string(rtt));
+    rc.round_trip_time = rtt;
+}
+
+void server_receive_packet(registry &registry, entity client, const packet::edyn_packet &packet) {
+    auto &ctx = get_server(registry, "server_receive_packet");
+    auto &rc = get_client(registry, client, "server_receive_packet");
+    auto &state = registry.get<server_client_state>(client);
+    std::visit(
+        [&](const auto &p) {
+            using T = std::decay_t<decltype(p)>;
+            if constexpr (std::is_same_v<T, packet::registry_snapshot>) {
+                receive_snapshot(registry, client, rc, state, p);
+            } else if constexpr (std::is_same_v<T, packet::time_request>) {
+                send(registry, ctx, client, {packet::time_response{p.id, get_simulation_time(registry)}});
+            } else if constexpr (std::is_same_v<T, packet::entity_request>) {
+                if (p.entities.size() > max_requested_entities) {
+                    rc.rejected.malformed += 1;
+                    return;
+                }
+                auto entities = std::vector<entity>{};
+                for (auto e : p.entities) {
+                    if (!state.known.contains(e)) {
+                        rc.rejected.unknown_entity += 1;
+                        return;
+                    }
+                    if (registry.valid(e)) entities.push_back(e);
+                }
+                send_create(registry, ctx, registry.ctx().get<network_registry>(), client, entities);
+            } else {
+                // Entities, settings and clocks are the server's to send.
+                rc.rejected.not_input += 1;
+            }
+        },
+        packet.var);
+}
+
+void update_network_server(registry &registry) {
+    auto &ctx = get_server(registry, "update_network_server");
+    auto &types = registry.ctx().get<network_registry>();
+    auto now = get_simulation_time(registry);
+    types.now = now;
+
+    // Actions delivered last time were consumed by the steps run since.
+    if (ctx.actions_pending && get_step_count(registry) > ctx.actions_step) {
+        for (auto &t : types.types)
+            if (t.clear_actions) t.clear_actions(registry, false);
+        ctx.actions_pending = false;
+    }
+
+    auto settings = current_settings(registry);
+    auto settings_changed = !same_settings(settings, ctx.settings_sent);
+    ctx.settings_sent = settings;
+
+    auto destroyed = std::move(ctx.destroyed);
+    ctx.destroyed.clear();
+
+    for (auto [client, rc, state] : registry.view<remote_client, server_client_state>().each()) {
+        if (settings_changed) send(registry, ctx, client, {settings});
+        if (!destroyed.empty()) {
+            auto packet = packet::destroy_entity{now, {}};
+            for (auto e : destroyed)
+                if (state.known.erase(e)) packet.entities.push_back(e);
+            if (!packet.entities.empty()) send(registry, ctx, client, {std::move(packet)});
+        }
+        if (apply_due_snapshots(registry, state, now)) {
+            ctx.actions_pending = true;
+            ctx.actions_step = get_step_count(registry);
+        }
+        update_playout_delay(registry, ctx, client, rc, state);
+        if (now >= state.next_snapshot_time) {
+            state.next_snapshot_time = now + 1 / std::max(rc.snapshot_rate, 1e-3) - 1e-9;
+            update_interest(registry, ctx, types, client, rc, state);
+            send_snapshot(registry, ctx, types, client, rc, state);
+        }
+    }
+}
+
+} // namespace edyn

@@ -1,0 +1,236 @@
+// What the server accepts from a client and what it sends it: actions exactly once under loss,
+// ownership and malformed packets, entities entering and leaving the AABB of interest, and
+// destroyed entities.
+#include "network_harness.hpp"
+#include <edyn/networking/networked_components.hpp>
+#include <edyn/networking/remote_client.hpp>
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace edyn;
+using edyn::test::net_client;
+using edyn::test::net_harness;
+
+struct steering : network_input {
+    scalar angle{0};
+};
+template<typename Archive>
+void serialize(Archive &archive, steering &s) {
+    archive(s.angle);
+}
+
+// A health value only the server changes: networked, not an input.
+struct health {
+    int value{100};
+};
+template<typename Archive>
+void serialize(Archive &archive, health &h) {
+    archive(h.value);
+}
+
+struct jump {
+    int id{0};
+};
+template<typename Archive>
+void serialize(Archive &archive, jump &j) {
+    archive(j.id);
+}
+
+// Every jump the server's steps consumed, by id.
+std::vector<int> jumps_seen;
+
+void consume_jumps(registry &registry) {
+    for (auto [e, list] : registry.view<action_list<jump>>().each())
+        for (auto &j : list.actions)
+            jumps_seen.push_back(j.id);
+}
+
+void setup(registry &registry) {
+    register_external_components<steering, health, action_list<jump>>(registry);
+    register_networked_components<steering, health>(registry, std::tuple<jump>{});
+}
+
+entity make_box(registry &registry, const vector3 &pos) {
+    auto def = rigidbody_def{};
+    def.shape = box_shape{{0.5, 0.5, 0.5}};
+    def.position = pos;
+    def.gravity = vector3_zero;
+    auto e = make_rigidbody(registry, def);
+    registry.emplace<networked_tag>(e);
+    return e;
+}
+
+TEST(network_rules, actions_reach_the_server_once_each_under_loss) {
+    net_harness h(&setup);
+    set_pre_step_callback(h.server, &consume_jumps);
+    jumps_seen.clear();
+    auto box = make_box(h.server, {0, 0, 0});
+    auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.25, .duplication = 0.1, .seed = 3});
+    h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
+    h.run(1);
+    auto local = client_local_entity(c.reg, box);
+    ASSERT_NE(local, entity{null});
+    auto next_id = 0;
+    h.run(3, [&] {
+        // A jump every fifth frame, two at once every so often.
+        if (int(h.time * 60) % 5 != 0) return;
+        auto &list = c.reg.get_or_emplace<action_list<jump>>(local);
+        list.actions.push_back({next_id++});
+        if (next_id % 7 == 0) list.actions.push_back({next_id++});
+    });
+    h.run(1);
+    auto expected = std::vector<int>(std::size_t(next_id));
+    for (int i = 0; i < next_id; ++i)
+        expected[std::size_t(i)] = i;
+    EXPECT_EQ(jumps_seen, expected) << jumps_seen.size() << " jumps seen by the server, " << next_id
+                                    << " made";
+    // The client's own lists are cleared after its steps too.
+    EXPECT_TRUE(c.reg.get<action_list<jump>>(local).actions.empty());
+}
+
+TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
+    net_harness h(&setup);
+    auto mine = make_box(h.server, {0, 0, 0});
+    auto theirs = make_box(h.server, {2, 0, 0});
+    h.server.emplace<health>(mine);
+    auto &c = h.add_client({.latency = 0.01});
+    auto &rc = h.server.get<remote_client>(c.server_entity);
+    rc.owned_entities.push_back(mine);
+    h.run(0.5);
+
+    auto send_raw = [&](const packet::edyn_packet &p) {
+        server_receive_packet(h.server, c.server_entity, p);
+        return h.server.get<remote_client>(c.server_entity).rejected;
+    };
+    // Builds a one-entity snapshot of `value` at network index `index`.
+    auto snapshot_of = [&](entity e, std::uint16_t index, auto value) {
+        auto snap = packet::registry_snapshot{};
+        snap.timestamp = get_simulation_time(h.server) + 0.05;
+        snap.entities = {e};
+        auto bytes = std::vector<std::uint8_t>{};
+        auto archive = memory_output_archive(bytes);
+        archive.write_size(0);
+        archive(value);
+        snap.pools.push_back({index, bytes});
+        return packet::edyn_packet{snap};
+    };
+    // The program's types follow edyn's own: steering is the first of them.
+    auto steering_index = std::uint16_t(0);
+    for (auto e : {mine}) {
+        // Find the index by sending the input on the owned entity: accepted.
+        for (std::uint16_t i = 0; i < 64 && steering_index == 0; ++i) {
+            auto before = h.server.get<remote_client>(c.server_entity).rejected;
+            auto after = send_raw(snapshot_of(e, i, steering{{}, 0.25f}));
+            if (after.total() == before.total()) steering_index = i;
+        }
+    }
+    ASSERT_NE(steering_index, 0) << "no index accepted a steering input";
+    h.run(0.2);
+    ASSERT_TRUE(h.server.all_of<steering>(mine));
+    EXPECT_FLOAT_EQ(h.server.get<steering>(mine).angle, 0.25f);
+
+    auto before = h.server.get<remote_client>(c.server_entity).rejected;
+    // An input on an entity it does not own.
+    auto r = send_raw(snapshot_of(theirs, steering_index, steering{{}, 1.0f}));
+    EXPECT_EQ(r.not_owned, before.not_owned + 1);
+    // A component that is not an input (health follows steering).
+    r = send_raw(snapshot_of(mine, std::uint16_t(steering_index + 1), health{1}));
+    EXPECT_EQ(r.not_input, before.not_input + 1);
+    // An entity the server never sent it.
+    r = send_raw(snapshot_of(entity{0xABCDE}, steering_index, steering{{}, 1.0f}));
+    EXPECT_EQ(r.unknown_entity, before.unknown_entity + 1);
+    // Malformed values: a truncated pool, and an unknown component index.
+    auto bad = snapshot_of(mine, steering_index, steering{{}, 1.0f});
+    std::get<packet::registry_snapshot>(bad.var).pools[0].data.pop_back();
+    r = send_raw(bad);
+    EXPECT_EQ(r.malformed, before.malformed + 1);
+    r = send_raw(snapshot_of(mine, 9999, steering{{}, 1.0f}));
+    EXPECT_EQ(r.malformed, before.malformed + 2);
+    // Packets only the server sends.
+    r = send_raw({packet::create_entity{}});
+    r = send_raw({packet::server_settings{}});
+    EXPECT_EQ(r.not_input, before.not_input + 3);
+
+    h.run(0.5);
+    EXPECT_FLOAT_EQ(h.server.get<steering>(mine).angle, 0.25f) << "a refused packet changed the server";
+    EXPECT_FALSE(h.server.all_of<steering>(theirs));
+    EXPECT_EQ(h.server.get<health>(mine).value, 100);
+}
+
+TEST(network_rules, random_bytes_never_crash_the_server) {
+    net_harness h(&setup);
+    auto mine = make_box(h.server, {0, 0, 0});
+    auto &c = h.add_client({.latency = 0.01});
+    h.server.get<remote_client>(c.server_entity).owned_entities.push_back(mine);
+    h.run(0.3);
+    auto rng = std::uint64_t{12345};
+    auto next = [&] {
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        return std::uint8_t(rng >> 56);
+    };
+    auto accepted = 0;
+    for (int i = 0; i < 20000; ++i) {
+        auto data = std::vector<std::uint8_t>(std::size_t(next() % 64));
+        for (auto &b : data)
+            b = next();
+        // Mostly snapshots, so that the pool decoding is reached.
+        if (!data.empty() && i % 2 == 0) data[0] = 0;
+        packet::edyn_packet p;
+        auto archive = memory_input_archive(data.data(), data.size());
+        archive(p);
+        if (archive.failed()) continue;
+        ++accepted;
+        server_receive_packet(h.server, c.server_entity, p);
+        if (i % 100 == 0) h.frame();
+    }
+    EXPECT_GT(accepted, 100);
+    h.run(0.5);
+    EXPECT_TRUE(h.server.valid(mine));
+}
+
+TEST(network_rules, islands_enter_and_leave_the_aabb_of_interest) {
+    net_harness h(&setup);
+    auto near_box = make_box(h.server, {0, 0, 0});
+    auto far_box = make_box(h.server, {100, 0, 5});
+    auto &c = h.add_client({.latency = 0.02});
+    auto &rc = h.server.get<remote_client>(c.server_entity);
+    rc.aabb_of_interest = {{-10, -10, -10}, {10, 10, 10}};
+    h.run(0.5);
+    EXPECT_NE(client_local_entity(c.reg, near_box), entity{null});
+    EXPECT_EQ(client_local_entity(c.reg, far_box), entity{null}) << "a body outside the AABB was sent";
+
+    // The far box flies in; the near one flies out (on another line).
+    h.server.replace<linvel>(far_box, vector3{-95, 0, 0});
+    h.server.replace<linvel>(near_box, vector3{100, 0, 0});
+    h.run(1.1);
+    EXPECT_NE(client_local_entity(c.reg, far_box), entity{null})
+        << "a body entering the AABB was not created";
+    auto near_local = client_local_entity(c.reg, near_box);
+    EXPECT_EQ(near_local, entity{null}) << "a body leaving the AABB was not destroyed";
+    auto bodies = 0;
+    for (auto e : c.reg.view<rigidbody_tag>())
+        bodies += e != null;
+    EXPECT_EQ(bodies, 1);
+}
+
+TEST(network_rules, destroyed_entities_are_destroyed_in_the_client) {
+    net_harness h(&setup);
+    auto a = make_box(h.server, {0, 0, 0});
+    auto b = make_box(h.server, {3, 0, 0});
+    h.server.emplace<health>(b, health{42});
+    auto &c = h.add_client({.latency = 0.02, .loss = 0.2, .seed = 9});
+    h.run(0.5);
+    auto local_a = client_local_entity(c.reg, a);
+    auto local_b = client_local_entity(c.reg, b);
+    ASSERT_NE(local_a, entity{null});
+    ASSERT_NE(local_b, entity{null});
+    EXPECT_EQ(c.reg.get<health>(local_b).value, 42);
+    h.server.patch<health>(b, [](health &hp) { hp.value = 7; });
+    h.server.destroy(a);
+    h.run(0.5);
+    EXPECT_FALSE(c.reg.valid(local_a));
+    EXPECT_EQ(c.reg.get<health>(local_b).value, 7) << "a change of a networked component did not arrive";
+}
+
+} // namespace

@@ -1,0 +1,154 @@
+// A server and clients over simulated links: entities reach the clients, the clients' views
+// converge on the server's, inputs and actions reach the server, and the server refuses what a
+// client does not own.
+#include "network_harness.hpp"
+#include <cmath>
+#include <edyn/networking/networked_components.hpp>
+#include <edyn/networking/remote_client.hpp>
+#include <gtest/gtest.h>
+#include <map>
+
+namespace {
+
+using namespace edyn;
+using edyn::test::net_client;
+using edyn::test::net_harness;
+
+// A client's input: a force on the body it owns, applied by the pre-step callback.
+struct thrust : network_input {
+    vector3 force{vector3_zero};
+};
+
+template<typename Archive>
+void serialize(Archive &archive, thrust &t) {
+    archive(t.force);
+}
+
+void apply_thrust(registry &registry) {
+    auto dt = get_fixed_dt(registry);
+    for (auto [e, t, v, m] : registry.view<thrust, linvel, mass>().each())
+        v += t.force * (dt / m.s);
+}
+
+void setup(registry &registry) {
+    register_external_components<thrust>(registry);
+    register_networked_components<thrust>(registry);
+    set_pre_step_callback(registry, &apply_thrust);
+}
+
+entity make_box(registry &registry, const vector3 &pos, const vector3 &vel = vector3_zero) {
+    auto def = rigidbody_def{};
+    def.mass = 10;
+    def.shape = box_shape{{0.5, 0.5, 0.5}};
+    def.position = pos;
+    def.linvel = vel;
+    auto e = make_rigidbody(registry, def);
+    registry.emplace<networked_tag>(e);
+    return e;
+}
+
+entity make_ground(registry &registry) {
+    auto def = rigidbody_def{};
+    def.kind = rigidbody_kind::rb_static;
+    def.shape = plane_shape{{0, 1, 0}, 0};
+    auto e = make_rigidbody(registry, def);
+    registry.emplace<networked_tag>(e);
+    return e;
+}
+
+// The server's positions by step, to compare a client's view with the server at the same time.
+struct server_history {
+    std::map<std::int64_t, std::map<entity, vector3>> by_step;
+    double dt;
+
+    void record(const registry &server) {
+        auto step = std::int64_t(std::llround(get_simulation_time(server) / dt));
+        auto &positions = by_step[step];
+        for (auto [e, pos] : server.view<position, networked_tag>().each())
+            positions[e] = pos;
+    }
+    const vector3 *at(double time, entity e) const {
+        auto it = by_step.find(std::int64_t(std::llround(time / dt)));
+        if (it == by_step.end()) return nullptr;
+        auto p = it->second.find(e);
+        return p == it->second.end() ? nullptr : &p->second;
+    }
+};
+
+TEST(network_session, entities_reach_the_client_with_their_shapes) {
+    net_harness h(&setup);
+    make_ground(h.server);
+    auto box = make_box(h.server, {0, 3, 0});
+    auto &c = h.add_client({.latency = 0.05});
+    h.run(1);
+    auto local = client_local_entity(c.reg, box);
+    ASSERT_NE(local, entity{null}) << "the box was not created in the client";
+    ASSERT_TRUE(c.reg.all_of<box_shape>(local));
+    EXPECT_EQ(c.reg.get<box_shape>(local).half_extents, (vector3{0.5, 0.5, 0.5}));
+    EXPECT_FLOAT_EQ(c.reg.get<mass>(local).s, 10);
+    auto grounds = 0;
+    for (auto e : c.reg.view<plane_shape>())
+        grounds += e != null;
+    EXPECT_EQ(grounds, 1);
+    EXPECT_EQ(get_network_client_entity(c.reg), c.server_entity);
+}
+
+TEST(network_session, client_view_converges_on_the_server_under_loss_and_jitter) {
+    net_harness h(&setup);
+    make_ground(h.server);
+    auto boxes = std::vector<entity>{};
+    for (int i = 0; i < 4; ++i)
+        boxes.push_back(make_box(h.server, {scalar(i * 2 - 3), scalar(1 + i), 0}, {scalar(1 - i), 2, 0}));
+    auto history = server_history{{}, get_fixed_dt(h.server)};
+    auto clients = std::vector<net_client *>{};
+    for (std::uint64_t i = 0; i < 3; ++i)
+        clients.push_back(&h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.1, .seed = i + 1}));
+
+    struct sample {
+        net_client *c;
+        double time;
+        entity e;
+        vector3 pos;
+    };
+    auto samples = std::vector<sample>{};
+    h.run(4, [&] {
+        history.record(h.server);
+        if (h.time < 1) return;
+        for (auto *c : clients)
+            for (auto e : boxes)
+                if (auto local = client_local_entity(c->reg, e); local != null)
+                    samples.push_back({c, get_network_client_time(c->reg), e, c->reg.get<position>(local)});
+    });
+    ASSERT_FALSE(samples.empty());
+    auto worst = scalar(0);
+    auto compared = 0;
+    for (auto &s : samples) {
+        auto *server_pos = history.at(s.time, s.e);
+        if (!server_pos) continue;
+        worst = std::max(worst, length(s.pos - *server_pos));
+        ++compared;
+    }
+    EXPECT_GT(compared, 1000);
+    EXPECT_LT(worst, scalar(0.05))
+        << "largest distance between a client's view and the server at the same time: " << worst << " m over "
+        << compared << " samples";
+}
+
+TEST(network_session, inputs_reach_the_server_under_loss) {
+    net_harness h(&setup);
+    make_ground(h.server);
+    auto box = make_box(h.server, {0, 0.5, 0});
+    auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.1, .seed = 5});
+    h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
+    h.run(1);
+    auto local = client_local_entity(c.reg, box);
+    ASSERT_NE(local, entity{null});
+    c.reg.emplace<thrust>(local, thrust{{}, {200, 0, 0}});
+    h.run(1);
+    EXPECT_TRUE(h.server.all_of<thrust>(box)) << "the input never reached the server";
+    EXPECT_GT(h.server.get<position>(box).x, scalar(1))
+        << "the server's box did not move under the client's thrust";
+    EXPECT_EQ(h.server.get<remote_client>(c.server_entity).rejected.total(), 0u);
+}
+
+} // namespace
