@@ -51,6 +51,7 @@
 #include "edyn/constraints/make_constraint.hpp"
 
 #include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/discontinuity.hpp"
 #include "edyn/simulation/execution_mode.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/raycast.hpp"
@@ -59,6 +60,18 @@
 #include "edyn/simulation/settings.hpp"
 #include "edyn/simulation/world.hpp"
 
+#include "edyn/networking/action_list.hpp"
+#include "edyn/networking/asset_ref.hpp"
+#include "edyn/networking/client.hpp"
+#include "edyn/networking/networked_components.hpp"
+#include "edyn/networking/networked_tag.hpp"
+#include "edyn/networking/packet/edyn_packet.hpp"
+#include "edyn/networking/remote_client.hpp"
+#include "edyn/networking/server.hpp"
+#include "edyn/networking/simulated_link.hpp"
+#include "edyn/serialization/math_types.hpp"
+#include "edyn/serialization/memory_archive.hpp"
+#include "edyn/serialization/std_types.hpp"
 #include "edyn/util/ragdoll.hpp"
 
 #endif // EDYN_EDYN_HPP

@@ -5,6 +5,7 @@
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/ecs/entity_map.hpp"
 #include "edyn/math/math.hpp"
+#include "edyn/networking/asset_ref.hpp"
 #include "edyn/networking/networked_tag.hpp"
 #include "edyn/parallel/background_job.hpp"
 #include "edyn/simulation/discontinuity.hpp"
@@ -39,6 +40,9 @@ struct client_context {
     entity client_entity{null};
     entity_map remote_to_local, local_to_remote;
     entity_set authored; // local entities whose inputs this client set
+    // Server entities of assets entered but not linked yet: instantiated by the program, never
+    // asked for.
+    entity_set unlinked_members;
 
     double round_trip_time{0};
     double snapshot_rate{30};
@@ -76,6 +80,16 @@ struct client_context {
     std::unique_ptr<background_job> job;
     std::unique_ptr<extrapolation_input> job_input;
     extrapolation_result job_result;
+};
+
+// The client's record of an asset the server sent, on the local asset entity.
+struct client_asset {
+    entity remote{null};
+    std::vector<std::pair<asset_index_type, entity>> members; // server entities
+    bool linked{false};
+    // The state the server sent for client_asset_ready, applied on linking.
+    bool has_state{false};
+    decoded_packet state;
 };
 
 client_context &get_client(registry &registry, const char *function) {
@@ -125,7 +139,12 @@ void destroy_local(registry &registry, client_context &ctx, const std::vector<en
         ctx.remote_to_local.erase(r);
         ctx.local_to_remote.erase(local);
         ctx.authored.erase(local);
-        if (registry.valid(local)) registry.destroy(local);
+        if (registry.valid(local)) {
+            if (auto *asset = registry.try_get<client_asset>(local))
+                for (auto &[index, member] : asset->members)
+                    ctx.unlinked_members.erase(member);
+            registry.destroy(local);
+        }
     }
 }
 
@@ -134,7 +153,7 @@ void receive_create(registry &registry, client_context &ctx, const packet::creat
     auto pools = decode_pools(types, create.pools, create.entities.size());
     if (!pools) return;
     for (auto r : create.entities) {
-        if (r == null || ctx.remote_to_local.find(r) != null) continue;
+        if (r == null || ctx.remote_to_local.find(r) != null || ctx.unlinked_members.contains(r)) continue;
         auto local = registry.create();
         registry.emplace<networked_tag>(local);
         ctx.remote_to_local.insert(r, local);
@@ -150,7 +169,7 @@ void request_unknown(registry &registry, client_context &ctx, const std::vector<
     auto now = get_simulation_time(registry);
     auto request = packet::entity_request{};
     for (auto r : remote) {
-        if (r == null || ctx.remote_to_local.find(r) != null) continue;
+        if (r == null || ctx.remote_to_local.find(r) != null || ctx.unlinked_members.contains(r)) continue;
         auto it =
             std::find_if(ctx.requested.begin(), ctx.requested.end(), [&](auto &p) { return p.first == r; });
         if (it != ctx.requested.end() && now - it->second < entity_request_interval) continue;
@@ -213,6 +232,34 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
     if (ctx.has_pending) carry_over_motion(ctx.pending, pending);
     ctx.pending = std::move(pending);
     ctx.has_pending = true;
+}
+
+void receive_entered(registry &registry, client_context &ctx, const packet::entity_entered &entered) {
+    for (auto &asset : entered.assets) {
+        if (asset.asset_entity == null || ctx.remote_to_local.find(asset.asset_entity) != null) continue;
+        auto local = registry.create();
+        registry.emplace<asset_ref>(local, asset_ref{asset.id, {}});
+        registry.emplace<client_asset>(local,
+                                       client_asset{asset.asset_entity, asset.members, false, false, {}});
+        ctx.remote_to_local.insert(asset.asset_entity, local);
+        ctx.local_to_remote.insert(local, asset.asset_entity);
+        for (auto &[index, remote] : asset.members)
+            ctx.unlinked_members.insert(remote);
+        ctx.entity_entered_signal.publish(local);
+    }
+}
+
+void receive_asset_state(registry &registry, client_context &ctx,
+                         const packet::asset_sync_response &response) {
+    auto local = ctx.remote_to_local.find(response.asset_entity);
+    if (local == null || !registry.valid(local) || !registry.all_of<client_asset>(local)) return;
+    auto &types = registry.ctx().get<network_registry>();
+    auto pools = decode_pools(types, response.pools, response.entities.size());
+    if (!pools) return;
+    auto &asset = registry.get<client_asset>(local);
+    asset.state = decoded_packet{response.timestamp, response.entities, std::move(*pools)};
+    asset.has_state = true;
+    ctx.instantiate_asset_signal.publish(local);
 }
 
 void receive_time(registry &registry, client_context &ctx, const packet::time_response &response) {
@@ -427,6 +474,10 @@ void client_receive_packet(registry &registry, const packet::edyn_packet &packet
                 destroy_local(registry, ctx, p.entities);
             } else if constexpr (std::is_same_v<T, packet::entity_exited>) {
                 destroy_local(registry, ctx, p.entities);
+            } else if constexpr (std::is_same_v<T, packet::entity_entered>) {
+                receive_entered(registry, ctx, p);
+            } else if constexpr (std::is_same_v<T, packet::asset_sync_response>) {
+                receive_asset_state(registry, ctx, p);
             } else if constexpr (std::is_same_v<T, packet::time_response>) {
                 receive_time(registry, ctx, p);
             } else if constexpr (std::is_same_v<T, packet::set_playout_delay>) {
@@ -524,6 +575,56 @@ entity client_local_entity(const registry &registry, entity remote) {
 
 entity client_remote_entity(const registry &registry, entity local) {
     return get_client(registry, "client_remote_entity").local_to_remote.find(local);
+}
+
+sink<network_client_entity_signal> network_client_entity_entered_sink(registry &registry) {
+    return sink{get_client(registry, "network_client_entity_entered_sink").entity_entered_signal};
+}
+
+sink<network_client_entity_signal> network_client_instantiate_asset_sink(registry &registry) {
+    return sink{get_client(registry, "network_client_instantiate_asset_sink").instantiate_asset_signal};
+}
+
+namespace {
+client_asset &get_client_asset(registry &registry, entity asset_entity, const char *function) {
+    if (!registry.valid(asset_entity) || !registry.all_of<client_asset, asset_ref>(asset_entity))
+        throw std::invalid_argument(std::string(function) + ": entity " +
+                                    std::to_string(to_index(asset_entity)) +
+                                    " is not an asset the server sent");
+    return registry.get<client_asset>(asset_entity);
+}
+} // namespace
+
+void client_link_asset(registry &registry, entity asset_entity) {
+    auto &ctx = get_client(registry, "client_link_asset");
+    auto &asset = get_client_asset(registry, asset_entity, "client_link_asset");
+    auto &ref = registry.get<asset_ref>(asset_entity);
+    for (auto &[index, remote] : asset.members) {
+        auto it = ref.entities.find(index);
+        ctx.unlinked_members.erase(remote);
+        if (it == ref.entities.end() || !registry.valid(it->second)) continue;
+        auto local = it->second;
+        if (auto previous = ctx.local_to_remote.find(local); previous != null)
+            ctx.remote_to_local.erase(previous);
+        ctx.remote_to_local.insert(remote, local);
+        ctx.local_to_remote.insert(local, remote);
+        registry.emplace_or_replace<networked_tag>(local);
+    }
+    asset.linked = true;
+    if (asset.has_state) {
+        auto &types = registry.ctx().get<network_registry>();
+        auto muted = muted_scope(types);
+        apply_pools(registry, types, asset.state.pools, to_local(ctx, asset.state.entities),
+                    remote_to_local_map(ctx));
+        asset.has_state = false;
+        asset.state = {};
+    }
+}
+
+void client_asset_ready(registry &registry, entity asset_entity) {
+    auto &ctx = get_client(registry, "client_asset_ready");
+    auto &asset = get_client_asset(registry, asset_entity, "client_asset_ready");
+    ctx.packet_signal.publish({packet::asset_sync{asset.remote}});
 }
 
 void wait_for_network_client(registry &registry) {

@@ -1,6 +1,9 @@
 #include "edyn/networking/server.hpp"
+#include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/tags.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/networking/asset_ref.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world.hpp"
 #include "entity_set.hpp"
@@ -146,6 +149,30 @@ void collect_interest(const registry &registry, const AABB &aabb, entity_set &ou
     }
 }
 
+// An asset travels whole: the asset entity and all its entities, when any of them is in.
+void add_assets(const registry &registry, entity_set &interest) {
+    auto assets = std::vector<entity>{};
+    for (auto e : interest.entities()) {
+        auto *member = registry.try_get<asset_member>(e);
+        if (member && registry.valid(member->asset_entity) &&
+            registry.all_of<asset_ref>(member->asset_entity))
+            assets.push_back(member->asset_entity);
+    }
+    for (auto asset : assets) {
+        if (!interest.insert(asset)) continue;
+        for (auto &[index, e] : registry.get<asset_ref>(asset).entities)
+            if (registry.valid(e)) interest.insert(e);
+    }
+}
+
+packet::entered_asset describe_asset(const registry &registry, entity asset) {
+    auto &ref = registry.get<asset_ref>(asset);
+    auto entered = packet::entered_asset{asset, ref.id, {}};
+    for (auto &[index, e] : ref.entities)
+        entered.members.emplace_back(index, e);
+    return entered;
+}
+
 void send_create(registry &registry, server_context &ctx, const network_registry &types, entity client,
                  const std::vector<entity> &entities) {
     if (entities.empty()) return;
@@ -172,6 +199,7 @@ void update_interest(registry &registry, server_context &ctx, const network_regi
     // Owned entities are always the client's, wherever they are.
     for (auto e : rc.owned_entities)
         if (registry.valid(e) && registry.all_of<networked_tag>(e)) add_with_island(registry, e, interest);
+    add_assets(registry, interest);
 
     auto exited = packet::entity_exited{};
     for (auto e : state.known.entities())
@@ -180,9 +208,18 @@ void update_interest(registry &registry, server_context &ctx, const network_regi
         state.known.erase(e);
     if (!exited.entities.empty()) send(registry, ctx, client, {std::move(exited)});
 
+    // Entities of assets are instantiated by the client from its copy of the asset.
     auto entered = std::vector<entity>{};
-    for (auto e : interest.entities())
-        if (state.known.insert(e)) entered.push_back(e);
+    auto entered_assets = packet::entity_entered{};
+    for (auto e : interest.entities()) {
+        if (!state.known.insert(e)) continue;
+        if (registry.all_of<asset_ref>(e)) {
+            entered_assets.assets.push_back(describe_asset(registry, e));
+        } else if (!registry.all_of<asset_member>(e)) {
+            entered.push_back(e);
+        }
+    }
+    if (!entered_assets.assets.empty()) send(registry, ctx, client, {std::move(entered_assets)});
     send_create(registry, ctx, types, client, entered);
 }
 
@@ -237,6 +274,42 @@ bool apply_due_snapshots(registry &registry, server_client_state &state, double 
     }
     state.jitter_buffer.erase(state.jitter_buffer.begin(), state.jitter_buffer.begin() + std::ptrdiff_t(due));
     return applied_actions;
+}
+
+// The state of an asset's entities, for a client that loaded the asset: the components each
+// entity was assigned with.
+void send_asset_state(registry &registry, server_context &ctx, entity client, remote_client &rc,
+                      const server_client_state &state, entity asset) {
+    if (!state.known.contains(asset) || !registry.valid(asset) || !registry.all_of<asset_ref>(asset)) {
+        rc.rejected.unknown_entity += 1;
+        return;
+    }
+    auto &types = registry.ctx().get<network_registry>();
+    auto writer = pool_writer(types, registry);
+    for (auto &[index, e] : registry.get<asset_ref>(asset).entities) {
+        if (!registry.valid(e)) continue;
+        writer.include(e);
+        auto *member = registry.try_get<asset_member>(e);
+        if (!member) continue;
+        auto indices = std::vector<std::uint16_t>{};
+        for (auto type : member->components) {
+            // The transform and velocities travel together, quantised.
+            auto i = types.index_of(type);
+            if (type == type_index<position>() || type == type_index<orientation>() ||
+                type == type_index<linvel>() || type == type_index<angvel>())
+                i = network_index::motion;
+            if (i >= 0 && types.types[std::size_t(i)].has(registry, e)) indices.push_back(std::uint16_t(i));
+        }
+        std::sort(indices.begin(), indices.end());
+        indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+        for (auto i : indices)
+            writer.add(e, i);
+    }
+    auto response = packet::asset_sync_response{};
+    response.timestamp = get_simulation_time(registry);
+    response.asset_entity = asset;
+    writer.finish(response.entities, response.pools);
+    send(registry, ctx, client, {std::move(response)});
 }
 
 void receive_snapshot(registry &registry, entity client, remote_client &rc, server_client_state &state,
@@ -346,6 +419,8 @@ void server_receive_packet(registry &registry, entity client, const packet::edyn
                 receive_snapshot(registry, client, rc, state, p);
             } else if constexpr (std::is_same_v<T, packet::time_request>) {
                 send(registry, ctx, client, {packet::time_response{p.id, get_simulation_time(registry)}});
+            } else if constexpr (std::is_same_v<T, packet::asset_sync>) {
+                send_asset_state(registry, ctx, client, rc, state, p.asset_entity);
             } else if constexpr (std::is_same_v<T, packet::entity_request>) {
                 if (p.entities.size() > max_requested_entities) {
                     rc.rejected.malformed += 1;

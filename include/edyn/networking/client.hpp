@@ -35,6 +35,24 @@ void set_network_client_snapshot_rate(registry &registry, double rate);
 // In [0, 1): what fraction of a correction is still shown after one step (default 0.9).
 void set_network_client_discontinuity_decay_rate(registry &registry, scalar rate);
 
+// Assets (networking/asset_ref.hpp). When an asset's entities enter the client's AABB of
+// interest, the client makes an entity for the asset, with an asset_ref holding its id, and
+// this signal gives it:
+//   edyn::network_client_entity_entered_sink(registry).connect<&on_entered>(registry);
+//   void on_entered(edyn::registry &, edyn::entity asset_entity);
+// The program instantiates the asset, assigns its entities to the asset entity with
+// assign_to_asset, and calls client_link_asset; snapshots keep them in step from then on. An
+// asset that takes time to load: call client_asset_ready once loaded; the server sends the
+// state of its entities, and network_client_instantiate_asset_sink's signal fires when it has
+// arrived: instantiate there, assign, and call client_link_asset, which applies that state.
+sink<network_client_entity_signal> network_client_entity_entered_sink(registry &registry);
+sink<network_client_entity_signal> network_client_instantiate_asset_sink(registry &registry);
+// Links the client's entities of the asset (assigned with assign_to_asset) to the server's.
+// Throws std::invalid_argument when `asset_entity` is not an asset the server sent.
+void client_link_asset(registry &registry, entity asset_entity);
+// Asks the server for the state of the asset's entities (see above).
+void client_asset_ready(registry &registry, entity asset_entity);
+
 // Waits until the extrapolation in progress, if any, has finished (the next
 // update_network_client merges it). For tools and tests that run frames faster than real time,
 // where a background job would otherwise always finish frames late.

@@ -45,9 +45,15 @@ struct net_harness {
     // and step callbacks.
     std::function<void(registry &)> setup;
 
-    explicit net_harness(std::function<void(registry &)> setup_fn = {})
-        : setup(std::move(setup_fn)) {
-        attach(server, init_config{execution_mode::sequential});
+    // The execution mode of every end. In asynchronous mode each update() is followed by
+    // wait_for_simulation, so that frames faster than real time still see their steps.
+    execution_mode mode;
+
+    explicit net_harness(std::function<void(registry &)> setup_fn = {},
+                         execution_mode mode_ = execution_mode::sequential)
+        : setup(std::move(setup_fn))
+        , mode(mode_) {
+        attach(server, init_config{mode});
         if (setup) setup(server);
         init_network_server(server);
         network_server_packet_sink(server).connect<&net_harness::on_server_packet>(*this);
@@ -63,7 +69,7 @@ struct net_harness {
         auto down = link;
         down.seed = link.seed * 7919 + 13;
         auto &c = *clients.emplace_back(std::make_unique<net_client>(up, down));
-        attach(c.reg, init_config{execution_mode::sequential});
+        attach(c.reg, init_config{mode});
         if (setup) setup(c.reg);
         init_network_client(c.reg);
         set_network_client_round_trip_time(c.reg, 2 * link.latency);
@@ -109,6 +115,7 @@ struct net_harness {
         }
         update_network_server(server);
         update(server, time);
+        if (mode == execution_mode::asynchronous) wait_for_simulation(server);
         for (auto &c : clients) {
             for (auto &data : c->down.receive(time)) {
                 c->bytes_received += data.size();
@@ -118,6 +125,7 @@ struct net_harness {
             update_network_client(c->reg);
             wait_for_network_client(c->reg);
             update(c->reg, time);
+            if (mode == execution_mode::asynchronous) wait_for_simulation(c->reg);
         }
     }
 

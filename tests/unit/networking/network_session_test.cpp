@@ -93,8 +93,8 @@ TEST(network_session, entities_reach_the_client_with_their_shapes) {
     EXPECT_EQ(get_network_client_entity(c.reg), c.server_entity);
 }
 
-TEST(network_session, client_view_converges_on_the_server_under_loss_and_jitter) {
-    net_harness h(&setup);
+void check_convergence(execution_mode mode) {
+    net_harness h(&setup, mode);
     make_ground(h.server);
     auto boxes = std::vector<entity>{};
     for (int i = 0; i < 4; ++i)
@@ -134,8 +134,16 @@ TEST(network_session, client_view_converges_on_the_server_under_loss_and_jitter)
         << compared << " samples";
 }
 
-TEST(network_session, inputs_reach_the_server_under_loss) {
-    net_harness h(&setup);
+TEST(network_session, client_view_converges_on_the_server_under_loss_and_jitter) {
+    check_convergence(execution_mode::sequential);
+}
+
+TEST(network_session, client_view_converges_in_asynchronous_mode) {
+    check_convergence(execution_mode::asynchronous);
+}
+
+void check_inputs(execution_mode mode) {
+    net_harness h(&setup, mode);
     make_ground(h.server);
     auto box = make_box(h.server, {0, 0.5, 0});
     auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.1, .seed = 5});
@@ -149,6 +157,12 @@ TEST(network_session, inputs_reach_the_server_under_loss) {
     EXPECT_GT(h.server.get<position>(box).x, scalar(1))
         << "the server's box did not move under the client's thrust";
     EXPECT_EQ(h.server.get<remote_client>(c.server_entity).rejected.total(), 0u);
+}
+
+TEST(network_session, inputs_reach_the_server_under_loss) { check_inputs(execution_mode::sequential); }
+
+TEST(network_session, inputs_reach_the_server_in_asynchronous_mode) {
+    check_inputs(execution_mode::asynchronous);
 }
 
 } // namespace
