@@ -41,6 +41,9 @@ struct server_client_state {
     // Added to half the round trip to make the playout delay; grows when snapshots arrive late.
     double playout_margin{-1};
     double playout_sent{-1};
+    // Whether the client was told who it is and the settings (at the first update after
+    // server_make_client, so that the program knows the client's entity when its packets go).
+    bool greeted{false};
 };
 
 struct server_context {
@@ -390,13 +393,10 @@ sink<network_server_packet_signal> network_server_packet_sink(registry &registry
 
 entity server_make_client(registry &registry) {
     auto &ctx = get_server(registry, "server_make_client");
+    (void)ctx;
     auto client = registry.create();
     registry.emplace<remote_client>(client);
-    auto &state = registry.emplace<server_client_state>(client);
-    state.next_snapshot_time = get_simulation_time(registry);
-    send(registry, ctx, client, {packet::client_created{client}});
-    send(registry, ctx, client, {current_settings(registry)});
-    update_playout_delay(registry, ctx, client, registry.get<remote_client>(client), state);
+    registry.emplace<server_client_state>(client).next_snapshot_time = get_simulation_time(registry);
     return client;
 }
 
@@ -464,7 +464,13 @@ void update_network_server(registry &registry) {
     ctx.destroyed.clear();
 
     for (auto [client, rc, state] : registry.view<remote_client, server_client_state>().each()) {
-        if (settings_changed) send(registry, ctx, client, {settings});
+        if (!state.greeted) {
+            state.greeted = true;
+            send(registry, ctx, client, {packet::client_created{client}});
+            send(registry, ctx, client, {settings});
+        } else if (settings_changed) {
+            send(registry, ctx, client, {settings});
+        }
         if (!destroyed.empty()) {
             auto packet = packet::destroy_entity{now, {}};
             for (auto e : destroyed)

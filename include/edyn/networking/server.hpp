@@ -20,8 +20,9 @@ void deinit_network_server(registry &registry);
 //   void send_to_client(edyn::registry &, edyn::entity client, const edyn::packet::edyn_packet &);
 sink<network_server_packet_signal> network_server_packet_sink(registry &registry);
 
-// A client connected: returns its entity, with a remote_client component. Destroy the entity
-// when the client disconnects.
+// A client connected: returns its entity, with a remote_client component. Its first packets
+// (its identity, the settings) go at the next update_network_server. Destroy the entity when
+// the client disconnects.
 entity server_make_client(registry &registry);
 
 // Feeds a packet received from `client`. Packets a client may not send (it does not own the

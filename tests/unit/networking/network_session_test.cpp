@@ -165,4 +165,60 @@ TEST(network_session, inputs_reach_the_server_in_asynchronous_mode) {
     check_inputs(execution_mode::asynchronous);
 }
 
+TEST(network_session, constraints_reach_the_client_between_its_bodies) {
+    net_harness h(&setup);
+    make_ground(h.server);
+    auto a = make_box(h.server, {0, 3, 0});
+    auto b = make_box(h.server, {1.5, 3, 0});
+    auto hinge = make_constraint<hinge_constraint>(h.server, a, b, [](hinge_constraint &c) {
+        c.pivot[0] = {0.75, 0, 0};
+        c.pivot[1] = {-0.75, 0, 0};
+        c.set_axes({0, 0, 1}, {0, 0, 1});
+        c.angle_min = -0.5;
+        c.angle_max = 0.5;
+    });
+    h.server.emplace<networked_tag>(hinge);
+    auto &c = h.add_client({.latency = 0.03});
+    h.run(1);
+    auto local = client_local_entity(c.reg, hinge);
+    ASSERT_NE(local, entity{null});
+    ASSERT_TRUE(c.reg.all_of<hinge_constraint>(local));
+    auto &con = c.reg.get<hinge_constraint>(local);
+    EXPECT_EQ(con.body[0], client_local_entity(c.reg, a));
+    EXPECT_EQ(con.body[1], client_local_entity(c.reg, b));
+    EXPECT_FLOAT_EQ(con.angle_max, 0.5f);
+    EXPECT_EQ(con.pivot[0], (vector3{0.75, 0, 0}));
+}
+
+TEST(network_session, corrections_are_shown_gradually_and_decay) {
+    net_harness h(&setup);
+    auto def = rigidbody_def{};
+    def.shape = sphere_shape{0.5};
+    def.gravity = vector3_zero;
+    def.linvel = {1, 0, 0};
+    auto ball = make_rigidbody(h.server, def);
+    h.server.emplace<networked_tag>(ball);
+    auto &c = h.add_client({.latency = 0.03});
+    set_network_client_discontinuity_decay_rate(c.reg, 0.5f);
+    h.run(1);
+    auto local = client_local_entity(c.reg, ball);
+    ASSERT_NE(local, entity{null});
+    // The server pushes the ball aside; the client's copy jumps in `position` but is shown
+    // where it was, the offset decaying by half every step.
+    h.server.replace<position>(ball, h.server.get<position>(ball) + vector3{0, 0, 1});
+    auto offsets = std::vector<scalar>{};
+    h.run(0.5, [&] {
+        if (auto *d = c.reg.try_get<discontinuity>(local)) {
+            offsets.push_back(d->position_offset.z);
+            auto shown = c.reg.get<present_position>(local).z - c.reg.get<position>(local).z;
+            EXPECT_NEAR(shown, d->position_offset.z, 1e-4);
+        }
+    });
+    ASSERT_FALSE(offsets.empty());
+    auto largest = *std::min_element(offsets.begin(), offsets.end());
+    EXPECT_LT(largest, scalar(-0.9)) << "the jump was not kept as a discontinuity";
+    EXPECT_GT(offsets.back(), scalar(-0.01)) << "the discontinuity did not decay";
+    EXPECT_NEAR(c.reg.get<position>(local).z, h.server.get<position>(ball).z, 0.01);
+}
+
 } // namespace
