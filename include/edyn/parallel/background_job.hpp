@@ -19,7 +19,8 @@ public:
     background_job(const background_job &) = delete;
     background_job &operator=(const background_job &) = delete;
 
-    // Runs `fn` on the job's thread. Throws std::logic_error while a run is in progress.
+    // Runs `fn` on the job's thread. Throws std::logic_error while a run is in progress. `fn`
+    // must not throw: it has no caller to throw to (an exception escaping it ends the program).
     void start(std::function<void()> fn);
     // Whether a run was started and has finished (its writes are visible to the caller then).
     // False again after the next start.

@@ -10,11 +10,12 @@
 //   template<typename Archive>
 //   void serialize(Archive &archive, my_component &c) { archive(c.speed, c.target); }
 //
-// Empty types need none. The input archive reads bytes that may come from anyone: it checks
-// every read against the end of the buffer and every count against what is left and against
-// max_archive_count; the first bad read marks it failed(), and from then on it reads nothing
+// Empty types need none. Entities are written as variable-length integers. The input archive reads bytes that
+// may come from anyone: it checks every read against the end of the buffer and every count against what is
+// left and against max_archive_count; the first bad read marks it failed(), and from then on it reads nothing
 // and leaves the values it is given as they were. It never throws.
 
+#include "edyn/ecs/entity.hpp"
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -153,6 +154,9 @@ template<typename T>
 void memory_output_archive::write(const T &value) {
     if constexpr (std::is_same_v<T, bool>) {
         m_data->push_back(value ? 1 : 0);
+    } else if constexpr (std::is_same_v<T, entity>) {
+        // Entities are small numbers (an index, a version above it, usually 0): a varint.
+        write_varint(to_integral(value));
     } else if constexpr (detail::is_raw_value<T>) {
         auto copy = value;
         detail::to_little_endian(copy);
@@ -175,6 +179,9 @@ void memory_input_archive::read(T &value) {
             return;
         }
         value = byte == 1;
+    } else if constexpr (std::is_same_v<T, entity>) {
+        auto integral = read_varint(~entity_traits::value_type{0});
+        if (!m_failed) value = entity{entity_traits::value_type(integral)};
     } else if constexpr (detail::is_raw_value<T>) {
         T copy;
         if (!read_bytes(&copy, sizeof(T))) return;

@@ -150,8 +150,18 @@ TEST(archive, enums_and_entities) {
 
     auto e = make_entity(123456, 789);
     EXPECT_EQ(round_trip(e), e);
-    EXPECT_EQ(encode(e).size(), sizeof(entity));
+    // Entities are varints: an early entity of version 0 takes a byte or two.
+    EXPECT_EQ(encode(e).size(), 5u);
+    EXPECT_EQ(encode(make_entity(100, 0)).size(), 1u);
+    EXPECT_EQ(encode(make_entity(10000, 0)).size(), 2u);
     EXPECT_TRUE(round_trip(entity(null)) == null);
+    // A varint past 32 bits is not an entity.
+    auto bytes = std::vector<std::uint8_t>{0xff, 0xff, 0xff, 0xff, 0x7f};
+    auto archive = memory_input_archive(bytes.data(), bytes.size());
+    auto decoded = make_entity(5, 0);
+    archive(decoded);
+    EXPECT_TRUE(archive.failed());
+    EXPECT_EQ(decoded, make_entity(5, 0));
 }
 
 TEST(archive, math_types) {
@@ -229,8 +239,9 @@ TEST(archive, nested) {
 TEST(archive, user_struct_with_free_serialize) {
     auto value = user_struct{7, "crate", {1, 2, 3}, {make_entity(1, 0), make_entity(2, 3)}, color::green};
     EXPECT_EQ(round_trip(value), value);
-    // int, name (1 + 5), vector3, count + two entities, optional flag + enum.
-    EXPECT_EQ(encode(value).size(), 4 + 6 + 3 * sizeof(scalar) + 1 + 8 + 2);
+    // int, name (1 + 5), vector3, count + two entities (varints of 1 and 4 bytes), optional
+    // flag + enum.
+    EXPECT_EQ(encode(value).size(), 4 + 6 + 3 * sizeof(scalar) + 1 + 1 + 4 + 2);
 }
 
 TEST(archive, empty_types_take_no_bytes) {

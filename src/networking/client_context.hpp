@@ -1,0 +1,145 @@
+#ifndef EDYN_SRC_NETWORKING_CLIENT_CONTEXT_HPP
+#define EDYN_SRC_NETWORKING_CLIENT_CONTEXT_HPP
+
+// A network client's state, in its registry's context, shared by client.cpp (packets, updates,
+// snapshots), client_extrapolation.cpp and client_assets.cpp.
+
+#include "edyn/ecs/entity_map.hpp"
+#include "edyn/networking/client.hpp"
+#include "edyn/parallel/background_job.hpp"
+#include "edyn/simulation/world.hpp"
+#include "entity_set.hpp"
+#include "extrapolation.hpp"
+#include "network_registry.hpp"
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace edyn::client_detail {
+
+// A change is sent in this many consecutive snapshots, so that one lost packet loses nothing.
+inline constexpr double change_repeats = 3;
+// Actions and recorded inputs are kept this long (seconds of server time).
+inline constexpr double history_length = 1;
+inline constexpr double time_request_interval = 1;
+// An entity a snapshot names before its create_entity arrived is asked for again after this.
+inline constexpr double entity_request_interval = 0.5;
+inline constexpr int max_lead_steps = 4;
+// A result this many steps old is still carried forward; an older one is dropped.
+inline constexpr long long max_carried_steps = 2;
+
+struct client_context {
+    network_client_packet_signal packet_signal;
+    network_client_entity_signal entity_entered_signal;
+    network_client_entity_signal instantiate_asset_signal;
+    entity client_entity{null};
+    entity_map remote_to_local, local_to_remote;
+    entity_set authored; // local entities whose inputs this client set
+    // Server entities of assets entered but not linked yet: instantiated by the program, never
+    // asked for.
+    entity_set unlinked_members;
+
+    double round_trip_time{0};
+    double snapshot_rate{30};
+    scalar decay_rate{scalar(0.9)};
+    double playout_delay{0};
+    // Server time = local simulation time + clock_offset, once a time response arrived.
+    bool synchronised{false};
+    double clock_offset{0};
+    std::uint32_t next_request_id{1};
+    std::uint32_t pending_request_id{0};
+    double time_request_sent{0};
+    double next_time_request{-std::numeric_limits<double>::infinity()};
+    double next_snapshot_time{-std::numeric_limits<double>::infinity()};
+
+    // The newest server motion not yet extrapolated.
+    bool has_pending{false};
+    decoded_packet pending;
+    std::vector<std::pair<entity, double>> requested; // remote entity, time asked
+
+    // The client's inputs, oldest first, as the extrapolation re-applies them.
+    struct recorded_input {
+        double time;
+        std::vector<entity> entities;
+        std::vector<packet::pool_snapshot> pools;
+    };
+    std::vector<recorded_input> inputs;
+    double last_input_record{-std::numeric_limits<double>::infinity()};
+
+    std::uint64_t decay_step{0};
+    bool actions_pending{false};
+    std::uint64_t actions_step{0};
+
+    // Steps ahead of the present an extrapolation aims at (adapted to how long jobs take).
+    int lead_steps{1};
+    std::unique_ptr<background_job> job;
+    std::unique_ptr<extrapolation_input> job_input;
+    extrapolation_result job_result;
+};
+
+// The client's record of an asset the server sent, on the local asset entity.
+struct client_asset {
+    entity remote{null};
+    std::vector<std::pair<asset_index_type, entity>> members; // server entities
+    bool linked{false};
+    // The state the server sent for client_asset_ready, applied on linking.
+    bool has_state{false};
+    decoded_packet state;
+};
+
+inline client_context &get_client(registry &registry, const char *function) {
+    auto *ctx = registry.ctx().find<client_context>();
+    if (!ctx)
+        throw std::invalid_argument(std::string(function) + ": the registry is not a network client "
+                                                            "(call init_network_client first)");
+    return *ctx;
+}
+
+inline const client_context &get_client(const registry &registry, const char *function) {
+    return get_client(const_cast<edyn::registry &>(registry), function);
+}
+
+inline double client_time(const registry &registry, const client_context &ctx) {
+    return get_simulation_time(registry) + ctx.clock_offset + ctx.playout_delay;
+}
+
+// Applies pools with the registry's change records muted: values from the server are not the
+// client's changes.
+struct muted_scope {
+    network_registry &types;
+    bool previous;
+    explicit muted_scope(network_registry &t)
+        : types(t)
+        , previous(t.muted) {
+        types.muted = true;
+    }
+    ~muted_scope() { types.muted = previous; }
+};
+
+inline std::vector<entity> to_local(const client_context &ctx, const std::vector<entity> &remote) {
+    auto local = std::vector<entity>(remote.size(), entity{null});
+    for (std::size_t i = 0; i < remote.size(); ++i)
+        local[i] = ctx.remote_to_local.find(remote[i]);
+    return local;
+}
+
+inline detail::entity_mapper remote_to_local_map(const client_context &ctx) {
+    return [&ctx](entity e) { return ctx.remote_to_local.find(e); };
+}
+
+// client_extrapolation.cpp
+void carry_over_motion(const decoded_packet &older, decoded_packet &newer);
+void decay_discontinuities(registry &registry, client_context &ctx);
+void start_extrapolation(registry &registry, client_context &ctx, network_registry &types, double now);
+bool merge_extrapolation(registry &registry, client_context &ctx, double now);
+
+// client_assets.cpp
+void receive_entered(registry &registry, client_context &ctx, const packet::entity_entered &entered);
+void receive_asset_state(registry &registry, client_context &ctx,
+                         const packet::asset_sync_response &response);
+
+} // namespace edyn::client_detail
+
+#endif // EDYN_SRC_NETWORKING_CLIENT_CONTEXT_HPP
