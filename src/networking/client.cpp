@@ -32,6 +32,8 @@ void destroy_local(registry &registry, client_context &ctx, const std::vector<en
         ctx.remote_to_local.erase(r);
         ctx.local_to_remote.erase(local);
         ctx.authored.erase(local);
+        if (to_index(local) < ctx.motions.size() && ctx.motions[to_index(local)].local == local)
+            ctx.motions[to_index(local)] = {};
         if (registry.valid(local)) {
             if (auto *asset = registry.try_get<client_asset>(local))
                 for (auto &[index, member] : asset->members)
@@ -96,20 +98,24 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
             pool->apply(registry, entities, remote_to_local_map(ctx));
         }
     }
-    // Motion waits for the next extrapolation; a newer snapshot replaces an older one, except for
-    // the bodies only the older one has (those that fell asleep in between: their resting pose
-    // is not repeated).
-    if (ctx.has_pending && ctx.pending.time >= snapshot.timestamp) return;
-    auto pending = decoded_packet{snapshot.timestamp, local, {}};
-    for (auto &pool : *pools)
-        if (pool->component_index == network_index::motion) pending.pools.push_back(std::move(pool));
-    if (pending.pools.empty()) {
-        pending.pools.push_back(std::make_unique<detail::typed_decoded_pool<network_motion>>());
-        pending.pools.back()->component_index = network_index::motion;
+    // Motion waits for the next extrapolation, body by body: the newest value of each.
+    for (auto &pool : *pools) {
+        if (pool->component_index != network_index::motion) continue;
+        auto &values = static_cast<detail::typed_decoded_pool<network_motion> &>(*pool);
+        for (std::size_t i = 0; i < values.positions.size(); ++i) {
+            auto e = local[values.positions[i]];
+            if (e == null) continue;
+            auto index = to_index(e);
+            if (index >= ctx.motions.size()) ctx.motions.resize(std::size_t(index) + 1);
+            auto &cached = ctx.motions[index];
+            if (cached.local == e && cached.time >= snapshot.timestamp) continue;
+            cached = {e, snapshot.timestamp, values.values[i]};
+        }
     }
-    if (ctx.has_pending) carry_over_motion(ctx.pending, pending);
-    ctx.pending = std::move(pending);
-    ctx.has_pending = true;
+    if (snapshot.timestamp > ctx.pending_time) {
+        ctx.pending_time = snapshot.timestamp;
+        ctx.has_pending = true;
+    }
 }
 
 void receive_time(registry &registry, client_context &ctx, const packet::time_response &response) {
@@ -137,12 +143,13 @@ void apply_server_settings(registry &registry, const packet::server_settings &s)
 }
 
 void record_inputs(registry &registry, client_context &ctx, network_registry &types, double now) {
-    auto writer = pool_writer(types, registry);
+    auto writer = pool_writer(types, registry, [&ctx](entity e) { return ctx.local_to_remote.find(e); });
     for (auto i = types.first_program_type; i < types.types.size(); ++i) {
         auto &t = types.types[i];
         if (!t.input) continue;
         for (auto e : ctx.authored.entities()) {
-            if (registry.valid(e) && t.has(registry, e) && types.changed_at(i, e) > ctx.last_input_record)
+            if (registry.valid(e) && ctx.local_to_remote.find(e) != null && t.has(registry, e) &&
+                types.changed_at(i, e) >= ctx.last_input_record)
                 writer.add(e, i);
         }
     }
@@ -159,15 +166,22 @@ void record_inputs(registry &registry, client_context &ctx, network_registry &ty
     ctx.inputs.erase(ctx.inputs.begin(), old);
 }
 
+// Inputs go as they were recorded, each with its own time, in the snapshots of change_repeats
+// periods after it was made, so that a lost packet loses none (the server ignores the copies);
+// the actions of the last second go in one more, at the present time.
 void send_snapshot(registry &registry, client_context &ctx, network_registry &types, double now) {
-    auto since = now - change_repeats / std::max(ctx.snapshot_rate, 1e-3);
+    auto since = now - input_repeats / std::max(ctx.snapshot_rate, 1e-3) - 1e-9;
+    for (auto &entry : ctx.inputs) {
+        if (entry.time < since || entry.time > now) continue;
+        ctx.packet_signal.publish({packet::registry_snapshot{entry.time, entry.entities, entry.pools}});
+    }
     auto writer = pool_writer(types, registry, [&ctx](entity e) { return ctx.local_to_remote.find(e); });
     for (auto i = types.first_program_type; i < types.types.size(); ++i) {
         auto &t = types.types[i];
-        if (!t.input && !t.action) continue;
+        if (!t.action) continue;
         for (auto e : ctx.authored.entities()) {
             if (!registry.valid(e) || ctx.local_to_remote.find(e) == null || !t.has(registry, e)) continue;
-            if (t.action || types.changed_at(i, e) >= since) writer.add(e, i);
+            writer.add(e, i);
         }
     }
     if (writer.empty()) return;
@@ -250,6 +264,7 @@ void update_network_client(registry &registry) {
     auto &ctx = get_client(registry, "update_network_client");
     auto &types = registry.ctx().get<network_registry>();
     auto local_now = get_simulation_time(registry);
+    update_lead(registry, ctx);
     auto now = client_time(registry, ctx);
     types.now = now;
 

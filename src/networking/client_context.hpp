@@ -11,6 +11,7 @@
 #include "entity_set.hpp"
 #include "extrapolation.hpp"
 #include "network_registry.hpp"
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -21,6 +22,8 @@ namespace edyn::client_detail {
 
 // A change is sent in this many consecutive snapshots, so that one lost packet loses nothing.
 inline constexpr double change_repeats = 3;
+// Inputs are repeated over more snapshots: a lost one changes what the server simulates.
+inline constexpr double input_repeats = 5;
 // Actions and recorded inputs are kept this long (seconds of server time).
 inline constexpr double history_length = 1;
 inline constexpr double time_request_interval = 1;
@@ -48,18 +51,34 @@ struct client_context {
     // Server time = local simulation time + clock_offset, once a time response arrived.
     bool synchronised{false};
     double clock_offset{0};
+    // clock_offset + playout_delay in whole steps: how far the client's time runs ahead of its
+    // local simulation time. It moves only when the estimate drifts a step or more away, so that
+    // the client's time never jumps back and forth (inputs stamped with a time earlier than one
+    // already applied would be ignored by the server).
+    long long clock_lead_steps{0};
     std::uint32_t next_request_id{1};
     std::uint32_t pending_request_id{0};
     double time_request_sent{0};
     double next_time_request{-std::numeric_limits<double>::infinity()};
     double next_snapshot_time{-std::numeric_limits<double>::infinity()};
 
-    // The newest server motion not yet extrapolated.
+    // The newest server motion of each body, by local entity index. The server sends a body only
+    // when its motion changed (and now and then when it did not), so the newest value of each
+    // is the server's state at the newest snapshot's time, which the extrapolation starts from.
+    struct server_motion {
+        entity local{null};
+        double time{-std::numeric_limits<double>::infinity()};
+        network_motion motion;
+    };
+    std::vector<server_motion> motions;
+    // Whether a snapshot newer than the last extrapolation's start arrived, and its time.
     bool has_pending{false};
-    decoded_packet pending;
+    double pending_time{-std::numeric_limits<double>::infinity()};
     std::vector<std::pair<entity, double>> requested; // remote entity, time asked
 
-    // The client's inputs, oldest first, as the extrapolation re-applies them.
+    // The client's inputs, oldest first, addressed to the server's entities: sent to the server
+    // (each in the snapshots of the next change_repeats periods) and re-applied by the
+    // extrapolation.
     struct recorded_input {
         double time;
         std::vector<entity> entities;
@@ -101,8 +120,19 @@ inline const client_context &get_client(const registry &registry, const char *fu
     return get_client(const_cast<edyn::registry &>(registry), function);
 }
 
+// The server time the client is at: its local time plus its lead, in whole steps so that its
+// inputs and extrapolations fall on the server's steps (both clocks advance in steps of the same
+// fixed dt).
 inline double client_time(const registry &registry, const client_context &ctx) {
-    return get_simulation_time(registry) + ctx.clock_offset + ctx.playout_delay;
+    return get_simulation_time(registry) + double(ctx.clock_lead_steps) * double(get_fixed_dt(registry));
+}
+
+// Moves clock_lead_steps to the current estimate when it is a step or more away from it (rounding up:
+// a late input is lost, an early one only waits).
+inline void update_lead(const registry &registry, client_context &ctx) {
+    auto target = (ctx.clock_offset + ctx.playout_delay) / double(get_fixed_dt(registry));
+    if (std::abs(target - double(ctx.clock_lead_steps)) >= 1)
+        ctx.clock_lead_steps = std::llround(std::ceil(target));
 }
 
 // Applies pools with the registry's change records muted: values from the server are not the
@@ -130,7 +160,6 @@ inline detail::entity_mapper remote_to_local_map(const client_context &ctx) {
 }
 
 // client_extrapolation.cpp
-void carry_over_motion(const decoded_packet &older, decoded_packet &newer);
 void decay_discontinuities(registry &registry, client_context &ctx);
 void start_extrapolation(registry &registry, client_context &ctx, network_registry &types, double now);
 bool merge_extrapolation(registry &registry, client_context &ctx, double now);

@@ -14,21 +14,6 @@
 
 namespace edyn::client_detail {
 
-void carry_over_motion(const decoded_packet &older, decoded_packet &newer) {
-    auto &from = static_cast<const detail::typed_decoded_pool<network_motion> &>(*older.pools.front());
-    auto &to = static_cast<detail::typed_decoded_pool<network_motion> &>(*newer.pools.front());
-    auto present = entity_set{};
-    for (auto position : to.positions)
-        if (newer.entities[position] != null) present.insert(newer.entities[position]);
-    for (std::size_t i = 0; i < from.positions.size(); ++i) {
-        auto e = older.entities[from.positions[i]];
-        if (e == null || present.contains(e)) continue;
-        to.positions.push_back(std::uint32_t(newer.entities.size()));
-        newer.entities.push_back(e);
-        to.values.push_back(from.values[i]);
-    }
-}
-
 // Corrections decay by decay_rate per step run since the last call.
 void decay_discontinuities(registry &registry, client_context &ctx) {
     auto step = get_step_count(registry);
@@ -70,11 +55,20 @@ void start_extrapolation(registry &registry, client_context &ctx, network_regist
     auto pools = std::vector<packet::pool_snapshot>{};
     writer.finish(entities, pools);
     input->world = decode_local(types, std::move(entities), pools, now);
-    input->snapshot = std::move(ctx.pending);
+    // The server's state at the newest snapshot's time: the newest motion of every body.
+    auto motion = make_motion_pool();
+    input->snapshot.time = ctx.pending_time;
+    for (auto &cached : ctx.motions) {
+        if (cached.local == null || !registry.valid(cached.local)) continue;
+        motion->positions.push_back(std::uint32_t(input->snapshot.entities.size()));
+        motion->values.push_back(cached.motion);
+        input->snapshot.entities.push_back(cached.local);
+    }
+    input->snapshot.pools.push_back(std::move(motion));
     ctx.has_pending = false;
     input->remote_to_local = ctx.remote_to_local;
     for (auto &entry : ctx.inputs)
-        input->inputs.push_back(decode_local(types, entry.entities, entry.pools, entry.time));
+        input->inputs.push_back(decode_local(types, to_local(ctx, entry.entities), entry.pools, entry.time));
     input->start_time = input->snapshot.time;
     // The client steps while the job runs: it aims at the time the client will be at when it
     // merges the result.
@@ -107,6 +101,11 @@ bool merge_extrapolation(registry &registry, client_context &ctx, double now) {
         auto carry = scalar(double(late) * dt);
         for (auto &[e, m] : ctx.job_result.bodies) {
             if (!registry.valid(e) || !registry.all_of<rigidbody_tag>(e) || registry.all_of<static_tag>(e))
+                continue;
+            // A body at rest where the client has it already is left alone (not woken).
+            if (m.linvel == vector3_zero && m.angvel == vector3_zero && registry.all_of<sleeping_tag>(e) &&
+                distance_sqr(m.position, registry.get<position>(e)) < position_quantum * position_quantum &&
+                std::abs(dot(m.orientation, registry.get<orientation>(e))) > scalar(0.99999))
                 continue;
             auto new_pos = m.position + m.linvel * carry;
             auto new_orn = integrate(m.orientation, m.angvel, carry);

@@ -47,7 +47,7 @@ void run_extrapolation(const extrapolation_input &input, extrapolation_result &r
     apply(job, input.types, input.world, to_job, local_to_job);
     auto next_input = std::size_t{0};
     while (next_input < input.inputs.size() && input.inputs[next_input].time <= input.start_time)
-        apply(job, input.types, input.inputs[next_input++], to_job, local_to_job);
+        apply(job, input.types, input.inputs[next_input++], to_job, remote_to_job);
     apply(job, input.types, input.snapshot, to_job, remote_to_job);
 
     auto dt = double(input.settings.fixed_dt);
@@ -56,7 +56,7 @@ void run_extrapolation(const extrapolation_input &input, extrapolation_result &r
     for (unsigned k = 0; k < steps; ++k) {
         auto time = input.start_time + k * dt;
         while (next_input < input.inputs.size() && input.inputs[next_input].time <= time)
-            apply(job, input.types, input.inputs[next_input++], to_job, local_to_job);
+            apply(job, input.types, input.inputs[next_input++], to_job, remote_to_job);
         step_simulation(job);
     }
     result.end_time = input.start_time + steps * dt;

@@ -33,7 +33,8 @@ struct extrapolation_input {
     // remote_to_local).
     decoded_packet snapshot;
     entity_map remote_to_local;
-    // The client's inputs, oldest first: those up to start_time set the state it starts from.
+    // The client's inputs, oldest first: those up to start_time set the state it starts from
+    // (entities of members: the server's).
     std::vector<decoded_packet> inputs;
     double start_time{};
     double end_time{};

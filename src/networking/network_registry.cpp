@@ -122,6 +122,13 @@ detail::networked_type motion_type() {
     t.write = [](const registry &r, entity e, const detail::entity_mapper &, memory_output_archive &archive) {
         auto m =
             network_motion{r.get<position>(e), r.get<orientation>(e), r.get<linvel>(e), r.get<angvel>(e)};
+        // Speeds well under those of sleep are sent as zero: a body settling in an island that
+        // is still awake then keeps the same encoding, and is not sent again (server.cpp).
+        auto &s = get_settings(r);
+        if (length_sqr(m.linvel) < (s.sleep_linear_velocity * s.sleep_linear_velocity / 16))
+            m.linvel = vector3_zero;
+        if (length_sqr(m.angvel) < (s.sleep_angular_velocity * s.sleep_angular_velocity / 16))
+            m.angvel = vector3_zero;
         archive(m);
     };
     t.read = &read_pool<decoded_motion, network_motion>;
@@ -147,6 +154,12 @@ void forget_destroyed(registry &registry, entity e) {
 }
 
 } // namespace
+
+std::unique_ptr<detail::typed_decoded_pool<network_motion>> make_motion_pool() {
+    auto pool = std::make_unique<decoded_motion>();
+    pool->component_index = network_index::motion;
+    return pool;
+}
 
 void network_registry::mark(std::size_t type, entity e) {
     if (muted) return;
@@ -246,6 +259,14 @@ void pool_writer::add(entity e, std::uint16_t index) {
     auto archive = memory_output_archive(pool_data[index]);
     archive.write_size(position);
     types->types[index].write(*source, e, map, archive);
+}
+
+void pool_writer::add_encoded(entity e, std::uint16_t index, const std::vector<std::uint8_t> &bytes) {
+    if (index >= pool_data.size()) pool_data.resize(std::size_t(index) + 1);
+    auto position = position_of(e);
+    auto archive = memory_output_archive(pool_data[index]);
+    archive.write_size(position);
+    archive.write_bytes(bytes.data(), bytes.size());
 }
 
 void pool_writer::finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out) {

@@ -7,6 +7,7 @@
 
 #include "edyn/networking/networked_components.hpp"
 #include "edyn/networking/packet/pool_snapshot.hpp"
+#include "network_motion.hpp"
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -62,6 +63,10 @@ void apply_pools(registry &registry, const network_registry &types,
                  const std::vector<std::unique_ptr<detail::decoded_pool>> &pools,
                  const std::vector<entity> &entities, const detail::entity_mapper &map);
 
+// An empty decoded pool of motion (network_index::motion), to fill: applying it sets the
+// bodies' transforms and velocities.
+std::unique_ptr<detail::typed_decoded_pool<network_motion>> make_motion_pool();
+
 // Builds the entity list and pools of a packet, one value at a time.
 class pool_writer {
 public:
@@ -72,6 +77,8 @@ public:
     // Adds `e`'s value of the type at `index` (which it must have); `e` joins the entity list
     // (translated by the map) the first time.
     void add(entity e, std::uint16_t index);
+    // Adds a value already encoded by the type's `write`.
+    void add_encoded(entity e, std::uint16_t index, const std::vector<std::uint8_t> &bytes);
     // Puts `e` in the entity list without a value.
     void include(entity e) { position_of(e); }
     bool empty() const noexcept { return entities.empty(); }

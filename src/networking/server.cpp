@@ -20,6 +20,8 @@ namespace {
 
 // A change is sent in this many consecutive snapshots, so that one lost packet loses nothing.
 constexpr double change_repeats = 3;
+// An awake body whose motion has not changed is sent in one snapshot of this many.
+constexpr std::uint8_t rest_refresh = 4;
 // A client's jitter buffer holds at most this many snapshots; a client sending faster than the
 // server applies loses its oldest ones.
 constexpr std::size_t max_buffered_snapshots = 128;
@@ -41,6 +43,15 @@ struct server_client_state {
     // Added to half the round trip to make the playout delay; grows when snapshots arrive late.
     double playout_margin{-1};
     double playout_sent{-1};
+    // The encoding of each known body's motion last sent to the client (a hash of it), and how
+    // many more snapshots repeat it, by entity index.
+    struct sent_motion {
+        entity e{null};
+        std::uint64_t hash{0};
+        std::uint8_t repeats{0};
+        std::uint8_t skipped{0};
+    };
+    std::vector<sent_motion> sent;
     // Whether the client was told who it is and the settings (at the first update after
     // server_make_client, so that the program knows the client's entity when its packets go).
     bool greeted{false};
@@ -228,17 +239,55 @@ void update_interest(registry &registry, server_context &ctx, const network_regi
 
 bool moving(const registry &registry, entity e) { return !registry.any_of<sleeping_tag, static_tag>(e); }
 
+std::uint64_t hash_bytes(const std::vector<std::uint8_t> &bytes) {
+    auto h = std::uint64_t{14695981039346656037ull};
+    for (auto b : bytes)
+        h = (h ^ b) * 1099511628211ull;
+    return h;
+}
+
+// Whether to send `e`'s motion, encoded as `bytes`: when it differs from what was last sent to
+// the client, in the change_repeats - 1 snapshots after that (so that one lost packet loses
+// nothing), and otherwise in one snapshot of rest_refresh: a body resting in an island that is
+// still awake costs a quarter, yet the client's copy, which its own simulation may have pushed
+// (a misprediction), is put back soon.
+bool motion_is_news(server_client_state &state, entity e, const std::vector<std::uint8_t> &bytes) {
+    auto i = to_index(e);
+    if (i >= state.sent.size()) state.sent.resize(std::size_t(i) + 1);
+    auto &record = state.sent[i];
+    if (record.e != e) record = {e, 0, 0, 0};
+    auto hash = hash_bytes(bytes);
+    if (hash != record.hash) {
+        record.hash = hash;
+        record.repeats = std::uint8_t(change_repeats - 1);
+        record.skipped = 0;
+        return true;
+    }
+    if (record.repeats > 0) {
+        --record.repeats;
+        return true;
+    }
+    if (++record.skipped < rest_refresh) return false;
+    record.skipped = 0;
+    return true;
+}
+
 void send_snapshot(registry &registry, server_context &ctx, const network_registry &types, entity client,
-                   const remote_client &rc, const server_client_state &state) {
+                   const remote_client &rc, server_client_state &state) {
     auto now = get_simulation_time(registry);
     auto since = now - change_repeats / std::max(rc.snapshot_rate, 1e-3);
     auto writer = pool_writer(types, registry);
     auto &motion = types.types[network_index::motion];
+    auto bytes = std::vector<std::uint8_t>{};
     for (auto e : state.known.entities()) {
         if (!registry.valid(e)) continue;
         if (motion.has(registry, e) &&
-            (moving(registry, e) || types.changed_at(network_index::motion, e) >= since))
-            writer.add(e, network_index::motion);
+            (moving(registry, e) || types.changed_at(network_index::motion, e) >= since)) {
+            bytes.clear();
+            auto archive = memory_output_archive(bytes);
+            motion.write(registry, e, {}, archive);
+            if (motion_is_news(state, e, bytes)) writer.add_encoded(e, network_index::motion, bytes);
+        }
         for (auto i = types.first_program_type; i < types.types.size(); ++i) {
             auto &t = types.types[i];
             if (!t.action && t.has(registry, e) && types.changed_at(i, e) >= since) writer.add(e, i);
@@ -266,7 +315,10 @@ bool apply_due_snapshots(registry &registry, server_client_state &state, double 
     auto applied_actions = false;
     auto &types = registry.ctx().get<network_registry>();
     auto due = std::size_t{0};
-    while (due < state.jitter_buffer.size() && state.jitter_buffer[due].timestamp <= now)
+    // Times within half a step of now are this step's (client times fall on steps, give or take
+    // rounding).
+    auto until = now + double(get_fixed_dt(registry)) / 2;
+    while (due < state.jitter_buffer.size() && state.jitter_buffer[due].timestamp <= until)
         ++due;
     for (std::size_t i = 0; i < due; ++i) {
         auto &snapshot = state.jitter_buffer[i];
@@ -347,21 +399,20 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
         }
     }
     if (snapshot.timestamp <= state.last_applied) {
-        // Inputs are state: an older one must not undo a newer one. Actions in it are repeated
-        // in the newer snapshots.
-        rc.rejected.late += 1;
+        // A copy of what was applied (clients repeat their inputs), or an input older than one
+        // applied, which must not undo it; actions in it are repeated in newer snapshots too.
         return;
     }
-    auto now = get_simulation_time(registry);
-    if (snapshot.timestamp < now) {
-        rc.rejected.late += 1;
-        auto &margin = state.playout_margin;
-        auto dt = double(get_fixed_dt(registry));
-        margin = std::min(margin + dt / 4, 10 * dt);
-    }
     auto &buffer = state.jitter_buffer;
-    auto at = std::upper_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
-                               [](double t, const buffered_snapshot &s) { return t < s.timestamp; });
+    auto at = std::lower_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
+                               [](const buffered_snapshot &s, double t) { return s.timestamp < t; });
+    if (at != buffer.end() && at->timestamp == snapshot.timestamp) return; // a copy
+    // Client times fall on the server's steps: an input is late when its step has run.
+    auto dt = double(get_fixed_dt(registry));
+    if (snapshot.timestamp < get_simulation_time(registry) - dt / 2) {
+        rc.rejected.late += 1;
+        state.playout_margin = std::min(state.playout_margin + dt / 4, 10 * dt);
+    }
     buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools)});
     if (buffer.size() > max_buffered_snapshots) buffer.erase(buffer.begin());
     (void)client;
@@ -396,7 +447,10 @@ entity server_make_client(registry &registry) {
     (void)ctx;
     auto client = registry.create();
     registry.emplace<remote_client>(client);
-    registry.emplace<server_client_state>(client).next_snapshot_time = get_simulation_time(registry);
+    // Clients take their snapshots on different steps (by entity index, over four steps), so that
+    // the server's networking work is spread over steps instead of all falling on one.
+    auto phase = double(to_index(client) % 4) * double(get_fixed_dt(registry));
+    registry.emplace<server_client_state>(client).next_snapshot_time = get_simulation_time(registry) + phase;
     return client;
 }
 
