@@ -14,6 +14,7 @@
 #include "entity_set.hpp"
 #include "extrapolation.hpp"
 #include "network_registry.hpp"
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -121,13 +122,16 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
 void receive_time(registry &registry, client_context &ctx, const packet::time_response &response) {
     if (response.id != ctx.pending_request_id || !std::isfinite(response.timestamp)) return;
     ctx.pending_request_id = 0;
-    // The reply left the server half a round trip ago.
+    // The reply left the server about half a round trip ago; each sample is off by that half's
+    // jitter, so the offset is the median of the last few, which one late reply cannot move.
     auto offset = response.timestamp + ctx.round_trip_time / 2 - get_simulation_time(registry);
-    if (!ctx.synchronised || std::abs(offset - ctx.clock_offset) > 0.25) {
-        ctx.clock_offset = offset;
-    } else {
-        ctx.clock_offset += (offset - ctx.clock_offset) * 0.2;
-    }
+    auto &samples = ctx.offset_samples;
+    if (!samples.empty() && std::abs(offset - ctx.clock_offset) > 0.25) samples.clear(); // a new clock
+    samples.push_back(offset);
+    if (samples.size() > max_offset_samples) samples.erase(samples.begin());
+    auto sorted = samples;
+    std::sort(sorted.begin(), sorted.end());
+    ctx.clock_offset = sorted[sorted.size() / 2];
     ctx.synchronised = true;
 }
 
@@ -277,7 +281,10 @@ void update_network_client(registry &registry) {
     if (ctx.pending_request_id == 0 && (local_now >= ctx.next_time_request || !ctx.synchronised)) {
         ctx.pending_request_id = ctx.next_request_id++;
         ctx.time_request_sent = local_now;
-        ctx.next_time_request = local_now + time_request_interval;
+        // Quickly at first, until the median has its samples.
+        auto interval = ctx.offset_samples.size() < max_offset_samples ? time_request_interval / 5
+                                                                       : time_request_interval;
+        ctx.next_time_request = local_now + interval;
         ctx.packet_signal.publish({packet::time_request{ctx.pending_request_id}});
     }
 

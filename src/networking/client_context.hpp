@@ -27,6 +27,7 @@ inline constexpr double input_repeats = 5;
 // Actions and recorded inputs are kept this long (seconds of server time).
 inline constexpr double history_length = 1;
 inline constexpr double time_request_interval = 1;
+inline constexpr std::size_t max_offset_samples = 9;
 // An entity a snapshot names before its create_entity arrived is asked for again after this.
 inline constexpr double entity_request_interval = 0.5;
 inline constexpr int max_lead_steps = 4;
@@ -51,6 +52,7 @@ struct client_context {
     // Server time = local simulation time + clock_offset, once a time response arrived.
     bool synchronised{false};
     double clock_offset{0};
+    std::vector<double> offset_samples; // the last max_offset_samples, oldest first
     // clock_offset + playout_delay in whole steps: how far the client's time runs ahead of its
     // local simulation time. It moves only when the estimate drifts a step or more away, so that
     // the client's time never jumps back and forth (inputs stamped with a time earlier than one

@@ -407,7 +407,8 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
     auto at = std::lower_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
                                [](const buffered_snapshot &s, double t) { return s.timestamp < t; });
     if (at != buffer.end() && at->timestamp == snapshot.timestamp) return; // a copy
-    // Client times fall on the server's steps: an input is late when its step has run.
+    // Client times fall on the server's steps: an input is late when its step has run (a copy of
+    // one already applied was dropped above). Late inputs make the playout delay longer.
     auto dt = double(get_fixed_dt(registry));
     if (snapshot.timestamp < get_simulation_time(registry) - dt / 2) {
         rc.rejected.late += 1;
