@@ -159,7 +159,7 @@ void record_inputs(registry &registry, client_context &ctx, network_registry &ty
     }
     ctx.last_input_record = types.now;
     if (!writer.empty()) {
-        auto entry = client_context::recorded_input{now, {}, {}};
+        auto entry = client_context::recorded_input{now, {}, {}, input_repeats};
         writer.finish(entry.entities, entry.pools);
         ctx.inputs.push_back(std::move(entry));
     }
@@ -170,15 +170,18 @@ void record_inputs(registry &registry, client_context &ctx, network_registry &ty
     ctx.inputs.erase(ctx.inputs.begin(), old);
 }
 
-// Inputs go as they were recorded, each with its own time, in the snapshots of change_repeats
-// periods after it was made, so that a lost packet loses none (the server ignores the copies);
-// the actions of the last second go in one more, at the present time.
-void send_snapshot(registry &registry, client_context &ctx, network_registry &types, double now) {
-    auto since = now - input_repeats / std::max(ctx.snapshot_rate, 1e-3) - 1e-9;
+// Inputs go as they were recorded, each with its own time, by input_repeats consecutive
+// updates, so that a lost packet loses none (the server ignores the copies).
+void send_inputs(client_context &ctx) {
     for (auto &entry : ctx.inputs) {
-        if (entry.time < since || entry.time > now) continue;
+        if (entry.sends_left <= 0) continue;
+        --entry.sends_left;
         ctx.packet_signal.publish({packet::registry_snapshot{entry.time, entry.entities, entry.pools}});
     }
+}
+
+// The actions of the last second, at the present time, at the snapshot rate.
+void send_snapshot(registry &registry, client_context &ctx, network_registry &types, double now) {
     auto writer = pool_writer(types, registry, [&ctx](entity e) { return ctx.local_to_remote.find(e); });
     for (auto i = types.first_program_type; i < types.types.size(); ++i) {
         auto &t = types.types[i];
@@ -188,7 +191,8 @@ void send_snapshot(registry &registry, client_context &ctx, network_registry &ty
             writer.add(e, i);
         }
     }
-    if (writer.empty()) return;
+    // Sent even when empty: its time tells the server how late the client's packets arrive
+    // before there is any input to lose, so that the playout delay settles early.
     auto snapshot = packet::registry_snapshot{};
     snapshot.timestamp = now;
     writer.finish(snapshot.entities, snapshot.pools);
@@ -311,6 +315,7 @@ void update_network_client(registry &registry) {
     if (ctx.job_input && ctx.job->finished()) merge_extrapolation(registry, ctx, now);
     if (ctx.synchronised && ctx.has_pending && !ctx.job_input) start_extrapolation(registry, ctx, types, now);
 
+    if (ctx.synchronised) send_inputs(ctx);
     if (ctx.synchronised && local_now >= ctx.next_snapshot_time) {
         ctx.next_snapshot_time = local_now + 1 / std::max(ctx.snapshot_rate, 1e-3) - 1e-9;
         send_snapshot(registry, ctx, types, now);

@@ -22,8 +22,10 @@ namespace edyn::client_detail {
 
 // A change is sent in this many consecutive snapshots, so that one lost packet loses nothing.
 inline constexpr double change_repeats = 3;
-// Inputs are repeated over more snapshots: a lost one changes what the server simulates.
-inline constexpr double input_repeats = 5;
+// Each input is sent by this many consecutive updates (frames), whatever the snapshot rate: a
+// lost one changes what the server simulates, and a copy must follow soon after, within the
+// playout delay.
+inline constexpr int input_repeats = 5;
 // Actions and recorded inputs are kept this long (seconds of server time).
 inline constexpr double history_length = 1;
 inline constexpr double time_request_interval = 1;
@@ -85,6 +87,8 @@ struct client_context {
         double time;
         std::vector<entity> entities;
         std::vector<packet::pool_snapshot> pools;
+        // Updates left that send it again.
+        int sends_left{0};
     };
     std::vector<recorded_input> inputs;
     double last_input_record{-std::numeric_limits<double>::infinity()};

@@ -32,6 +32,9 @@ struct buffered_snapshot {
     double timestamp;
     std::vector<entity> entities;
     std::vector<std::unique_ptr<detail::decoded_pool>> pools;
+    // Whether it carries inputs (state, applied in time order) or only actions (each entry
+    // applied once whenever it comes) and nothing else.
+    bool inputs;
 };
 
 // The server's record of a client, on its entity next to remote_client.
@@ -39,6 +42,8 @@ struct server_client_state {
     entity_set known;
     std::vector<buffered_snapshot> jitter_buffer; // by timestamp
     double last_applied{-std::numeric_limits<double>::infinity()};
+    // The newest time of a snapshot received from the client.
+    double newest_received{-std::numeric_limits<double>::infinity()};
     double next_snapshot_time{0};
     // Added to half the round trip to make the playout delay; grows when snapshots arrive late.
     double playout_margin{-1};
@@ -325,7 +330,7 @@ bool apply_due_snapshots(registry &registry, server_client_state &state, double 
         apply_pools(registry, types, snapshot.pools, snapshot.entities, {});
         for (auto &pool : snapshot.pools)
             applied_actions |= types.types[pool->component_index].action;
-        state.last_applied = snapshot.timestamp;
+        if (snapshot.inputs) state.last_applied = snapshot.timestamp;
     }
     state.jitter_buffer.erase(state.jitter_buffer.begin(), state.jitter_buffer.begin() + std::ptrdiff_t(due));
     return applied_actions;
@@ -398,23 +403,32 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
             }
         }
     }
-    if (snapshot.timestamp <= state.last_applied) {
-        // A copy of what was applied (clients repeat their inputs), or an input older than one
-        // applied, which must not undo it; actions in it are repeated in newer snapshots too.
-        return;
-    }
+    auto inputs = false;
+    for (auto &pool : *pools)
+        inputs |= types.types[pool->component_index].input;
     auto &buffer = state.jitter_buffer;
-    auto at = std::lower_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
-                               [](const buffered_snapshot &s, double t) { return s.timestamp < t; });
-    if (at != buffer.end() && at->timestamp == snapshot.timestamp) return; // a copy
-    // Client times fall on the server's steps: an input is late when its step has run (a copy of
-    // one already applied was dropped above). Late inputs make the playout delay longer.
-    auto dt = double(get_fixed_dt(registry));
-    if (snapshot.timestamp < get_simulation_time(registry) - dt / 2) {
-        rc.rejected.late += 1;
-        state.playout_margin = std::min(state.playout_margin + dt / 4, 10 * dt);
+    auto at = std::upper_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
+                               [](double t, const buffered_snapshot &s) { return t < s.timestamp; });
+    if (inputs) {
+        // A copy of inputs applied (clients repeat their inputs), or inputs older than some
+        // applied, which must not undo them.
+        if (snapshot.timestamp <= state.last_applied) return;
+        for (auto it = buffer.begin(); it != buffer.end(); ++it)
+            if (it->inputs && it->timestamp == snapshot.timestamp) return; // a copy
     }
-    buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools)});
+    // Client times fall on the server's steps: a snapshot is late when its step has run (a copy
+    // of inputs already applied was dropped above). How early the newest snapshots arrive keeps
+    // the playout delay long enough: one that arrives with less than half a step to spare makes
+    // it longer by what was missing, at once, so that the client's lead (and with it the steps
+    // its inputs fall on) changes seldom.
+    auto dt = double(get_fixed_dt(registry));
+    auto slack = snapshot.timestamp - get_simulation_time(registry);
+    if (slack < -dt / 2) rc.rejected.late += 1;
+    if (snapshot.timestamp > state.newest_received) {
+        state.newest_received = snapshot.timestamp;
+        if (slack < dt / 2) state.playout_margin = std::min(state.playout_margin + (dt / 2 - slack), 10 * dt);
+    }
+    buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools), inputs});
     if (buffer.size() > max_buffered_snapshots) buffer.erase(buffer.begin());
     (void)client;
 }
