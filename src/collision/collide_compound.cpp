@@ -42,7 +42,7 @@ AABB transform_aabb(const AABB &local, const frame &f) noexcept {
 // Bounds of all children in the compound's object space: the tree's root when there is one.
 AABB local_bounds(const compound_shape &shape) noexcept {
     EDYN_ASSERT(!shape.children.empty(), "compound_shape without children");
-    if (!shape.nodes.empty()) return shape.nodes[0].aabb;
+    if (!shape.tree.empty()) return shape.tree.root_aabb();
     auto aabb = shape.children[0].aabb;
     for (const auto &child : shape.children) {
         aabb = enclosing_aabb(aabb, child.aabb);
@@ -145,6 +145,11 @@ void collide(const compound_shape &a, const polyhedron_shape &b, const collision
     collide_compound_convex(a, b, ctx, result);
 }
 
+void collide(const compound_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_compound_convex(a, b, ctx, result);
+}
+
 // The other argument order runs the routines above with A and B exchanged, so that both orders
 // give the same points.
 
@@ -174,6 +179,11 @@ void collide(const cylinder_shape &a, const compound_shape &b, const collision_c
 }
 
 void collide(const polyhedron_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const mesh_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
 }

@@ -194,17 +194,15 @@ void penetrating(const polyhedron_capsule &pc, scalar threshold, collision_resul
 
 } // namespace
 
-void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_context &ctx,
-             collision_result &result) {
-    EDYN_ASSERT(a.mesh && b.radius > 0 && b.half_length >= 0);
+namespace detail {
+
+void collide_polytope_capsule(const polytope &poly, const capsule_shape &b, const collision_context &ctx,
+                              collision_result &result) noexcept {
+    EDYN_ASSERT(b.radius > 0 && b.half_length >= 0);
     auto inv_orn_a = conjugate(ctx.ornA);
     auto pos_ab = rotate(inv_orn_a, ctx.posB - ctx.posA);
     auto orn_ab = inv_orn_a * ctx.ornB;
-    polyhedron_capsule pc{detail::make_polytope(*a.mesh),
-                          detail::make_capsule_segment(b, pos_ab, orn_ab),
-                          b.radius,
-                          ctx.ornA,
-                          orn_ab,
+    polyhedron_capsule pc{poly,  detail::make_capsule_segment(b, pos_ab, orn_ab), b.radius, ctx.ornA, orn_ab,
                           pos_ab};
     if (length(pos_ab) - pc.poly.bounding_radius - b.half_length - b.radius > ctx.threshold) return;
 
@@ -216,6 +214,14 @@ void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_
     } else {
         penetrating(pc, ctx.threshold, result);
     }
+}
+
+} // namespace detail
+
+void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(a.mesh);
+    detail::collide_polytope_capsule(detail::make_polytope(*a.mesh), b, ctx, result);
 }
 
 void collide(const capsule_shape &a, const polyhedron_shape &b, const collision_context &ctx,

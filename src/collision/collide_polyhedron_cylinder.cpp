@@ -125,16 +125,18 @@ detail::contact_feature point_or_segment(const detail::polytope &poly, const det
 
 } // namespace
 
-void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision_context &ctx,
-             collision_result &result) {
-    EDYN_ASSERT(a.radius > 0 && a.half_length > 0 && b.mesh);
+namespace detail {
+
+void collide_cylinder_polytope(const cylinder_shape &a, const polytope &poly, const collision_context &ctx,
+                               collision_result &result) noexcept {
+    EDYN_ASSERT(a.radius > 0 && a.half_length > 0);
     // Everything happens in the polyhedron's space; `local` maps that space to each shape's own.
     auto orn_b_inv = conjugate(ctx.ornB);
     collision_context local{to_object_space(ctx.posA, ctx.posB, ctx.ornB), orn_b_inv * ctx.ornA, vector3_zero,
                             quaternion_identity, ctx.threshold};
     cylinder_polytope cp;
     cp.cyl = detail::place_cylinder(a, local.posA, local.ornA);
-    cp.poly = detail::make_polytope(*b.mesh);
+    cp.poly = poly;
     auto cyl_reach = std::sqrt(a.radius * a.radius + a.half_length * a.half_length);
     if (length(cp.cyl.center) - cyl_reach - cp.poly.bounding_radius > ctx.threshold) return;
     auto size = a.radius + a.half_length + cp.poly.bounding_radius;
@@ -162,6 +164,14 @@ void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision
         detail::build_manifold(feature_a, point_or_segment(cp.poly, feature_b, normal), normal, local,
                                ctx.ornB, result);
     }
+}
+
+} // namespace detail
+
+void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(b.mesh);
+    detail::collide_cylinder_polytope(a, detail::make_polytope(*b.mesh), ctx, result);
 }
 
 void collide(const polyhedron_shape &a, const cylinder_shape &b, const collision_context &ctx,

@@ -7,10 +7,11 @@
 // face of least penetration.
 namespace edyn {
 
-void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx,
-             collision_result &result) {
-    EDYN_ASSERT(a.mesh && b.radius > 0);
-    auto poly = detail::make_polytope(*a.mesh);
+namespace detail {
+
+void collide_polytope_sphere(const polytope &poly, const sphere_shape &b, const collision_context &ctx,
+                             collision_result &result) noexcept {
+    EDYN_ASSERT(b.radius > 0);
     auto center = to_object_space(ctx.posB, ctx.posA, ctx.ornA);
     if (length(center) - poly.bounding_radius - b.radius > ctx.threshold) return;
     auto closest = detail::closest_point_polytope(poly, center);
@@ -24,6 +25,14 @@ void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_c
     p.normal = normal;
     p.distance = distance;
     result.add_point(p);
+}
+
+} // namespace detail
+
+void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(a.mesh);
+    detail::collide_polytope_sphere(detail::make_polytope(*a.mesh), b, ctx, result);
 }
 
 void collide(const sphere_shape &a, const polyhedron_shape &b, const collision_context &ctx,

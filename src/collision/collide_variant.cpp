@@ -19,7 +19,7 @@ constexpr bool has_exact_overload = requires {
 };
 
 template<typename A, typename B>
-constexpr bool is_plane_pair = std::is_same_v<A, plane_shape> &&std::is_same_v<B, plane_shape>;
+constexpr bool is_static_pair = is_static_only_shape_v<A> &&is_static_only_shape_v<B>;
 
 template<typename A, typename... Bs>
 constexpr std::size_t count_row() {
@@ -31,12 +31,22 @@ constexpr std::size_t count_overloads(std::type_identity<std::variant<Ts...>>) {
     return (count_row<Ts, Ts...>() + ...);
 }
 
-// Every ordered pair of shapes has its own overload, except plane against plane, which the
-// dispatcher answers itself (nothing: both are static).
-static_assert(count_overloads(std::type_identity<shapes_variant_t>{}) == num_shapes * num_shapes - 1,
+template<typename... Ts>
+constexpr std::size_t count_static_only(std::type_identity<std::variant<Ts...>>) {
+    return (std::size_t{is_static_only_shape_v<Ts>} + ...);
+}
+
+constexpr auto num_static_only = count_static_only(std::type_identity<shapes_variant_t>{});
+
+// Every ordered pair of shapes has its own overload, except pairs of static-only shapes, which
+// the dispatcher answers itself (nothing: both are static).
+static_assert(count_overloads(std::type_identity<shapes_variant_t>{}) ==
+                  num_shapes * num_shapes - num_static_only * num_static_only,
               "collide() lacks an overload for some ordered pair of shapes_variant_t alternatives");
-static_assert(!has_exact_overload<plane_shape, plane_shape>,
-              "plane against plane is answered by the variant overload alone");
+static_assert(!has_exact_overload<plane_shape, plane_shape> && !has_exact_overload<mesh_shape, mesh_shape> &&
+                  !has_exact_overload<plane_shape, mesh_shape> &&
+                  !has_exact_overload<mesh_shape, plane_shape>,
+              "pairs of static-only shapes are answered by the variant overload alone");
 
 } // namespace
 
@@ -46,7 +56,7 @@ void collide(const shapes_variant_t &a, const shapes_variant_t &b, const collisi
         [&](const auto &shape_a, const auto &shape_b) {
             using A = std::decay_t<decltype(shape_a)>;
             using B = std::decay_t<decltype(shape_b)>;
-            if constexpr (!is_plane_pair<A, B>) {
+            if constexpr (!is_static_pair<A, B>) {
                 static_assert(has_exact_overload<A, B>,
                               "collide() lacks an overload for this pair of shapes");
                 static_cast<collide_fn<A, B>> (&collide)(shape_a, shape_b, ctx, result);

@@ -248,6 +248,44 @@ shape_raycast_result shape_raycast(const polyhedron_shape &shape, const raycast_
     return make_result(t_in, t_out, ctx, info, [&] { return rotate(ctx.orn, mesh.normals[entry_face]); });
 }
 
+shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_context &ctx) {
+    EDYN_ASSERT(shape.trimesh && shape.trimesh->initialized());
+    if (ctx.p0 == ctx.p1) return {};
+    const auto &mesh = *shape.trimesh;
+    auto p0 = to_object_space(ctx.p0, ctx.pos, ctx.orn);
+    auto p1 = to_object_space(ctx.p1, ctx.pos, ctx.orn);
+    auto d = p1 - p0;
+    shape_raycast_result best;
+    std::size_t best_triangle = 0;
+    mesh.visit_triangles_segment(p0, p1, [&](std::size_t t) {
+        // Moller-Trumbore, both sides.
+        auto tri = mesh.get_triangle_vertices(t);
+        auto e1 = tri[1] - tri[0], e2 = tri[2] - tri[0];
+        auto h = cross(d, e2);
+        auto det = dot(e1, h);
+        if (det == 0) return;
+        auto inv = scalar(1) / det;
+        auto s = p0 - tri[0];
+        auto u = dot(s, h) * inv;
+        if (u < 0 || u > 1) return;
+        auto q = cross(s, e1);
+        auto v = dot(d, q) * inv;
+        if (v < 0 || u + v > 1) return;
+        auto fraction = dot(e2, q) * inv;
+        if (fraction < 0 || fraction > 1) return;
+        if (fraction < best.fraction || (fraction == best.fraction && t < best_triangle)) {
+            best.fraction = fraction;
+            best_triangle = t;
+        }
+    });
+    if (!best.hit()) return {};
+    auto normal = mesh.get_triangle_normal(best_triangle);
+    if (dot(normal, d) > 0) normal = -normal;
+    best.normal = rotate(ctx.orn, normal);
+    best.info_var = mesh_raycast_info{best_triangle};
+    return best;
+}
+
 shape_raycast_result shape_raycast(const compound_shape &shape, const raycast_context &ctx) {
     if (ctx.p0 == ctx.p1) return {};
     // The children are placed in the compound's object space: cast there, rotate the normal back.

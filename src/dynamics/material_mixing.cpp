@@ -1,4 +1,6 @@
 #include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/shapes/mesh_shape.hpp"
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +49,53 @@ material_base get_mixed_material(const registry &registry, const material &a, co
         }
     }
     return mix_materials(a, b);
+}
+
+namespace {
+
+const triangle_mesh *per_vertex_mesh(const registry &registry, entity e) {
+    auto *shape = registry.try_get<mesh_shape>(e);
+    if (!shape || !shape->trimesh) return nullptr;
+    const auto &mesh = *shape->trimesh;
+    return mesh.has_per_vertex_friction() || mesh.has_per_vertex_restitution() ? &mesh : nullptr;
+}
+
+// The body's material with the mesh's coefficients at `pivot` (object space) on the triangle
+// its feature names, where it has them.
+material_base at_point(const material &base, const triangle_mesh *mesh,
+                       const std::optional<collision_feature> &feature, const vector3 &pivot) {
+    material_base m = base;
+    if (!mesh || !feature || feature->part < 0 || std::size_t(feature->part) >= mesh->num_triangles())
+        return m;
+    auto t = std::size_t(feature->part);
+    auto tri = mesh->get_triangle_vertices(t);
+    auto w = barycentric_coordinates(pivot, tri[0], tri[1], tri[2]);
+    // Clamped onto the triangle: points just outside it take its edge's values.
+    w = max(w, vector3_zero);
+    auto sum = w.x + w.y + w.z;
+    w = sum > 0 ? w / sum : vector3{1, 0, 0};
+    if (mesh->has_per_vertex_friction()) m.friction = mesh->get_friction(t, w);
+    if (mesh->has_per_vertex_restitution()) m.restitution = std::min(scalar(1), mesh->get_restitution(t, w));
+    return m;
+}
+
+} // namespace
+
+bool has_per_vertex_material(const registry &registry, entity a, entity b) {
+    return per_vertex_mesh(registry, a) || per_vertex_mesh(registry, b);
+}
+
+material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point) {
+    const auto &mat_a = registry.get<material>(a);
+    const auto &mat_b = registry.get<material>(b);
+    if (mat_a.id != invalid_material_id && mat_b.id != invalid_material_id) {
+        if (auto *table = registry.ctx().find<material_mix_table>()) {
+            if (auto *mixed = table->find(mat_a.id, mat_b.id)) return *mixed;
+        }
+    }
+    auto ma = at_point(mat_a, per_vertex_mesh(registry, a), point.featureA, point.pivotA);
+    auto mb = at_point(mat_b, per_vertex_mesh(registry, b), point.featureB, point.pivotB);
+    return mix_materials(ma, mb);
 }
 
 } // namespace edyn

@@ -189,6 +189,9 @@ void validate_rigidbody_def(const rigidbody_def &def) {
         if (std::holds_alternative<plane_shape>(*def.shape) && def.kind != rigidbody_kind::rb_static) {
             fail(fn, "shape", "plane_shape is only allowed on static bodies");
         }
+        if (std::holds_alternative<mesh_shape>(*def.shape) && def.kind == rigidbody_kind::rb_dynamic) {
+            fail(fn, "shape", "mesh_shape is only allowed on static and kinematic bodies");
+        }
     }
     if (def.kind == rigidbody_kind::rb_dynamic) {
         check_mass(fn, def.mass);
@@ -259,6 +262,9 @@ void rigidbody_set_kind(registry &registry, entity e, rigidbody_kind kind) {
     if (shape && std::holds_alternative<plane_shape>(*shape) && kind != rigidbody_kind::rb_static) {
         throw std::invalid_argument("rigidbody_set_kind: a body with a plane_shape must stay static");
     }
+    if (shape && std::holds_alternative<mesh_shape>(*shape) && kind == rigidbody_kind::rb_dynamic) {
+        throw std::invalid_argument("rigidbody_set_kind: a body with a mesh_shape cannot become dynamic");
+    }
     auto *com = registry.try_get<center_of_mass>(e);
     auto com_value = com ? std::optional<vector3>(*com) : std::nullopt;
     mass_properties props{large_scalar, matrix3x3_zero, com_value.value_or(vector3_zero)};
@@ -299,6 +305,10 @@ void rigidbody_set_shape(registry &registry, entity e, std::optional<shapes_vari
         validate_shape(*shape);
         if (std::holds_alternative<plane_shape>(*shape) && kind != rigidbody_kind::rb_static) {
             throw std::invalid_argument("rigidbody_set_shape: plane_shape is only allowed on static bodies");
+        }
+        if (std::holds_alternative<mesh_shape>(*shape) && kind == rigidbody_kind::rb_dynamic) {
+            throw std::invalid_argument(
+                "rigidbody_set_shape: mesh_shape is only allowed on static and kinematic bodies");
         }
     } else if (kind == rigidbody_kind::rb_dynamic && !registry.all_of<inertia>(e)) {
         throw std::invalid_argument("rigidbody_set_shape: a dynamic body without a shape needs an inertia");

@@ -25,6 +25,13 @@ void check_axis(const char *shape, coordinate_axis axis) {
 
 } // namespace
 
+void validate_shape(const mesh_shape &shape) {
+    if (!shape.trimesh) throw_invalid_argument("mesh_shape: trimesh is null");
+    if (!shape.trimesh->initialized()) {
+        throw_invalid_argument("mesh_shape: trimesh is not initialized; call triangle_mesh::initialize()");
+    }
+}
+
 void validate_shape(const plane_shape &shape) {
     if (!isfinite(shape.normal)) {
         throw_invalid_argument("plane_shape: normal must be finite, got ", shape.normal);

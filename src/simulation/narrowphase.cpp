@@ -35,7 +35,22 @@ void fill_materials(const registry &registry, contact_manifold &manifold,
                     const contact_point_changes &changes) {
     auto *matA = registry.try_get<material>(manifold.body[0]);
     auto *matB = registry.try_get<material>(manifold.body[1]);
-    if (!matA || !matB || changes.num_created == 0) return;
+    if (!matA || !matB) return;
+    // Per-vertex materials of a mesh: every point, every step, as points move over the mesh.
+    if (has_per_vertex_material(registry, manifold.body[0], manifold.body[1])) {
+        for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
+            auto &cp = manifold.point[manifold.ids[i]];
+            auto mixed = get_point_material(registry, manifold.body[0], manifold.body[1], cp);
+            cp.friction = mixed.friction;
+            cp.restitution = mixed.restitution;
+            cp.roll_friction = mixed.roll_friction;
+            cp.spin_friction = mixed.spin_friction;
+            cp.stiffness = mixed.stiffness;
+            cp.damping = mixed.damping;
+        }
+        return;
+    }
+    if (changes.num_created == 0) return;
     auto mixed = get_mixed_material(registry, *matA, *matB);
     for (std::uint32_t i = 0; i < changes.num_created; ++i) {
         auto &cp = manifold.point[changes.created[i]];
@@ -98,7 +113,7 @@ contact_point_changes collide_manifold(const registry &registry, contact_manifol
         visit_shape(registry, b, [&](const auto &shapeB) {
             using A = std::decay_t<decltype(shapeA)>;
             using B = std::decay_t<decltype(shapeB)>;
-            if constexpr (!(std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>)) {
+            if constexpr (!(is_static_only_shape_v<A> && is_static_only_shape_v<B>)) {
                 collide(shapeA, shapeB, ctx, result);
             }
         });

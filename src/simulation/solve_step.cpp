@@ -107,6 +107,17 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
     c.damping = mixed.damping;
     c.normal = manifold.point[manifold.ids[0]].normal;
     c.source = source;
+    if (has_per_vertex_material(registry, a, b)) {
+        // The points' own values (the narrowphase interpolated them), averaged over the manifold
+        // whose friction and restitution the solver shares between its points.
+        scalar friction = 0, restitution = 0;
+        for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
+            friction += manifold.point[manifold.ids[i]].friction;
+            restitution += manifold.point[manifold.ids[i]].restitution;
+        }
+        c.friction = friction / scalar(manifold.num_points);
+        c.restitution = restitution / scalar(manifold.num_points);
+    }
 
     c.spin_impulse = 0;
     c.roll_impulse[0] = c.roll_impulse[1] = 0;

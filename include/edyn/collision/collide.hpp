@@ -122,7 +122,33 @@ void collide(const cylinder_shape &a, const compound_shape &b, const collision_c
 void collide(const polyhedron_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 
-// Any two shapes of a rigid body. Plane against plane reports nothing (both are static).
+// Triangle mesh: every convex shape and compounds (see triangle_mesh for the one-sided triangles
+// and their internal edges). Features on the mesh are triangle features whose `part` is the
+// triangle index. Meshes take their body's transform (unlike planes).
+void collide(const sphere_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const mesh_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const polyhedron_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const mesh_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const mesh_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const mesh_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
+void collide(const mesh_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const mesh_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+
+// Any two shapes of a rigid body. Two static-only shapes (planes, meshes) report nothing.
 void collide(const shapes_variant_t &a, const shapes_variant_t &b, const collision_context &ctx,
              collision_result &result);
 

@@ -52,11 +52,15 @@ struct compound_raycast_info {
     compound_child_raycast_info_variant child_info_var;
 };
 
-// Spheres and planes report std::monostate. Triangle meshes add their infos to the end when
-// mesh shapes are added.
+// Index of the mesh's triangle that was hit (triangle_mesh numbering).
+struct mesh_raycast_info {
+    std::size_t triangle_index;
+};
+
+// Spheres and planes report std::monostate.
 using raycast_info_variant =
     std::variant<std::monostate, box_raycast_info, cylinder_raycast_info, capsule_raycast_info,
-                 polyhedron_raycast_info, compound_raycast_info>;
+                 polyhedron_raycast_info, compound_raycast_info, mesh_raycast_info>;
 
 // Fraction of a ray that hits nothing.
 inline constexpr scalar raycast_miss_fraction = std::numeric_limits<scalar>::infinity();
@@ -86,6 +90,8 @@ struct shape_raycast_result {
 // - Planes ignore ctx.pos and ctx.orn (as planes do everywhere); the solid lies behind the
 //   normal.
 // - Compounds report the child hit first (the lowest child index on equal fractions).
+// - Meshes are surfaces: a ray hits a triangle from either side, with the normal facing the
+//   ray's start, the first triangle along the ray (the lowest index on equal fractions).
 shape_raycast_result shape_raycast(const plane_shape &shape, const raycast_context &ctx);
 shape_raycast_result shape_raycast(const sphere_shape &shape, const raycast_context &ctx);
 shape_raycast_result shape_raycast(const box_shape &shape, const raycast_context &ctx);
@@ -94,6 +100,7 @@ shape_raycast_result shape_raycast(const capsule_shape &shape, const raycast_con
 shape_raycast_result shape_raycast(const polyhedron_shape &shape, const raycast_context &ctx);
 shape_raycast_result shape_raycast(const compound_shape &shape, const raycast_context &ctx);
 shape_raycast_result shape_raycast(const compound_child_shape_t &shape, const raycast_context &ctx);
+shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_context &ctx);
 
 template<shapes_variant Variant>
 shape_raycast_result shape_raycast(const Variant &shape, const raycast_context &ctx) {

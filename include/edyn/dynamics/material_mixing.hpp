@@ -1,6 +1,7 @@
 #ifndef EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 #define EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 
+#include "edyn/collision/contact_point.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/ecs/registry.hpp"
 #include <cmath>
@@ -42,6 +43,15 @@ void insert_material_mixing(registry &registry, material_id_type id0, material_i
 
 // The material used for a contact between bodies with materials a and b.
 material_base get_mixed_material(const registry &registry, const material &a, const material &b);
+
+// Whether either body is a triangle mesh with per-vertex friction or restitution, so that its
+// contact points each have their own material (get_point_material).
+bool has_per_vertex_material(const registry &registry, entity a, entity b);
+
+// The material at one contact point of bodies a and b: a pair override when one exists;
+// otherwise each mesh body's friction and restitution interpolated at the point from the
+// vertices of its triangle (the point's feature names it), then mixed as usual.
+material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point);
 
 } // namespace edyn
 

@@ -139,6 +139,75 @@ void serialize(Archive &archive, polyhedron_shape &shape) {
     }
 }
 
+// Bounds on a triangle mesh read from bytes.
+inline constexpr std::size_t max_serialized_mesh_vertices = std::size_t(1) << 20;
+inline constexpr std::size_t max_serialized_mesh_indices = 6 * max_serialized_mesh_vertices;
+
+namespace detail {
+
+template<typename T>
+bool read_bounded_array(memory_input_archive &archive, std::vector<T> &values, std::size_t max_count) {
+    auto count = archive.read_size(std::min(max_count, archive.remaining() / sizeof(T)));
+    if (archive.failed()) return false;
+    values.resize(count);
+    for (auto &v : values)
+        archive(v);
+    return !archive.failed();
+}
+
+template<typename T>
+void write_array(memory_output_archive &archive, std::span<const T> values) {
+    archive.write_size(values.size());
+    for (auto v : values)
+        archive(v);
+}
+
+} // namespace detail
+
+// A mesh as its vertices, indices and per-vertex coefficients; the rest is rebuilt by
+// initialize(), which validates (whatever it refuses fails the archive). Sent after
+// initialize(), so the copy numbers its triangles as the original does. A shape without a mesh
+// round-trips as one.
+template<typename Archive>
+void serialize(Archive &archive, mesh_shape &shape) {
+    bool has_mesh = shape.trimesh != nullptr;
+    archive(has_mesh);
+    if constexpr (Archive::is_output) {
+        if (!has_mesh) return;
+        const auto &mesh = *shape.trimesh;
+        detail::write_array(archive, mesh.get_vertices());
+        detail::write_array(archive, mesh.get_indices());
+        detail::write_array(archive, mesh.get_friction_coefficients());
+        detail::write_array(archive, mesh.get_restitution_coefficients());
+    } else {
+        if (archive.failed()) return;
+        if (!has_mesh) {
+            shape.trimesh.reset();
+            return;
+        }
+        std::vector<vector3> vertices;
+        std::vector<std::uint32_t> indices;
+        std::vector<scalar> friction, restitution;
+        if (!detail::read_bounded_array(archive, vertices, max_serialized_mesh_vertices) ||
+            !detail::read_bounded_array(archive, indices, max_serialized_mesh_indices) ||
+            !detail::read_bounded_array(archive, friction, max_serialized_mesh_vertices) ||
+            !detail::read_bounded_array(archive, restitution, max_serialized_mesh_vertices)) {
+            return;
+        }
+        try {
+            auto mesh = std::make_shared<triangle_mesh>();
+            mesh->insert_vertices(vertices.begin(), vertices.end());
+            mesh->insert_indices(indices.begin(), indices.end());
+            mesh->insert_friction_coefficients(friction.begin(), friction.end());
+            mesh->insert_restitution_coefficients(restitution.begin(), restitution.end());
+            mesh->initialize();
+            shape.trimesh = std::move(mesh);
+        } catch (...) {
+            archive.fail();
+        }
+    }
+}
+
 // Each child as its shape, position and orientation (its bounds are recomputed), then whether
 // finish() had been called.
 template<typename Archive>

@@ -9,6 +9,7 @@
 #include "edyn/shapes/cylinder_shape.hpp"
 #include "edyn/shapes/polyhedron_shape.hpp"
 #include "edyn/shapes/sphere_shape.hpp"
+#include "edyn/shapes/static_tree.hpp"
 #include <array>
 #include <cstdint>
 #include <variant>
@@ -35,19 +36,11 @@ struct compound_shape {
         AABB aabb;
     };
 
-    // Node of the bounding volume tree; nodes[0] is the root. A leaf refers to children[index];
-    // an inner node's two children are nodes[index] and nodes[index + 1].
-    struct node {
-        AABB aabb;
-        std::uint32_t index;
-        bool leaf;
-    };
-
     static constexpr std::size_t max_children_without_tree = 8;
 
     std::vector<child> children;
-    // Empty when there are max_children_without_tree children or fewer.
-    std::vector<node> nodes;
+    // Over the children's AABBs; empty when there are max_children_without_tree children or fewer.
+    static_tree tree;
     // Set by finish(), cleared by add_shape().
     bool finished{false};
 
@@ -78,27 +71,13 @@ private:
     template<typename Test, typename Func>
     void visit_nodes(Test &&test, Func &func) const {
         EDYN_ASSERT(finished, "compound_shape used before finish()");
-        if (nodes.empty()) {
+        if (tree.empty()) {
             for (std::size_t i = 0; i < children.size(); ++i) {
                 if (test(children[i].aabb)) func(i);
             }
             return;
         }
-        // The tree is balanced (median splits), so its depth is at most 33 for 2^32 children.
-        std::array<std::uint32_t, 64> stack;
-        std::size_t size = 0;
-        stack[size++] = 0;
-        while (size > 0) {
-            const auto &n = nodes[stack[--size]];
-            if (!test(n.aabb)) continue;
-            if (n.leaf) {
-                func(std::size_t(n.index));
-            } else {
-                EDYN_ASSERT(size + 2 <= stack.size());
-                stack[size++] = n.index + 1;
-                stack[size++] = n.index;
-            }
-        }
+        tree.visit(test, func);
     }
 };
 

@@ -33,6 +33,8 @@ scalar shape_volume(const capsule_shape &shape);
 scalar shape_volume(const polyhedron_shape &shape);
 scalar shape_volume(const compound_shape &shape);
 scalar shape_volume(const compound_child_shape_t &shape);
+// Planes and meshes: infinite, as static-only shapes.
+scalar shape_volume(const mesh_shape &shape);
 
 template<shapes_variant Variant>
 scalar shape_volume(const Variant &shape) {
@@ -48,6 +50,7 @@ vector3 shape_centroid(const capsule_shape &shape);
 vector3 shape_centroid(const polyhedron_shape &shape);
 vector3 shape_centroid(const compound_shape &shape);
 vector3 shape_centroid(const compound_child_shape_t &shape);
+vector3 shape_centroid(const mesh_shape &shape);
 
 template<shapes_variant Variant>
 vector3 shape_centroid(const Variant &shape) {
@@ -65,7 +68,7 @@ matrix3x3 moment_of_inertia(const polyhedron_shape &shape, scalar mass);
 matrix3x3 moment_of_inertia(const compound_shape &shape, scalar mass);
 matrix3x3 moment_of_inertia(const compound_child_shape_t &shape, scalar mass);
 
-// Throws std::invalid_argument for shapes that can only be static (plane).
+// Throws std::invalid_argument for shapes that can only be static (plane, mesh).
 template<shapes_variant Variant>
 matrix3x3 moment_of_inertia(const Variant &shape, scalar mass) {
     return std::visit(
@@ -75,8 +78,8 @@ matrix3x3 moment_of_inertia(const Variant &shape, scalar mass) {
                           std::is_constructible_v<compound_child_shape_t, shape_type>) {
                 return moment_of_inertia(s, mass);
             } else {
-                throw std::invalid_argument("moment_of_inertia: the shape can only be static (plane) and has "
-                                            "no inertia");
+                throw std::invalid_argument("moment_of_inertia: the shape can only be static (plane or "
+                                            "mesh) and has no inertia");
             }
         },
         shape);

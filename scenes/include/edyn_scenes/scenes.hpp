@@ -3,12 +3,31 @@
 
 #include <cstdint>
 #include <edyn/edyn.hpp>
+#include <functional>
+#include <memory>
 #include <vector>
 
 namespace edyn::scenes {
 
 // A static ground: a plane through the origin with normal +y.
 entity make_ground(registry &registry, scalar friction = scalar(0.6), scalar restitution = 0);
+
+// Triangle meshes. A grid of `cells` x `cells` squares of side `cell_size` in the xz plane,
+// centred on the origin, two triangles per square facing +y, heights from height(x, z).
+std::shared_ptr<triangle_mesh> make_grid_mesh(unsigned cells, scalar cell_size,
+                                              const std::function<scalar(scalar, scalar)> &height);
+
+// A flat floor at y = 0 tessellated into `cells` x `cells` squares (two triangles each), as a
+// static body with a mesh_shape.
+entity make_mesh_floor(registry &registry, unsigned cells, scalar cell_size, scalar friction = scalar(0.6),
+                       scalar restitution = 0);
+
+// Rolling terrain: a height grid of `cells` x `cells` squares of `cell_size`, hills up to
+// `amplitude` high made of a few sine waves, as a static body with a mesh_shape. terrain_height
+// gives the surface's height of the same function (exact at the grid's vertices).
+scalar terrain_height(scalar x, scalar z, scalar amplitude);
+entity make_terrain(registry &registry, unsigned cells, scalar cell_size, scalar amplitude,
+                    scalar friction = scalar(0.6));
 
 // Pyramid of unit boxes (half extent `half_extent`) standing on the ground, `base` boxes wide
 // in its bottom row and one box fewer in each row above: base * (base + 1) / 2 boxes. Returns

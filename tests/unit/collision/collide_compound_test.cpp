@@ -351,7 +351,7 @@ TEST(collide_compound_test, tree_compound_reports_only_the_touched_child) {
         }
     }
     grid.finish();
-    ASSERT_FALSE(grid.nodes.empty());
+    ASSERT_FALSE(grid.tree.empty());
     auto small = box_shape{{0.1, 0.1, 0.1}};
     rng random(30);
     for (int k = 0; k < 16; ++k) {

@@ -64,6 +64,31 @@ sample<compound_shape> make_sample(std::type_identity<compound_shape>) {
 plane_shape plane_below() { return {vector3_y, 0}; }
 plane_shape plane_above(scalar height) { return {-vector3_y, -height}; }
 
+// A flat 4 m square of 8 triangles at y = `height` (mesh space), facing up or down.
+mesh_shape flat_mesh(scalar height, bool facing_up) {
+    std::vector<vector3> vertices;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            vertices.push_back({scalar(j) * 2 - 2, height, scalar(i) * 2 - 2});
+    }
+    std::vector<std::uint32_t> indices;
+    for (std::uint32_t i = 0; i < 2; ++i) {
+        for (std::uint32_t j = 0; j < 2; ++j) {
+            auto v00 = i * 3 + j, v01 = v00 + 1, v10 = v00 + 3, v11 = v00 + 4;
+            if (facing_up) {
+                indices.insert(indices.end(), {v00, v10, v11, v00, v11, v01});
+            } else {
+                indices.insert(indices.end(), {v00, v11, v10, v00, v01, v11});
+            }
+        }
+    }
+    auto mesh = std::make_shared<triangle_mesh>();
+    mesh->insert_vertices(vertices.begin(), vertices.end());
+    mesh->insert_indices(indices.begin(), indices.end());
+    mesh->initialize();
+    return {mesh};
+}
+
 struct scene {
     shapes_variant_t a;
     shapes_variant_t b;
@@ -82,6 +107,8 @@ scene make_scene() {
     shapes_variant_t b;
     if constexpr (std::is_same_v<B, plane_shape>) {
         b = plane_below();
+    } else if constexpr (std::is_same_v<B, mesh_shape>) {
+        b = flat_mesh(0, true);
     } else {
         auto s = make_sample(std::type_identity<B>{});
         b = s.shape;
@@ -90,6 +117,10 @@ scene make_scene() {
     shapes_variant_t a;
     if constexpr (std::is_same_v<A, plane_shape>) {
         a = plane_above(b_top - depth);
+    } else if constexpr (std::is_same_v<A, mesh_shape>) {
+        // The mesh takes its body's transform: at the origin, facing down at B's top less depth.
+        a = flat_mesh(b_top - depth, false);
+        ctx.ornA = quaternion_identity;
     } else {
         auto s = make_sample(std::type_identity<A>{});
         a = s.shape;
@@ -104,7 +135,7 @@ void check_pair() {
     SCOPED_TRACE(testing::Message() << "pair (" << s.a.index() << ", " << s.b.index() << ")");
     collision_result r;
     collide(s.a, s.b, s.ctx, r);
-    if constexpr (std::is_same_v<A, plane_shape> && std::is_same_v<B, plane_shape>) {
+    if constexpr (is_static_only_shape_v<A> && is_static_only_shape_v<B>) {
         EXPECT_EQ(r.num_points, 0u);
     } else {
         ASSERT_GT(r.num_points, 0u);

@@ -395,7 +395,7 @@ TEST(shape_raycast_test, compound_with_tree_matches_brute_force) {
         }
     }
     compound.finish();
-    ASSERT_FALSE(compound.nodes.empty());
+    ASSERT_FALSE(compound.tree.empty());
     int hits = 0;
     for (int trial = 0; trial < 300; ++trial) {
         auto pos = edyn::test::random_vector(rng, -1, 1);

@@ -26,13 +26,13 @@ static_assert(sizeof(polyhedron_shape) == sizeof(std::shared_ptr<const convex_me
 namespace {
 struct compound_shape_members {
     std::vector<compound_shape::child> children;
-    std::vector<compound_shape::node> nodes;
+    static_tree tree;
     bool finished;
 };
 } // namespace
 static_assert(sizeof(compound_shape) == sizeof(compound_shape_members),
               "compound_shape changed: update its serializer");
-static_assert(std::variant_size_v<shapes_variant_t> == 7,
+static_assert(std::variant_size_v<shapes_variant_t> == 8,
               "a shape was added: give it a serializer and a test");
 
 namespace {
@@ -112,11 +112,11 @@ void expect_same_compound(const compound_shape &actual, const compound_shape &ex
         EDYN_EXPECT_SAME(a.orientation, e.orientation) << " child " << i;
         expect_same_aabb(a.aabb, e.aabb);
     }
-    ASSERT_EQ(actual.nodes.size(), expected.nodes.size());
-    for (std::size_t i = 0; i < expected.nodes.size(); ++i) {
-        expect_same_aabb(actual.nodes[i].aabb, expected.nodes[i].aabb);
-        EXPECT_EQ(actual.nodes[i].index, expected.nodes[i].index) << "node " << i;
-        EXPECT_EQ(actual.nodes[i].leaf, expected.nodes[i].leaf) << "node " << i;
+    ASSERT_EQ(actual.tree.nodes.size(), expected.tree.nodes.size());
+    for (std::size_t i = 0; i < expected.tree.nodes.size(); ++i) {
+        expect_same_aabb(actual.tree.nodes[i].aabb, expected.tree.nodes[i].aabb);
+        EXPECT_EQ(actual.tree.nodes[i].index, expected.tree.nodes[i].index) << "node " << i;
+        EXPECT_EQ(actual.tree.nodes[i].leaf, expected.tree.nodes[i].leaf) << "node " << i;
     }
 }
 
@@ -189,6 +189,73 @@ TEST(shape_serialization_test, polyhedron_without_mesh_round_trips) {
     auto bytes = encode(polyhedron_shape{});
     EXPECT_FALSE(decode_fails(bytes, copy));
     EXPECT_EQ(copy.mesh, nullptr);
+}
+
+TEST(shape_serialization_test, mesh_round_trips_with_its_triangles_and_coefficients) {
+    auto mesh = std::make_shared<triangle_mesh>();
+    std::vector<vector3> vertices{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}, {2, 0, 0}};
+    // The last triangle has no area: initialize() drops it, and the copy numbers as the original.
+    std::vector<std::uint32_t> indices{0, 2, 1, 0, 3, 2, 1, 1, 4};
+    std::vector<scalar> friction{0, scalar(0.25), scalar(0.5), scalar(0.75), 1};
+    mesh->insert_vertices(vertices.begin(), vertices.end());
+    mesh->insert_indices(indices.begin(), indices.end());
+    mesh->insert_friction_coefficients(friction.begin(), friction.end());
+    mesh->initialize();
+    ASSERT_EQ(mesh->num_triangles(), 2u);
+
+    auto copy = round_trip(mesh_shape{mesh});
+    ASSERT_TRUE(copy.trimesh);
+    ASSERT_TRUE(copy.trimesh->initialized());
+    ASSERT_EQ(copy.trimesh->num_triangles(), 2u);
+    for (std::size_t t = 0; t < 2; ++t) {
+        for (std::size_t i = 0; i < 3; ++i)
+            EXPECT_EQ(copy.trimesh->get_vertex_index(t, i), mesh->get_vertex_index(t, i));
+        EXPECT_EQ(copy.trimesh->get_triangle_normal(t), mesh->get_triangle_normal(t));
+    }
+    EXPECT_TRUE(copy.trimesh->has_per_vertex_friction());
+    EXPECT_FALSE(copy.trimesh->has_per_vertex_restitution());
+    EXPECT_EQ(copy.trimesh->get_friction(1, {0, 0, 1}), mesh->get_friction(1, {0, 0, 1}));
+
+    mesh_shape none = mesh_shape{mesh};
+    EXPECT_FALSE(decode_fails(encode(mesh_shape{}), none));
+    EXPECT_EQ(none.trimesh, nullptr);
+}
+
+TEST(shape_serialization_test, malformed_meshes_fail) {
+    auto bytes_of = [](const std::vector<vector3> &vertices, const std::vector<std::uint32_t> &indices,
+                       const std::vector<scalar> &friction) {
+        std::vector<std::uint8_t> bytes;
+        memory_output_archive archive(bytes);
+        archive(true);
+        archive.write_size(vertices.size());
+        for (auto v : vertices)
+            archive(v);
+        archive.write_size(indices.size());
+        for (auto i : indices)
+            archive(i);
+        archive.write_size(friction.size());
+        for (auto f : friction)
+            archive(f);
+        archive.write_size(0);
+        return bytes;
+    };
+    std::vector<vector3> vertices{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}};
+    ASSERT_FALSE(decode_fails<mesh_shape>(bytes_of(vertices, {0, 2, 1}, {})));
+    // An index out of range, a count not a multiple of three, no triangles, coefficients of the
+    // wrong count or negative, a non-finite vertex, a count beyond the bytes.
+    EXPECT_TRUE(decode_fails<mesh_shape>(bytes_of(vertices, {0, 2, 3}, {})));
+    EXPECT_TRUE(decode_fails<mesh_shape>(bytes_of(vertices, {0, 2}, {})));
+    EXPECT_TRUE(decode_fails<mesh_shape>(bytes_of(vertices, {}, {})));
+    EXPECT_TRUE(decode_fails<mesh_shape>(bytes_of(vertices, {0, 2, 1}, {1, 1})));
+    EXPECT_TRUE(decode_fails<mesh_shape>(bytes_of(vertices, {0, 2, 1}, {1, -1, 1})));
+    auto nan_vertices = vertices;
+    nan_vertices[2].z = std::numeric_limits<scalar>::quiet_NaN();
+    EXPECT_TRUE(decode_fails<mesh_shape>(bytes_of(nan_vertices, {0, 2, 1}, {})));
+    std::vector<std::uint8_t> lying;
+    memory_output_archive archive(lying);
+    archive(true);
+    archive.write_size(1000000);
+    EXPECT_TRUE(decode_fails<mesh_shape>(lying));
 }
 
 TEST(shape_serialization_test, malformed_polyhedra_fail) {
@@ -264,7 +331,7 @@ TEST(shape_serialization_test, compound_with_tree_and_polyhedra_round_trip) {
         }
     }
     original.finish();
-    ASSERT_FALSE(original.nodes.empty());
+    ASSERT_FALSE(original.tree.nodes.empty());
     auto copy = round_trip(original);
     expect_same_compound(copy, original);
     ASSERT_TRUE(std::holds_alternative<polyhedron_shape>(copy.children[0].shape));
@@ -321,6 +388,16 @@ TEST(shape_serialization_test, malformed_compounds_fail) {
     EXPECT_TRUE(kept.finished);
 }
 
+mesh_shape one_triangle_mesh() {
+    auto mesh = std::make_shared<triangle_mesh>();
+    std::vector<vector3> vertices{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    std::vector<std::uint32_t> indices{0, 2, 1};
+    mesh->insert_vertices(vertices.begin(), vertices.end());
+    mesh->insert_indices(indices.begin(), indices.end());
+    mesh->initialize();
+    return {mesh};
+}
+
 TEST(shape_serialization_test, shapes_variant_round_trip) {
     std::vector<shapes_variant_t> shapes{plane_shape{vector3_y, 1},
                                          sphere_shape{2},
@@ -328,7 +405,8 @@ TEST(shape_serialization_test, shapes_variant_round_trip) {
                                          capsule_shape{1, 2, coordinate_axis::y},
                                          box_shape{1, 2, 3},
                                          tetrahedron(),
-                                         box_and_sphere()};
+                                         box_and_sphere(),
+                                         one_triangle_mesh()};
     ASSERT_EQ(shapes.size(), num_shapes);
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         auto copy = round_trip(shapes[i]);

@@ -48,7 +48,7 @@ compound_shape grid_compound(std::mt19937 &rng) {
 }
 
 std::size_t tree_depth(const compound_shape &compound, std::uint32_t node) {
-    const auto &n = compound.nodes[node];
+    const auto &n = compound.tree.nodes[node];
     if (n.leaf) return 1;
     return 1 + std::max(tree_depth(compound, n.index), tree_depth(compound, n.index + 1));
 }
@@ -62,7 +62,7 @@ TEST(compound_shape_test, children_store_transform_and_aabb) {
     compound.add_shape(sphere_shape{scalar(0.5)}, {-2, 1, 0});
     compound.finish();
     ASSERT_EQ(compound.children.size(), 2u);
-    EXPECT_TRUE(compound.nodes.empty());
+    EXPECT_TRUE(compound.tree.nodes.empty());
     // The orientation is stored normalised.
     EXPECT_NEAR(length(compound.children[0].orientation), 1, 1e-6);
     auto diag = std::sqrt(scalar(2));
@@ -110,23 +110,23 @@ TEST(compound_shape_test, tree_is_built_beyond_eight_children) {
     for (int i = 0; i < 8; ++i)
         small.add_shape(sphere_shape{1}, {scalar(i) * 3, 0, 0});
     small.finish();
-    EXPECT_TRUE(small.nodes.empty());
+    EXPECT_TRUE(small.tree.empty());
 
     auto compound = grid_compound(rng);
     auto n = compound.children.size();
     ASSERT_EQ(n, 120u);
-    ASSERT_EQ(compound.nodes.size(), 2 * n - 1);
+    ASSERT_EQ(compound.tree.nodes.size(), 2 * n - 1);
     // Balanced: depth ceil(log2(120)) + 1 = 8.
     EXPECT_LE(tree_depth(compound, 0), 8u);
     // Every node bounds its subtree; every child is a leaf exactly once.
     std::vector<int> leaf_count(n, 0);
-    for (const auto &node : compound.nodes) {
+    for (const auto &node : compound.tree.nodes) {
         if (node.leaf) {
             ++leaf_count[node.index];
             EXPECT_EQ(node.aabb, compound.children[node.index].aabb);
         } else {
-            EXPECT_TRUE(contains(node.aabb, compound.nodes[node.index].aabb));
-            EXPECT_TRUE(contains(node.aabb, compound.nodes[node.index + 1].aabb));
+            EXPECT_TRUE(contains(node.aabb, compound.tree.nodes[node.index].aabb));
+            EXPECT_TRUE(contains(node.aabb, compound.tree.nodes[node.index + 1].aabb));
         }
     }
     EXPECT_TRUE(std::all_of(leaf_count.begin(), leaf_count.end(), [](int c) { return c == 1; }));

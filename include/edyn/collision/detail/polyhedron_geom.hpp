@@ -4,7 +4,9 @@
 #include "edyn/collision/collision_result.hpp"
 #include "edyn/collision/detail/cylinder_geom.hpp"
 #include "edyn/math/matrix3x3.hpp"
+#include "edyn/shapes/capsule_shape.hpp"
 #include "edyn/shapes/convex_mesh.hpp"
+#include "edyn/shapes/sphere_shape.hpp"
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -191,6 +193,16 @@ scalar segment_circle_distance_bound(const vector3 &p0, const vector3 &p1, const
 // and polyhedron–box (defined in collide_polyhedron_polyhedron.cpp).
 void collide_polytopes(const polytope &a, const polytope &b, const collision_context &ctx,
                        collision_result &result) noexcept;
+
+// The cores of polyhedron–sphere, polyhedron–capsule and cylinder–polyhedron for any polytope
+// (the polyhedron's mesh, or a triangle's prism): the polytope is shape A, or B for the cylinder,
+// at the transform `ctx` gives it.
+void collide_polytope_sphere(const polytope &poly, const sphere_shape &b, const collision_context &ctx,
+                             collision_result &result) noexcept;
+void collide_polytope_capsule(const polytope &poly, const capsule_shape &b, const collision_context &ctx,
+                              collision_result &result) noexcept;
+void collide_cylinder_polytope(const cylinder_shape &a, const polytope &poly, const collision_context &ctx,
+                               collision_result &result) noexcept;
 
 } // namespace edyn::detail
 

@@ -1,0 +1,453 @@
+#include "edyn/collision/collide.hpp"
+#include "edyn/collision/detail/collide_common.hpp"
+#include "edyn/collision/detail/polyhedron_geom.hpp"
+#include "edyn/collision/detail/triangle_mesh_collision.hpp"
+#include "edyn/math/geom.hpp"
+#include "edyn/math/math.hpp"
+#include "edyn/math/transform.hpp"
+#include "edyn/shapes/shape_aabb.hpp"
+#include <array>
+#include <cmath>
+
+// Convex shapes against triangle meshes. Each triangle whose AABB meets the shape's (in the
+// mesh's space, grown by the threshold) is made a thin prism: the triangle on top, extruded
+// behind its front by its longest edge. The prism is a convex polytope, so the polyhedron pairs'
+// exact routines collide the shape with it. Their points are then checked against the triangle's
+// Voronoi regions: a normal other than the triangle's is kept only where the point lies on an
+// active edge or vertex (a convex edge, or the mesh's boundary). Otherwise the shape touches an
+// internal edge, a concave one or the prism's hidden sides, and the triangle's manifold is built
+// again along the triangle's normal: the shape's supporting feature clipped to the triangle. So
+// a shape crossing from one triangle to a coplanar neighbour never sees the edge between them.
+namespace edyn {
+
+namespace {
+
+using detail::polytope;
+
+// Topology of every triangle's prism: vertices 0..2 the triangle (counter-clockwise seen from
+// the front), 3..5 the same extruded behind it. Face 0 the triangle, face 1 the back, face 2 + i
+// the side through edge i (from vertex i to vertex (i + 1) % 3).
+constexpr std::array<std::uint32_t, 18> prism_indices{0, 1, 2, 5, 4, 3, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
+constexpr std::array<convex_mesh::face_range, 5> prism_faces{{{0, 3}, {3, 3}, {6, 4}, {10, 4}, {14, 4}}};
+// Front edges, back edges, then the extruded edges at each vertex; each runs from its first
+// vertex to its second in its first face.
+constexpr std::array<std::array<std::uint32_t, 2>, 9> prism_edges{
+    {{0, 1}, {1, 2}, {2, 0}, {4, 3}, {5, 4}, {3, 5}, {0, 3}, {1, 4}, {2, 5}}};
+constexpr std::array<std::array<std::uint32_t, 2>, 9> prism_edge_faces{
+    {{0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}, {2, 4}, {3, 2}, {4, 3}}};
+
+// One triangle's prism in a frame centred on the triangle's centroid and aligned with the mesh.
+struct triangle_prism {
+    vector3 centroid; // Mesh space.
+    vector3 normal;   // Mesh space, the triangle's front.
+    scalar depth;
+    std::array<vector3, 6> vertices;
+    std::array<vector3, 5> normals;
+    std::array<scalar, 5> plane_constants;
+    std::array<vector3, 4> directions;
+    scalar bounding_radius;
+
+    triangle_prism(const triangle_mesh &mesh, std::size_t t) noexcept {
+        auto tri = mesh.get_triangle_vertices(t);
+        normal = mesh.get_triangle_normal(t);
+        centroid = (tri[0] + tri[1] + tri[2]) / scalar(3);
+        depth = std::max({length(tri[1] - tri[0]), length(tri[2] - tri[1]), length(tri[0] - tri[2])});
+        bounding_radius = 0;
+        for (int i = 0; i < 3; ++i) {
+            vertices[i] = tri[i] - centroid;
+            vertices[i + 3] = vertices[i] - normal * depth;
+            bounding_radius = std::max(bounding_radius, length(vertices[i + 3]));
+        }
+        normals[0] = normal;
+        normals[1] = -normal;
+        for (int i = 0; i < 3; ++i) {
+            auto edge = vertices[(i + 1) % 3] - vertices[i];
+            normals[2 + i] = normalize(cross(edge, normal));
+            directions[i] = normalize(edge);
+        }
+        directions[3] = normal;
+        for (std::size_t f = 0; f < 5; ++f)
+            plane_constants[f] = dot(normals[f], vertices[prism_indices[prism_faces[f].first]]);
+    }
+
+    triangle_prism(const triangle_prism &) = delete;
+    triangle_prism &operator=(const triangle_prism &) = delete;
+
+    polytope view() const noexcept {
+        polytope p;
+        p.vertices = vertices;
+        p.indices = prism_indices;
+        p.faces = prism_faces;
+        p.normals = normals;
+        p.plane_constants = plane_constants;
+        p.edges = prism_edges;
+        p.edge_faces = prism_edge_faces;
+        p.unique_edge_directions = directions;
+        p.bounding_radius = bounding_radius;
+        return p;
+    }
+};
+
+// Cosine above which a normal is the triangle's own.
+constexpr scalar face_normal_cosine = scalar(0.9999);
+// Barycentric tolerance of the feature classification, and how far outside its triangle a
+// point along the triangle's normal may lie (relative to the triangle's size) and still count.
+constexpr scalar feature_tolerance = scalar(1e-4);
+constexpr scalar outside_tolerance = scalar(1e-3);
+
+// The feature of triangle t nearest to p (mesh space), from p's barycentric coordinates.
+collision_feature triangle_feature_at(std::size_t t, const vector3 &w) noexcept {
+    collision_feature f;
+    f.part = static_cast<std::int32_t>(t);
+    int low = 0;
+    std::uint32_t last_low = 0;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        if (w[i] <= feature_tolerance) {
+            ++low;
+            last_low = i;
+        }
+    }
+    if (low == 0) {
+        f.feature = triangle_feature::face;
+        f.index = 0;
+    } else if (low == 1) {
+        // The edge opposite the vertex whose weight vanishes.
+        f.feature = triangle_feature::edge;
+        f.index = (last_low + 1) % 3;
+    } else {
+        f.feature = triangle_feature::vertex;
+        f.index = w.x >= w.y && w.x >= w.z ? 0u : (w.y >= w.z ? 1u : 2u);
+    }
+    return f;
+}
+
+bool feature_allows_normal(const triangle_mesh &mesh, std::size_t t, const collision_feature &f,
+                           const vector3 &normal_mesh) noexcept {
+    auto c = dot(normal_mesh, mesh.get_triangle_normal(t));
+    if (c >= face_normal_cosine) return true;
+    // Only active edges and vertices give other normals, and none facing behind the triangle.
+    if (c < -feature_tolerance) return false;
+    auto kind = std::get<triangle_feature>(f.feature);
+    if (kind == triangle_feature::edge) return mesh.is_edge_active(t, f.index);
+    if (kind == triangle_feature::vertex) return mesh.is_vertex_active(t, f.index);
+    return false;
+}
+
+// Clips the convex polygon `poly` (count points, in the prism's frame) to the triangle's prism
+// sides; returns the number of points left in `out`.
+constexpr std::size_t max_clip_points = 64;
+
+std::size_t clip_to_triangle(const triangle_prism &prism, const vector3 *poly, std::size_t count,
+                             vector3 (&out)[max_clip_points]) noexcept {
+    vector3 buffer[max_clip_points];
+    const vector3 *in = poly;
+    std::size_t in_count = count;
+    std::size_t out_count = 0;
+    for (int side = 0; side < 3; ++side) {
+        auto *target = side % 2 == 0 ? out : buffer;
+        out_count = 0;
+        const auto &n = prism.normals[2 + side];
+        auto c = prism.plane_constants[2 + side];
+        for (std::size_t i = 0; i < in_count; ++i) {
+            const auto &p = in[i];
+            const auto &q = in[(i + 1) % in_count];
+            auto dp = dot(n, p) - c, dq = dot(n, q) - c;
+            if (dp <= 0 && out_count < max_clip_points) target[out_count++] = p;
+            if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
+                if (out_count < max_clip_points) target[out_count++] = p + (q - p) * (dp / (dp - dq));
+            }
+        }
+        in = target;
+        in_count = out_count;
+        if (in_count == 0) break;
+    }
+    // Three passes: the last wrote into `out`.
+    return out_count;
+}
+
+// Where the triangle's normal is imposed: the points of the shape's supporting polygon (in the
+// prism's frame) clipped to the triangle, each at its height over the triangle's plane.
+void forced_polygon_points(const triangle_prism &prism, const vector3 *poly, std::size_t count,
+                           const collision_context &prism_ctx, collision_result &result) noexcept {
+    vector3 clipped[max_clip_points];
+    auto n = clip_to_triangle(prism, poly, count, clipped);
+    auto world_normal = rotate(prism_ctx.ornB, prism.normal);
+    for (std::size_t i = 0; i < n; ++i) {
+        auto distance = dot(clipped[i] - prism.vertices[0], prism.normal);
+        if (distance > prism_ctx.threshold) continue;
+        collision_result::collision_point p;
+        auto world_a = to_world_space(clipped[i], prism_ctx.posB, prism_ctx.ornB);
+        p.pivotA = to_object_space(world_a, prism_ctx.posA, prism_ctx.ornA);
+        p.pivotB = clipped[i] - prism.normal * distance;
+        p.normal = world_normal;
+        p.distance = distance;
+        result.add_point(p);
+    }
+}
+
+// A polytope's (box's, polyhedron's) manifold along the triangle's normal.
+void forced_polytope(const polytope &poly, const triangle_prism &prism, const collision_context &prism_ctx,
+                     collision_result &result) noexcept {
+    // The polytope in the prism's frame: x_prism = r * x_poly + t.
+    auto inv_orn_b = conjugate(prism_ctx.ornB);
+    auto orn = inv_orn_b * prism_ctx.ornA;
+    auto pos = rotate(inv_orn_b, prism_ctx.posA - prism_ctx.posB);
+    auto dir = rotate(conjugate(orn), -prism.normal);
+    auto f = detail::polytope_support_feature(poly, dir);
+    vector3 points[max_clip_points];
+    std::size_t count = 0;
+    if (f.kind == polyhedron_feature::face && poly.face_size(f.index) <= max_clip_points) {
+        for (std::uint32_t k = 0; k < poly.face_size(f.index); ++k)
+            points[count++] = pos + rotate(orn, poly.face_vertex(f.index, k));
+    } else if (f.kind == polyhedron_feature::edge) {
+        points[count++] = pos + rotate(orn, poly.vertices[poly.edges[f.index][0]]);
+        points[count++] = pos + rotate(orn, poly.vertices[poly.edges[f.index][1]]);
+    } else {
+        points[count++] = pos + rotate(orn, poly.vertices[detail::polytope_support_vertex(poly, dir)]);
+    }
+    forced_polygon_points(prism, points, count, prism_ctx, result);
+}
+
+// A round shape's (sphere's, capsule's, cylinder's) manifold along the triangle's normal, from
+// its supporting feature in the prism's frame: a point, a side line, or a cap facing the
+// triangle, whose rim stands in as a regular polygon of 16 sides (its corners are on the rim,
+// its sides within 2% of the radius inside it).
+void forced_feature(const detail::contact_feature &feature, const triangle_prism &prism,
+                    const collision_context &prism_ctx, collision_result &result) noexcept {
+    using kind = detail::contact_feature_kind;
+    vector3 points[16];
+    std::size_t count = 0;
+    if (feature.kind == kind::segment) {
+        points[count++] = feature.vertices[0];
+        points[count++] = feature.vertices[1];
+    } else if (feature.kind == kind::disc) {
+        vector3 u, v;
+        plane_space(feature.normal, u, v);
+        for (int i = 0; i < 16; ++i) {
+            auto angle = scalar(i) * pi / 8;
+            points[count++] = feature.center + (u * std::cos(angle) + v * std::sin(angle)) * feature.radius;
+        }
+    } else {
+        points[count++] = feature.support;
+    }
+    forced_polygon_points(prism, points, count, prism_ctx, result);
+}
+
+// The shape in the prism's frame, for the supporting features of round shapes.
+struct local_pose {
+    vector3 pos;
+    quaternion orn;
+};
+
+local_pose pose_in_prism(const collision_context &prism_ctx) noexcept {
+    return {to_object_space(prism_ctx.posA, prism_ctx.posB, prism_ctx.ornB),
+            conjugate(prism_ctx.ornB) * prism_ctx.ornA};
+}
+
+// The exact pair and the manifold along the triangle's normal, per shape.
+void collide_prism(const sphere_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                   collision_result &result) {
+    detail::collide_swapped([](const polytope &p, const sphere_shape &s, const collision_context &c,
+                               collision_result &r) { detail::collide_polytope_sphere(p, s, c, r); },
+                            a, prism.view(), ctx, result);
+}
+
+void forced_prism(const sphere_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                  collision_result &result) {
+    auto pose = pose_in_prism(ctx);
+    detail::contact_feature f;
+    f.kind = detail::contact_feature_kind::point;
+    f.support = f.vertices[0] = pose.pos - prism.normal * a.radius;
+    forced_feature(f, prism, ctx, result);
+}
+
+void collide_prism(const capsule_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                   collision_result &result) {
+    detail::collide_swapped([](const polytope &p, const capsule_shape &s, const collision_context &c,
+                               collision_result &r) { detail::collide_polytope_capsule(p, s, c, r); },
+                            a, prism.view(), ctx, result);
+}
+
+void forced_prism(const capsule_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                  collision_result &result) {
+    auto pose = pose_in_prism(ctx);
+    auto seg = detail::make_capsule_segment(a, pose.pos, pose.orn);
+    forced_feature(detail::capsule_support_feature(seg.p0, seg.p1, a.radius, -prism.normal), prism, ctx,
+                   result);
+}
+
+void collide_prism(const cylinder_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                   collision_result &result) {
+    detail::collide_cylinder_polytope(a, prism.view(), ctx, result);
+}
+
+void forced_prism(const cylinder_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                  collision_result &result) {
+    auto pose = pose_in_prism(ctx);
+    auto cyl = detail::place_cylinder(a, pose.pos, pose.orn);
+    forced_feature(detail::cylinder_support_feature(cyl, -prism.normal), prism, ctx, result);
+}
+
+void collide_prism(const box_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                   collision_result &result) {
+    detail::box_polytope box(a.half_extents);
+    detail::collide_polytopes(box.view(), prism.view(), ctx, result);
+}
+
+void forced_prism(const box_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                  collision_result &result) {
+    detail::box_polytope box(a.half_extents);
+    forced_polytope(box.view(), prism, ctx, result);
+}
+
+void collide_prism(const polyhedron_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                   collision_result &result) {
+    detail::collide_polytopes(detail::make_polytope(*a.mesh), prism.view(), ctx, result);
+}
+
+void forced_prism(const polyhedron_shape &a, const triangle_prism &prism, const collision_context &ctx,
+                  collision_result &result) {
+    forced_polytope(detail::make_polytope(*a.mesh), prism, ctx, result);
+}
+
+// Shape A against every triangle of the mesh (at posB/ornB in ctx) near it.
+template<typename Shape>
+void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collision_context &ctx,
+                       collision_result &result) {
+    auto inv_orn_b = conjugate(ctx.ornB);
+    auto local_aabb = shape_aabb(a, rotate(inv_orn_b, ctx.posA - ctx.posB), inv_orn_b * ctx.ornA);
+    local_aabb = inset(local_aabb, vector3_one * ctx.threshold);
+
+    collision_result tri_result;
+    mesh.visit_triangles(local_aabb, [&](std::size_t t) {
+        triangle_prism prism(mesh, t);
+        auto prism_ctx = ctx;
+        prism_ctx.posB = to_world_space(prism.centroid, ctx.posB, ctx.ornB);
+
+        tri_result.num_points = 0;
+        collide_prism(a, prism, prism_ctx, tri_result);
+        auto tri = mesh.get_triangle_vertices(t);
+        bool forced = false;
+        for (std::size_t i = 0; i < tri_result.num_points && !forced; ++i) {
+            const auto &p = tri_result.point[i];
+            auto w = barycentric_coordinates(p.pivotB + prism.centroid, tri[0], tri[1], tri[2]);
+            auto feature = triangle_feature_at(t, w);
+            forced = !feature_allows_normal(mesh, t, feature, rotate(inv_orn_b, p.normal));
+        }
+        if (forced) {
+            tri_result.num_points = 0;
+            forced_prism(a, prism, prism_ctx, tri_result);
+        }
+
+        for (std::size_t i = 0; i < tri_result.num_points; ++i) {
+            auto p = tri_result.point[i];
+            if (forced) {
+                // Along the triangle's normal, each point is A's point over the triangle's
+                // plane; points beyond the triangle's edges belong to the neighbours.
+                auto on_a = to_object_space(to_world_space(p.pivotA, ctx.posA, ctx.ornA), ctx.posB, ctx.ornB);
+                auto normal = mesh.get_triangle_normal(t);
+                auto distance = dot(on_a - tri[0], normal);
+                if (distance > ctx.threshold || distance < -prism.depth) continue;
+                p.pivotB = on_a - normal * distance;
+                p.distance = distance;
+                p.normal = rotate(ctx.ornB, normal);
+            } else {
+                p.pivotB += prism.centroid;
+            }
+            auto w = barycentric_coordinates(p.pivotB, tri[0], tri[1], tri[2]);
+            if (forced && (w.x < -outside_tolerance || w.y < -outside_tolerance || w.z < -outside_tolerance))
+                continue;
+            p.featureB = triangle_feature_at(t, w);
+            result.add_point(p);
+        }
+    });
+}
+
+} // namespace
+
+namespace detail {
+
+void collide_triangle_mesh(const sphere_shape &a, const triangle_mesh &b, const collision_context &ctx,
+                           collision_result &result) {
+    collide_triangles(a, b, ctx, result);
+}
+
+void collide_triangle_mesh(const capsule_shape &a, const triangle_mesh &b, const collision_context &ctx,
+                           collision_result &result) {
+    collide_triangles(a, b, ctx, result);
+}
+
+void collide_triangle_mesh(const cylinder_shape &a, const triangle_mesh &b, const collision_context &ctx,
+                           collision_result &result) {
+    collide_triangles(a, b, ctx, result);
+}
+
+void collide_triangle_mesh(const box_shape &a, const triangle_mesh &b, const collision_context &ctx,
+                           collision_result &result) {
+    collide_triangles(a, b, ctx, result);
+}
+
+void collide_triangle_mesh(const polyhedron_shape &a, const triangle_mesh &b, const collision_context &ctx,
+                           collision_result &result) {
+    EDYN_ASSERT(a.mesh);
+    collide_triangles(a, b, ctx, result);
+}
+
+} // namespace detail
+
+void collide(const sphere_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(b.trimesh);
+    detail::collide_triangle_mesh(a, *b.trimesh, ctx, result);
+}
+
+void collide(const capsule_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(b.trimesh);
+    detail::collide_triangle_mesh(a, *b.trimesh, ctx, result);
+}
+
+void collide(const cylinder_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(b.trimesh);
+    detail::collide_triangle_mesh(a, *b.trimesh, ctx, result);
+}
+
+void collide(const box_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(b.trimesh);
+    detail::collide_triangle_mesh(a, *b.trimesh, ctx, result);
+}
+
+void collide(const polyhedron_shape &a, const mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    EDYN_ASSERT(b.trimesh);
+    detail::collide_triangle_mesh(a, *b.trimesh, ctx, result);
+}
+
+void collide(const mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const mesh_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const mesh_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const mesh_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const mesh_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+} // namespace edyn
