@@ -1,0 +1,211 @@
+// What a client does with values from its server that would hang or break its simulation:
+// settings, times and playout delays out of range, bodies it cannot simulate, and bodies or
+// constraints for entities that already have another role. Each is refused and counted; the
+// client keeps running.
+#include "src/networking/network_registry.hpp"
+#include <chrono>
+#include <cmath>
+#include <edyn/edyn.hpp>
+#include <edyn/networking/client.hpp>
+#include <edyn/serialization/constraint_types.hpp>
+#include <edyn/serialization/dynamics_types.hpp>
+#include <edyn/serialization/shape_types.hpp>
+#include <gtest/gtest.h>
+#include <limits>
+
+namespace {
+
+using namespace edyn;
+
+// A client with no server: the test plays the server, its packets going through bytes as a
+// transport carries them.
+struct lone_client {
+    registry reg;
+    double time{0};
+
+    lone_client() {
+        attach(reg, init_config{execution_mode::sequential});
+        init_network_client(reg);
+        set_network_client_round_trip_time(reg, 0);
+    }
+    ~lone_client() { deinit_network_client(reg); }
+    lone_client(const lone_client &) = delete;
+    lone_client &operator=(const lone_client &) = delete;
+
+    void receive(const packet::edyn_packet &sent) {
+        auto data = std::vector<std::uint8_t>{};
+        auto out = memory_output_archive(data);
+        out(sent);
+        auto packet = packet::edyn_packet{};
+        auto in = memory_input_archive(data.data(), data.size());
+        in(packet);
+        ASSERT_FALSE(in.failed());
+        client_receive_packet(reg, packet);
+    }
+
+    void frame() {
+        time += 1.0 / 60;
+        update_network_client(reg);
+        wait_for_network_client(reg);
+        update(reg, time);
+    }
+
+    const network_client_rejections &rejected() const { return get_network_client_rejections(reg); }
+};
+
+packet::server_settings default_settings() {
+    auto s = settings{};
+    return {s.fixed_dt,
+            s.gravity,
+            s.num_substeps,
+            s.num_relax_iterations,
+            s.num_restitution_iterations,
+            s.num_individual_restitution_iterations};
+}
+
+// A pool of values of the networked type at `index`, each for an entity of the packet's list.
+template<typename T>
+packet::pool_snapshot make_pool(std::uint16_t index, const std::vector<std::pair<std::size_t, T>> &values) {
+    auto pool = packet::pool_snapshot{index, {}};
+    auto archive = memory_output_archive(pool.data);
+    for (auto [position, value] : values) {
+        archive.write_size(position);
+        archive(value);
+    }
+    return pool;
+}
+
+template<typename T>
+std::uint16_t network_index_of(registry &reg) {
+    return std::uint16_t(ensure_network_registry(reg).index_of(type_index<T>()));
+}
+
+rigidbody_def box_at(const vector3 &pos) {
+    auto def = rigidbody_def{};
+    def.shape = box_shape{{0.5, 0.5, 0.5}};
+    def.position = pos;
+    return def;
+}
+
+// Remote entities: any entities of another registry will do.
+std::vector<entity> remote_entities(std::size_t count) {
+    static registry server;
+    auto result = std::vector<entity>{};
+    for (std::size_t i = 0; i < count; ++i)
+        result.push_back(server.create());
+    return result;
+}
+
+bool is_body(const lone_client &c, entity remote) {
+    auto local = client_local_entity(c.reg, remote);
+    return local != null && c.reg.valid(local) && c.reg.all_of<rigidbody_tag>(local);
+}
+
+TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
+    auto bad = std::vector<std::pair<const char *, packet::server_settings>>{};
+    auto add = [&](const char *what, auto change) {
+        auto s = default_settings();
+        change(s);
+        bad.emplace_back(what, s);
+    };
+    // Counts a step would loop over for hours, and dts that overflow the step count.
+    add("substeps", [](auto &s) { s.num_substeps = 4000000000u; });
+    add("zero substeps", [](auto &s) { s.num_substeps = 0; });
+    add("relax", [](auto &s) { s.num_relax_iterations = 4000000000u; });
+    add("restitution", [](auto &s) { s.num_restitution_iterations = 4000000000u; });
+    add("individual restitution", [](auto &s) { s.num_individual_restitution_iterations = 4000000000u; });
+    add("tiny dt", [](auto &s) { s.fixed_dt = scalar(1e-21); });
+    add("huge dt", [](auto &s) { s.fixed_dt = scalar(5.7e36); });
+    add("NaN dt", [](auto &s) { s.fixed_dt = std::numeric_limits<scalar>::quiet_NaN(); });
+    add("huge gravity", [](auto &s) { s.gravity = {0, scalar(-4e34), 0}; });
+    add("NaN gravity", [](auto &s) { s.gravity = {std::numeric_limits<scalar>::quiet_NaN(), 0, 0}; });
+
+    lone_client c;
+    auto before = get_settings(c.reg);
+    std::uint32_t refused = 0;
+    for (auto &[what, s] : bad) {
+        SCOPED_TRACE(what);
+        c.receive({s});
+        EXPECT_EQ(c.rejected().out_of_range, ++refused);
+        // Nothing of a refused packet is applied, not even its valid fields.
+        auto &now = get_settings(c.reg);
+        ASSERT_EQ(now.num_substeps, before.num_substeps);
+        ASSERT_EQ(now.num_relax_iterations, before.num_relax_iterations);
+        ASSERT_EQ(now.num_restitution_iterations, before.num_restitution_iterations);
+        ASSERT_EQ(now.num_individual_restitution_iterations, before.num_individual_restitution_iterations);
+        ASSERT_EQ(now.fixed_dt, before.fixed_dt);
+        ASSERT_EQ(now.gravity, before.gravity);
+    }
+    // The client still steps, at once.
+    make_rigidbody(c.reg, box_at({0, 1, 0}));
+    auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 30; ++i)
+        c.frame();
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+
+    // Settings within range are applied.
+    auto good = default_settings();
+    good.fixed_dt = scalar(1) / 120;
+    good.gravity = {0, scalar(-1.62), 0};
+    good.num_substeps = max_solver_substeps;
+    good.num_relax_iterations = 2;
+    c.receive({good});
+    EXPECT_EQ(c.rejected().out_of_range, refused);
+    EXPECT_EQ(get_fixed_dt(c.reg), scalar(1) / 120);
+    EXPECT_EQ(get_gravity(c.reg).y, scalar(-1.62));
+    EXPECT_EQ(get_solver_substeps(c.reg), max_solver_substeps);
+    EXPECT_EQ(get_solver_relax_iterations(c.reg), 2u);
+}
+
+TEST(network_bounds, playout_delays_and_times_out_of_range_are_refused) {
+    lone_client c;
+    for (double delay : {1e300, -1.0, std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::quiet_NaN(), 1e6}) {
+        c.receive({packet::set_playout_delay{delay}});
+    }
+    EXPECT_EQ(c.rejected().out_of_range, 5u);
+    // The client's first update asks for the time (request 1); an answer from a clock no server
+    // has is refused, and the client stays unsynchronised.
+    c.frame();
+    c.receive({packet::time_response{1, 1e300}});
+    EXPECT_EQ(c.rejected().out_of_range, 6u);
+    c.frame();
+    EXPECT_TRUE(std::isfinite(get_network_client_time(c.reg)));
+    EXPECT_LT(std::abs(get_network_client_time(c.reg)), 1.0)
+        << "the client's time follows its playout delay, which must not have taken a refused value";
+
+    // A playout delay in range is applied: the client's time leads by it.
+    c.receive({packet::set_playout_delay{0.1}});
+    EXPECT_EQ(c.rejected().out_of_range, 6u);
+    c.frame();
+    EXPECT_NEAR(get_network_client_time(c.reg) - get_simulation_time(c.reg), 0.1, 1.0 / 60 + 1e-9);
+}
+
+TEST(network_bounds, snapshots_from_far_in_the_past_or_future_are_refused) {
+    lone_client c;
+    auto remote = remote_entities(1);
+    auto body_index = network_index_of<rigidbody_def>(c.reg);
+    c.receive(
+        {packet::create_entity{0, remote, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    ASSERT_TRUE(is_body(c, remote[0]));
+    c.frame();
+    // Synchronised: the server's clock is the client's.
+    c.receive({packet::time_response{1, get_simulation_time(c.reg)}});
+    c.frame();
+    auto motion = network_motion{{0, 2, 0}, quaternion_identity, vector3_zero, vector3_zero};
+    for (double t : {-1e300, 1e300, -1e12, 1e12, get_network_client_time(c.reg) + 3600}) {
+        auto snapshot = packet::registry_snapshot{};
+        snapshot.timestamp = t;
+        snapshot.entities = remote;
+        snapshot.pools.push_back(make_pool<network_motion>(network_index::motion, {{0, motion}}));
+        c.receive({std::move(snapshot)});
+    }
+    EXPECT_EQ(c.rejected().out_of_range, 5u);
+    for (int i = 0; i < 10; ++i)
+        c.frame();
+    auto local = client_local_entity(c.reg, remote[0]);
+    EXPECT_TRUE(isfinite(c.reg.get<position>(local)));
+    EXPECT_TRUE(std::isfinite(get_network_client_time(c.reg)));
+}
+
+} // namespace
