@@ -2,6 +2,7 @@
 // settings, times and playout delays out of range, bodies it cannot simulate, and bodies or
 // constraints for entities that already have another role. Each is refused and counted; the
 // client keeps running.
+#include "src/networking/extrapolation.hpp"
 #include "src/networking/network_registry.hpp"
 #include <chrono>
 #include <cmath>
@@ -206,6 +207,38 @@ TEST(network_bounds, snapshots_from_far_in_the_past_or_future_are_refused) {
     auto local = client_local_entity(c.reg, remote[0]);
     EXPECT_TRUE(isfinite(c.reg.get<position>(local)));
     EXPECT_TRUE(std::isfinite(get_network_client_time(c.reg)));
+}
+
+// The extrapolation's step count is capped before it is converted: a start far in the past is
+// max_extrapolation_steps, not whatever an overflowing conversion gives.
+TEST(network_bounds, an_extrapolation_from_far_in_the_past_runs_its_most_steps) {
+    registry reg;
+    attach(reg, init_config{execution_mode::sequential});
+    auto input = extrapolation_input{};
+    input.settings = get_settings(reg);
+    input.settings.fixed_dt = scalar(1) / 64;
+    input.types.types = ensure_network_registry(reg).types;
+    auto dt = double(input.settings.fixed_dt);
+    // 2^32 steps back: exactly the count that wraps to zero in 32 bits.
+    input.start_time = -std::ldexp(1.0, 32) * dt;
+    input.end_time = 0;
+    auto result = extrapolation_result{};
+    run_extrapolation(input, result);
+    EXPECT_EQ(result.end_time, input.start_time + max_extrapolation_steps * dt);
+
+    for (double start : {-1e300, -std::numeric_limits<double>::infinity()}) {
+        SCOPED_TRACE(start);
+        input.start_time = start;
+        run_extrapolation(input, result);
+        EXPECT_EQ(result.end_time, start + max_extrapolation_steps * dt);
+    }
+    // Ahead of its end, or not a time: no steps.
+    input.start_time = 1e300;
+    run_extrapolation(input, result);
+    EXPECT_EQ(result.end_time, input.start_time);
+    input.start_time = std::numeric_limits<double>::quiet_NaN();
+    run_extrapolation(input, result);
+    EXPECT_TRUE(std::isnan(result.end_time));
 }
 
 } // namespace
