@@ -9,13 +9,20 @@ namespace edyn {
 
 // What the client refused of its server's packets, by reason: values that would make its
 // simulation hang or fail. The client trusts its server no more than the server its clients
-// (remote_client_rejections): a refused packet is dropped whole; nothing throws.
+// (remote_client_rejections): a refused packet is dropped whole, a refused body or constraint
+// leaves its entity without it; nothing throws.
 struct network_client_rejections {
     // Settings (server_settings), a playout delay or a time outside the ranges the client
     // accepts (settings.hpp, body_limits.hpp; times within a few seconds of its clock).
     std::uint32_t out_of_range{0};
+    // A body or constraint make_rigidbody or make_constraint would refuse, or a body beyond the
+    // range snapshots can carry (max_quantized_coordinate).
+    std::uint32_t invalid_value{0};
+    // A body or constraint for an entity that already has another role: a constraint for a
+    // body, a body for a constraint, either for an asset, a manifold or an island.
+    std::uint32_t conflicting_role{0};
 
-    std::uint32_t total() const noexcept { return out_of_range; }
+    std::uint32_t total() const noexcept { return out_of_range + invalid_value + conflicting_role; }
 };
 
 using network_client_packet_signal = sigh<void(const packet::edyn_packet &)>;

@@ -241,4 +241,151 @@ TEST(network_bounds, an_extrapolation_from_far_in_the_past_runs_its_most_steps) 
     EXPECT_TRUE(std::isnan(result.end_time));
 }
 
+TEST(network_bounds, bodies_the_client_cannot_simulate_are_refused) {
+    auto bad = std::vector<std::pair<const char *, rigidbody_def>>{};
+    auto add = [&](const char *what, auto change) {
+        auto def = box_at({0, 1, 0});
+        change(def);
+        bad.emplace_back(what, def);
+    };
+    add("position far beyond the snapshots' range", [](auto &d) { d.position = {scalar(1.7e38), 0, 0}; });
+    add("position past the snapshots' range", [](auto &d) {
+        d.position = {0, 0, -2 * max_quantized_coordinate};
+    });
+    add("velocity past the snapshots' range", [](auto &d) { d.linvel = {scalar(3e37), 0, 0}; });
+    add("shape reaching past the snapshots' range", [](auto &d) {
+        d.shape = box_shape{{scalar(1e30), 1, 1}};
+    });
+    add("huge gravity", [](auto &d) { d.gravity = vector3{0, scalar(-4e34), 0}; });
+    add("tiny inertia", [](auto &d) {
+        d.inertia = diagonal_matrix(vector3{scalar(1e-13), scalar(1e-13), scalar(1e-13)});
+    });
+    add("huge inertia", [](auto &d) { d.inertia = diagonal_matrix(vector3{scalar(1e30), 1, 1}); });
+    add("non-symmetric inertia", [](auto &d) {
+        auto I = matrix3x3_identity;
+        I[0][1] = scalar(0.9);
+        I[1][0] = scalar(-0.9);
+        d.inertia = I;
+    });
+    add("inertia with positive diagonal and determinant, not positive definite", [](auto &d) {
+        d.inertia = matrix3x3{{vector3{1, 2, 2}, vector3{2, 1, 2}, vector3{2, 2, 1}}};
+    });
+    add("tiny mass", [](auto &d) { d.mass = scalar(1e-30); });
+
+    lone_client c;
+    auto remote = remote_entities(bad.size() + 3);
+    auto values = std::vector<std::pair<std::size_t, rigidbody_def>>{};
+    for (std::size_t i = 0; i < bad.size(); ++i)
+        values.emplace_back(i, bad[i].second);
+    // Bodies that can be simulated, in the same packet, with a constraint to one of them.
+    auto good = bad.size();
+    values.emplace_back(good, box_at({2, 1, 0}));
+    values.emplace_back(good + 1, box_at({4, 1, 0}));
+    auto body_index = network_index_of<rigidbody_def>(c.reg);
+    auto create = packet::create_entity{0, remote, {make_pool(body_index, values)}};
+    // Constraints to every refused body, and between the good ones.
+    auto constraints = std::vector<std::pair<std::size_t, distance_constraint>>{};
+    auto tether = distance_constraint{};
+    tether.body[0] = remote[good];
+    tether.body[1] = remote[good + 1];
+    tether.distance = 2;
+    constraints.emplace_back(good + 2, tether);
+    create.pools.push_back(make_pool(network_index_of<distance_constraint>(c.reg), constraints));
+    c.receive({create});
+
+    for (std::size_t i = 0; i < bad.size(); ++i) {
+        SCOPED_TRACE(bad[i].first);
+        EXPECT_FALSE(is_body(c, remote[i]));
+    }
+    EXPECT_EQ(c.rejected().invalid_value, bad.size());
+    EXPECT_TRUE(is_body(c, remote[good]));
+    EXPECT_TRUE(is_body(c, remote[good + 1]));
+    EXPECT_TRUE(c.reg.all_of<distance_constraint>(client_local_entity(c.reg, remote[good + 2])));
+
+    // A constraint to a refused body is refused too.
+    auto to_refused = tether;
+    to_refused.body[1] = remote[0];
+    auto more = remote_entities(1);
+    auto entities = remote;
+    entities.push_back(more[0]);
+    c.receive(
+        {packet::create_entity{0,
+                               entities,
+                               {make_pool<distance_constraint>(network_index_of<distance_constraint>(c.reg),
+                                                               {{entities.size() - 1, to_refused}})}}});
+    EXPECT_FALSE(c.reg.all_of<distance_constraint>(client_local_entity(c.reg, more[0])));
+    EXPECT_EQ(c.rejected().invalid_value, bad.size() + 1);
+
+    for (int i = 0; i < 30; ++i)
+        c.frame();
+    for (auto [e, p, o] : c.reg.view<position, orientation>().each()) {
+        EXPECT_TRUE(isfinite(p));
+        EXPECT_TRUE(isfinite(o));
+    }
+}
+
+// A packet must not make a body of a constraint's entity, nor a constraint of a body's: the
+// islands would hold one entity as a node and an edge, and destroying it corrupts them.
+TEST(network_bounds, bodies_and_constraints_are_not_put_on_entities_with_another_role) {
+    lone_client c;
+    auto remote = remote_entities(4); // three bodies and a constraint
+    auto body_index = network_index_of<rigidbody_def>(c.reg);
+    auto distance_index = network_index_of<distance_constraint>(c.reg);
+    auto point_index = network_index_of<point_constraint>(c.reg);
+    auto tether = distance_constraint{};
+    tether.body[0] = remote[0];
+    tether.body[1] = remote[1];
+    tether.distance = 2;
+    c.receive({packet::create_entity{
+        0,
+        remote,
+        {make_pool<rigidbody_def>(body_index,
+                                  {{0, box_at({0, 1, 0})}, {1, box_at({2, 1, 0})}, {2, box_at({4, 1, 0})}}),
+         make_pool<distance_constraint>(distance_index, {{3, tether}})}}});
+    ASSERT_TRUE(is_body(c, remote[2]));
+    auto body = client_local_entity(c.reg, remote[2]);
+    auto constraint = client_local_entity(c.reg, remote[3]);
+    ASSERT_TRUE(c.reg.all_of<distance_constraint>(constraint));
+    for (int i = 0; i < 3; ++i)
+        c.frame();
+
+    // A constraint for the body's entity, in a snapshot and in a repeated create_entity.
+    auto onto_body = tether;
+    auto snapshot = packet::registry_snapshot{};
+    snapshot.timestamp = 0;
+    snapshot.entities = remote;
+    snapshot.pools.push_back(make_pool<distance_constraint>(distance_index, {{2, onto_body}}));
+    c.receive({snapshot});
+    auto point = point_constraint{};
+    point.body[0] = remote[0];
+    point.body[1] = remote[1];
+    c.receive({packet::create_entity{0, remote, {make_pool<point_constraint>(point_index, {{2, point}})}}});
+    EXPECT_FALSE((c.reg.any_of<distance_constraint, point_constraint>(body)));
+    // A body, and a constraint of another type, for the constraint's entity.
+    c.receive({packet::create_entity{0,
+                                     remote,
+                                     {make_pool<rigidbody_def>(body_index, {{3, box_at({6, 1, 0})}}),
+                                      make_pool<point_constraint>(point_index, {{3, point}})}}});
+    EXPECT_FALSE(c.reg.all_of<rigidbody_tag>(constraint));
+    EXPECT_FALSE(c.reg.all_of<point_constraint>(constraint));
+    EXPECT_EQ(c.rejected().conflicting_role, 4u);
+
+    // The same body and constraint sent again are already there: nothing to refuse.
+    c.receive({packet::create_entity{0,
+                                     remote,
+                                     {make_pool<rigidbody_def>(body_index, {{2, box_at({4, 1, 0})}}),
+                                      make_pool<distance_constraint>(distance_index, {{3, tether}})}}});
+    EXPECT_EQ(c.rejected().conflicting_role, 4u);
+
+    // Destroying them leaves the islands whole.
+    for (int i = 0; i < 3; ++i)
+        c.frame();
+    c.receive({packet::destroy_entity{0, {remote[2], remote[3]}}});
+    for (int i = 0; i < 30; ++i)
+        c.frame();
+    EXPECT_FALSE(c.reg.valid(body));
+    EXPECT_FALSE(c.reg.valid(constraint));
+    EXPECT_TRUE(is_body(c, remote[0]));
+}
+
 } // namespace
