@@ -33,6 +33,7 @@
 #include "edyn/collision/shape_raycast.hpp"
 #include "edyn/collision/should_collide.hpp"
 
+#include "edyn/dynamics/body_limits.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/material_mixing.hpp"

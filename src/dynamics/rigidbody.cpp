@@ -1,5 +1,6 @@
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/collision/collision_filter.hpp"
+#include "edyn/dynamics/body_limits.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/orientation.hpp"
@@ -11,6 +12,7 @@
 #include "edyn/shapes/moment_of_inertia.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/shapes/validate_shape.hpp"
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -64,13 +66,52 @@ void check_material(const char *function, const material &m) {
 void check_mass(const char *function, scalar mass) {
     if (!(mass > 0) || !std::isfinite(mass))
         fail(function, "mass", "must be positive and finite for a dynamic body, got " + str(mass));
+    if (!(mass >= min_body_mass && mass <= max_body_mass))
+        fail(function, "mass",
+             "must be in [" + str(min_body_mass) + ", " + str(max_body_mass) + "] kg, got " + str(mass));
+}
+
+std::string str(const matrix3x3 &m) { return "(" + str(m[0]) + ", " + str(m[1]) + ", " + str(m[2]) + ")"; }
+
+// Symmetric to float rounding: a tensor rotated into object space by the program is rarely
+// exactly symmetric.
+bool is_symmetric(const matrix3x3 &m) {
+    auto scale = std::max({std::abs(m[0][0]), std::abs(m[1][1]), std::abs(m[2][2])});
+    auto tolerance = scale * scalar(1e-4);
+    return std::abs(m[0][1] - m[1][0]) <= tolerance && std::abs(m[0][2] - m[2][0]) <= tolerance &&
+           std::abs(m[1][2] - m[2][1]) <= tolerance;
+}
+
+// Sylvester's criterion: every leading principal minor positive. Positive diagonal entries and
+// a positive determinant are not enough (two negative eigenvalues have a positive product).
+bool is_positive_definite(const matrix3x3 &m) {
+    return m[0][0] > 0 && m[0][0] * m[1][1] - m[0][1] * m[1][0] > 0 && determinant(m) > 0;
 }
 
 void check_inertia(const char *function, const matrix3x3 &inertia) {
     auto d = get_diagonal(inertia);
-    if (!isfinite(inertia) || !(d.x > 0 && d.y > 0 && d.z > 0) || !(determinant(inertia) > 0)) {
-        fail(function, "inertia", "must be finite and positive definite, got diagonal " + str(d));
+    if (!isfinite(inertia) || !is_symmetric(inertia) || !is_positive_definite(inertia)) {
+        fail(function, "inertia", "must be finite, symmetric and positive definite, got " + str(inertia));
     }
+    auto low = std::min({d.x, d.y, d.z});
+    auto high = std::max({d.x, d.y, d.z});
+    // A principal moment is at most the largest diagonal entry; the smallest is at least
+    // 1 / (largest diagonal entry of the inverse) / 3, so a nearly singular tensor with a large
+    // diagonal is caught by its inverse.
+    auto inv = inverse(inertia);
+    auto inv_high = std::max({inv[0][0], inv[1][1], inv[2][2]});
+    if (!(low >= min_body_inertia && high <= max_body_inertia) || !isfinite(inv) ||
+        !(inv_high <= 1 / min_body_inertia)) {
+        fail(function, "inertia",
+             "must have principal moments in [" + str(min_body_inertia) + ", " + str(max_body_inertia) +
+                 "] kg*m^2, got " + str(inertia));
+    }
+}
+
+void check_gravity(const char *function, const vector3 &gravity) {
+    check_finite(function, "gravity", gravity);
+    if (!(length(gravity) <= max_gravity))
+        fail(function, "gravity", "must be at most " + str(max_gravity) + " m/s^2 long, got " + str(gravity));
 }
 
 struct mass_properties {
@@ -176,7 +217,7 @@ void validate_rigidbody_def(const rigidbody_def &def) {
     check_orientation(fn, def.orientation);
     check_finite(fn, "linvel", def.linvel);
     check_finite(fn, "angvel", def.angvel);
-    if (def.gravity) check_finite(fn, "gravity", *def.gravity);
+    if (def.gravity) check_gravity(fn, *def.gravity);
     if (def.center_of_mass) check_finite(fn, "center_of_mass", *def.center_of_mass);
     if (def.material) check_material(fn, *def.material);
     if (def.restitution) {

@@ -8,6 +8,9 @@
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/dynamics/visit_shape.hpp"
+#include "edyn/serialization/quantize.hpp"
+#include "edyn/shapes/shape_aabb.hpp"
+#include <cmath>
 
 namespace edyn {
 
@@ -42,6 +45,25 @@ rigidbody_def get_rigidbody_def(const registry &registry, entity e) {
     }
     def.sleeping_disabled = registry.all_of<sleeping_disabled_tag>(e);
     return def;
+}
+
+namespace {
+bool within(const vector3 &v, scalar bound) {
+    return std::abs(v.x) <= bound && std::abs(v.y) <= bound && std::abs(v.z) <= bound;
+}
+} // namespace
+
+bool within_network_range(const rigidbody_def &def) {
+    auto bound = max_quantized_coordinate;
+    if (!within(def.position, bound) || !within(def.linvel, bound) || !within(def.angvel, bound))
+        return false;
+    if (def.center_of_mass && !within(*def.center_of_mass, bound)) return false;
+    // Planes are infinite and never move.
+    if (def.shape && !std::holds_alternative<plane_shape>(*def.shape)) {
+        auto aabb = shape_aabb(*def.shape, def.position, def.orientation);
+        if (!within(aabb.min, 2 * bound) || !within(aabb.max, 2 * bound)) return false;
+    }
+    return true;
 }
 
 } // namespace edyn

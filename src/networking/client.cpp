@@ -1,5 +1,6 @@
 #include "edyn/networking/client.hpp"
 #include "client_context.hpp"
+#include "edyn/dynamics/body_limits.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/tags.hpp"
@@ -25,6 +26,13 @@ namespace edyn {
 using namespace client_detail;
 
 namespace {
+
+network_client_rejections &rejections(registry &registry) {
+    return registry.ctx().get<network_client_rejections>();
+}
+
+// A time of the server's clock the client can compute with.
+bool plausible_server_time(double t) { return std::abs(t) <= max_server_time; }
 
 void destroy_local(registry &registry, client_context &ctx, const std::vector<entity> &remote) {
     for (auto r : remote) {
@@ -83,6 +91,11 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
     auto &types = registry.ctx().get<network_registry>();
     auto pools = decode_pools(types, snapshot.pools, snapshot.entities.size());
     if (!pools || !std::isfinite(snapshot.timestamp)) return;
+    if (!plausible_server_time(snapshot.timestamp) ||
+        (ctx.synchronised && snapshot.timestamp > client_time(registry, ctx) + max_snapshot_lead)) {
+        rejections(registry).out_of_range += 1;
+        return;
+    }
     request_unknown(registry, ctx, snapshot.entities);
     auto local = to_local(ctx, snapshot.entities);
 
@@ -121,6 +134,10 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
 
 void receive_time(registry &registry, client_context &ctx, const packet::time_response &response) {
     if (response.id != ctx.pending_request_id || !std::isfinite(response.timestamp)) return;
+    if (!plausible_server_time(response.timestamp)) {
+        rejections(registry).out_of_range += 1;
+        return;
+    }
     ctx.pending_request_id = 0;
     // The reply left the server about half a round trip ago; each sample is off by that half's
     // jitter, so the offset is the median of the last few, which one late reply cannot move.
@@ -135,12 +152,24 @@ void receive_time(registry &registry, client_context &ctx, const packet::time_re
     ctx.synchronised = true;
 }
 
+// Within the ranges the world's setters accept (settings.hpp): a server's own settings always
+// are, so settings outside them are refused whole rather than half applied.
+bool acceptable_settings(const packet::server_settings &s) {
+    auto iterations = [](std::uint32_t n) { return n <= max_solver_iterations; };
+    return s.fixed_dt >= min_fixed_dt && s.fixed_dt <= max_fixed_dt && isfinite(s.gravity) &&
+           length(s.gravity) <= max_gravity && s.num_substeps >= 1 && s.num_substeps <= max_solver_substeps &&
+           iterations(s.num_relax_iterations) && iterations(s.num_restitution_iterations) &&
+           iterations(s.num_individual_restitution_iterations);
+}
+
 void apply_server_settings(registry &registry, const packet::server_settings &s) {
-    if (!(s.fixed_dt > 0) || !std::isfinite(s.fixed_dt)) return;
+    if (!acceptable_settings(s)) {
+        rejections(registry).out_of_range += 1;
+        return;
+    }
     set_fixed_dt(registry, s.fixed_dt);
-    if (std::isfinite(s.gravity.x) && std::isfinite(s.gravity.y) && std::isfinite(s.gravity.z))
-        set_gravity(registry, s.gravity);
-    if (s.num_substeps > 0) set_solver_substeps(registry, s.num_substeps);
+    set_gravity(registry, s.gravity);
+    set_solver_substeps(registry, s.num_substeps);
     set_solver_relax_iterations(registry, s.num_relax_iterations);
     set_solver_restitution_iterations(registry, s.num_restitution_iterations);
     set_solver_individual_restitution_iterations(registry, s.num_individual_restitution_iterations);
@@ -222,6 +251,7 @@ void init_network_client(registry &registry) {
             "init_network_client: the registry is not attached (call edyn::attach first)");
     if (registry.ctx().contains<client_context>()) return;
     ensure_network_registry(registry);
+    registry.ctx().emplace<network_client_rejections>();
     auto &ctx = registry.ctx().emplace<client_context>();
     ctx.job = std::make_unique<background_job>();
     ctx.decay_step = get_step_count(registry);
@@ -232,6 +262,7 @@ void deinit_network_client(registry &registry) {
     if (!ctx) return;
     ctx->job->wait();
     registry.ctx().erase<client_context>();
+    registry.ctx().erase<network_client_rejections>();
 }
 
 sink<network_client_packet_signal> network_client_packet_sink(registry &registry) {
@@ -258,7 +289,11 @@ void client_receive_packet(registry &registry, const packet::edyn_packet &packet
             } else if constexpr (std::is_same_v<T, packet::time_response>) {
                 receive_time(registry, ctx, p);
             } else if constexpr (std::is_same_v<T, packet::set_playout_delay>) {
-                if (std::isfinite(p.value) && p.value >= 0) ctx.playout_delay = p.value;
+                if (p.value >= 0 && p.value <= max_playout_delay) {
+                    ctx.playout_delay = p.value;
+                } else {
+                    rejections(registry).out_of_range += 1;
+                }
             } else if constexpr (std::is_same_v<T, packet::server_settings>) {
                 apply_server_settings(registry, p);
             } else if constexpr (std::is_same_v<T, packet::client_created>) {
@@ -345,6 +380,11 @@ void set_network_client_discontinuity_decay_rate(registry &registry, scalar rate
             "set_network_client_discontinuity_decay_rate: rate must be in [0, 1), got " +
             std::to_string(rate));
     ctx.decay_rate = rate;
+}
+
+const network_client_rejections &get_network_client_rejections(const registry &registry) {
+    get_client(registry, "get_network_client_rejections");
+    return registry.ctx().get<network_client_rejections>();
 }
 
 entity get_network_client_entity(const registry &registry) {

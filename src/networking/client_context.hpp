@@ -35,6 +35,13 @@ inline constexpr double entity_request_interval = 0.5;
 inline constexpr int max_lead_steps = 4;
 // A result this many steps old is still carried forward; an older one is dropped.
 inline constexpr long long max_carried_steps = 2;
+// Bounds on the times a server sends (seconds), past which its packets are refused: its
+// simulation time (an uptime, from 0 at attach), how far ahead of the client's time a snapshot
+// may be (snapshots are of the server's past; a larger lead is a clock the next time response
+// corrects), and the playout delay (half a round trip and a few steps).
+inline constexpr double max_server_time = 1e9;
+inline constexpr double max_snapshot_lead = 2;
+inline constexpr double max_playout_delay = 10;
 
 struct client_context {
     network_client_packet_signal packet_signal;

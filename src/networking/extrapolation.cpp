@@ -5,6 +5,7 @@
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/simulation/world.hpp"
 #include "network_registry.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace edyn {
@@ -51,8 +52,10 @@ void run_extrapolation(const extrapolation_input &input, extrapolation_result &r
     apply(job, input.types, input.snapshot, to_job, remote_to_job);
 
     auto dt = double(input.settings.fixed_dt);
-    auto steps = unsigned(std::max(0.0, std::round((input.end_time - input.start_time) / dt)));
-    steps = std::min(steps, max_extrapolation_steps);
+    // Capped in floating point before converting: times from the network may be far apart,
+    // or not finite, and a double beyond the range of unsigned must never reach the conversion.
+    auto due = std::round((input.end_time - input.start_time) / dt);
+    auto steps = due > 0 ? unsigned(std::min(due, double(max_extrapolation_steps))) : 0u;
     for (unsigned k = 0; k < steps; ++k) {
         auto time = input.start_time + k * dt;
         while (next_input < input.inputs.size() && input.inputs[next_input].time <= time)

@@ -1,5 +1,6 @@
 #include "network_registry.hpp"
 #include "body_def.hpp"
+#include "edyn/collision/contact_manifold.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/make_constraint.hpp"
 #include "edyn/dynamics/orientation.hpp"
@@ -7,9 +8,12 @@
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/networking/asset_ref.hpp"
+#include "edyn/networking/client.hpp"
 #include "edyn/serialization/constraint_types.hpp"
 #include "edyn/serialization/dynamics_types.hpp"
 #include "edyn/serialization/shape_types.hpp"
+#include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world.hpp"
 #include "network_motion.hpp"
 #include <exception>
@@ -18,17 +22,50 @@ namespace edyn {
 
 namespace {
 
+// Counted in a network client (its extrapolation's registry, which applies the same pools,
+// counts nothing).
+void count_invalid(registry &registry) {
+    if (auto *r = registry.ctx().find<network_client_rejections>()) r->invalid_value += 1;
+}
+
+void count_conflict(registry &registry) {
+    if (auto *r = registry.ctx().find<network_client_rejections>()) r->conflicting_role += 1;
+}
+
+template<typename... Ts>
+bool has_constraint(const registry &registry, entity e, constraint_type_list<Ts...>) {
+    return registry.any_of<Ts...>(e);
+}
+
+// An entity the simulation or the networking already uses for something else than a body or a
+// constraint. A packet must not add a body or a constraint to it: the island graph would hold
+// one entity as two things, and destroying it would corrupt the islands.
+bool has_other_edyn_role(const registry &registry, entity e) {
+    return registry.any_of<contact_manifold, island, island_edge, asset_ref>(e);
+}
+
 // Bodies are made with make_rigidbody on the receiving side, from a definition of the sender's.
 struct decoded_bodies : detail::typed_decoded_pool<rigidbody_def> {
     void apply(registry &registry, const std::vector<entity> &entities,
                const detail::entity_mapper &) override {
         for (std::size_t i = 0; i < positions.size(); ++i) {
             auto e = entities[positions[i]];
+            // A body sent again (a create_entity repeated) is already there.
             if (e == null || !registry.valid(e) || registry.all_of<rigidbody_tag>(e)) continue;
+            if (has_constraint(registry, e, constraint_types{}) || has_other_edyn_role(registry, e)) {
+                count_conflict(registry);
+                continue;
+            }
             try {
+                validate_rigidbody_def(values[i]);
+                if (!within_network_range(values[i])) {
+                    count_invalid(registry);
+                    continue;
+                }
                 make_rigidbody(e, registry, values[i]);
             } catch (const std::exception &) {
                 // A definition this end refuses makes no body; the entity stays empty.
+                count_invalid(registry);
             }
         }
     }
@@ -58,7 +95,13 @@ struct decoded_constraint : detail::typed_decoded_pool<T> {
                const detail::entity_mapper &map) override {
         for (std::size_t i = 0; i < this->positions.size(); ++i) {
             auto e = entities[this->positions[i]];
+            // A constraint sent again (a create_entity repeated) is already there.
             if (e == null || !registry.valid(e) || registry.all_of<T>(e)) continue;
+            if (registry.all_of<rigidbody_tag>(e) || has_constraint(registry, e, constraint_types{}) ||
+                has_other_edyn_role(registry, e)) {
+                count_conflict(registry);
+                continue;
+            }
             auto con = this->values[i];
             if (map) map_entity_members(con, map);
             try {
@@ -66,6 +109,7 @@ struct decoded_constraint : detail::typed_decoded_pool<T> {
                                            std::is_same_v<T, null_constraint>);
                 validate_constraint(con);
             } catch (const std::exception &) {
+                count_invalid(registry);
                 continue;
             }
             registry.emplace<T>(e, con);

@@ -4,6 +4,7 @@
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/should_collide.hpp"
+#include "edyn/dynamics/body_limits.hpp"
 #include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
@@ -20,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -40,6 +42,18 @@ settings &mutable_settings(registry &registry) {
 
 [[noreturn]] void invalid(const char *function, const std::string &what) {
     throw std::invalid_argument(std::string(function) + ": " + what);
+}
+
+std::string str(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+void check_count(const char *function, const char *what, unsigned value, unsigned min, unsigned max) {
+    if (value < min || value > max)
+        invalid(function, std::string(what) + " must be in [" + std::to_string(min) + ", " +
+                              std::to_string(max) + "], got " + std::to_string(value));
 }
 
 } // namespace
@@ -149,11 +163,17 @@ std::uint64_t take_due_steps(world_state &w, const settings &s, double time) {
     if (w.paused) return 0;
     double dt = s.fixed_dt;
     w.accumulator += elapsed;
-    auto steps = static_cast<std::uint64_t>(std::floor(w.accumulator / dt));
-    if (steps > s.max_steps_per_update) {
+    // Compared in floating point before converting: a long pause over a small dt is more steps
+    // than an integer holds.
+    auto due = std::floor(w.accumulator / dt);
+    std::uint64_t steps;
+    if (!(due <= double(s.max_steps_per_update))) {
         // Drop the time that cannot be caught up with.
-        w.accumulator = std::fmod(w.accumulator, dt) + dt * s.max_steps_per_update;
+        auto fraction = std::isfinite(w.accumulator) ? std::fmod(w.accumulator, dt) : 0.0;
+        w.accumulator = fraction + dt * s.max_steps_per_update;
         steps = s.max_steps_per_update;
+    } else {
+        steps = static_cast<std::uint64_t>(due);
     }
     // One subtraction per step, as the steps are run, so that the fraction left is the same.
     for (std::uint64_t i = 0; i < steps; ++i)
@@ -205,14 +225,18 @@ void set_paused(registry &registry, bool paused) { world(registry).paused = paus
 bool is_paused(const registry &registry) { return registry.ctx().get<world_state>().paused; }
 
 void set_fixed_dt(registry &registry, scalar dt) {
-    if (!(dt > 0) || !std::isfinite(dt))
-        invalid("set_fixed_dt", "dt must be positive and finite, got " + std::to_string(dt));
+    if (!(dt >= min_fixed_dt && dt <= max_fixed_dt))
+        invalid("set_fixed_dt",
+                "dt must be in [" + str(min_fixed_dt) + ", " + str(max_fixed_dt) + "] s, got " + str(dt));
     mutable_settings(registry).fixed_dt = dt;
 }
 scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fixed_dt; }
 
 void set_gravity(registry &registry, const vector3 &gravity) {
-    if (!isfinite(gravity)) invalid("set_gravity", "gravity must be finite");
+    auto text = [&] { return "(" + str(gravity.x) + ", " + str(gravity.y) + ", " + str(gravity.z) + ")"; };
+    if (!isfinite(gravity)) invalid("set_gravity", "gravity must be finite, got " + text());
+    if (!(length(gravity) <= max_gravity))
+        invalid("set_gravity", "gravity must be at most " + str(max_gravity) + " m/s^2 long, got " + text());
     mutable_settings(registry).gravity = gravity;
     // Resting bodies must notice a new gravity (in asynchronous mode the worker wakes its own;
     // here they are shown awake at once).
@@ -227,12 +251,13 @@ void set_gravity(registry &registry, const vector3 &gravity) {
 vector3 get_gravity(const registry &registry) { return get_settings(registry).gravity; }
 
 void set_solver_substeps(registry &registry, unsigned substeps) {
-    if (substeps == 0) invalid("set_solver_substeps", "substeps must be at least 1");
+    check_count("set_solver_substeps", "substeps", substeps, 1, max_solver_substeps);
     mutable_settings(registry).num_substeps = substeps;
 }
 unsigned get_solver_substeps(const registry &registry) { return get_settings(registry).num_substeps; }
 
 void set_solver_relax_iterations(registry &registry, unsigned iterations) {
+    check_count("set_solver_relax_iterations", "iterations", iterations, 0, max_solver_iterations);
     mutable_settings(registry).num_relax_iterations = iterations;
 }
 unsigned get_solver_relax_iterations(const registry &registry) {
@@ -240,7 +265,7 @@ unsigned get_solver_relax_iterations(const registry &registry) {
 }
 
 void set_solver_velocity_iterations(registry &registry, unsigned iterations) {
-    if (iterations == 0) invalid("set_solver_velocity_iterations", "iterations must be at least 1");
+    check_count("set_solver_velocity_iterations", "iterations", iterations, 1, max_solver_substeps);
     mutable_settings(registry).num_substeps = iterations;
 }
 unsigned get_solver_velocity_iterations(const registry &registry) {
@@ -248,6 +273,7 @@ unsigned get_solver_velocity_iterations(const registry &registry) {
 }
 
 void set_solver_position_iterations(registry &registry, unsigned iterations) {
+    check_count("set_solver_position_iterations", "iterations", iterations, 0, max_solver_iterations);
     mutable_settings(registry).joint.position_projection_iterations = iterations;
 }
 unsigned get_solver_position_iterations(const registry &registry) {
@@ -255,6 +281,7 @@ unsigned get_solver_position_iterations(const registry &registry) {
 }
 
 void set_solver_restitution_iterations(registry &registry, unsigned iterations) {
+    check_count("set_solver_restitution_iterations", "iterations", iterations, 0, max_solver_iterations);
     mutable_settings(registry).num_restitution_iterations = iterations;
 }
 unsigned get_solver_restitution_iterations(const registry &registry) {
@@ -262,6 +289,8 @@ unsigned get_solver_restitution_iterations(const registry &registry) {
 }
 
 void set_solver_individual_restitution_iterations(registry &registry, unsigned iterations) {
+    check_count("set_solver_individual_restitution_iterations", "iterations", iterations, 0,
+                max_solver_iterations);
     mutable_settings(registry).num_individual_restitution_iterations = iterations;
 }
 unsigned get_solver_individual_restitution_iterations(const registry &registry) {
@@ -269,7 +298,7 @@ unsigned get_solver_individual_restitution_iterations(const registry &registry) 
 }
 
 void set_max_steps_per_update(registry &registry, unsigned steps) {
-    if (steps == 0) invalid("set_max_steps_per_update", "steps must be at least 1");
+    check_count("set_max_steps_per_update", "steps", steps, 1, max_steps_per_update_limit);
     mutable_settings(registry).max_steps_per_update = steps;
 }
 

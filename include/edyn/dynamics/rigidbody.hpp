@@ -10,7 +10,8 @@ namespace edyn {
 // Throws std::invalid_argument naming the field and value when `def` cannot make a body: NaN
 // or non-positive mass of a dynamic body, a dynamic body with neither shape nor inertia,
 // non-finite or non-unit orientation, non-finite vectors, friction or restitution out of range,
-// an invalid shape, a plane on a non-static body.
+// an invalid shape, a plane on a non-static body; a mass, an explicit inertia (which must also
+// be symmetric and positive definite) or a gravity outside the ranges of body_limits.hpp.
 void validate_rigidbody_def(const rigidbody_def &def);
 
 // Creates a rigid body from `def` on a new entity, or on `entity` (which must be valid and not

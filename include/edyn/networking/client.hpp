@@ -3,8 +3,27 @@
 
 #include "edyn/ecs/registry.hpp"
 #include "edyn/networking/packet/edyn_packet.hpp"
+#include <cstdint>
 
 namespace edyn {
+
+// What the client refused of its server's packets, by reason: values that would make its
+// simulation hang or fail. The client trusts its server no more than the server its clients
+// (remote_client_rejections): a refused packet is dropped whole, a refused body or constraint
+// leaves its entity without it; nothing throws.
+struct network_client_rejections {
+    // Settings (server_settings), a playout delay or a time outside the ranges the client
+    // accepts (settings.hpp, body_limits.hpp; times within a few seconds of its clock).
+    std::uint32_t out_of_range{0};
+    // A body or constraint make_rigidbody or make_constraint would refuse, or a body beyond the
+    // range snapshots can carry (max_quantized_coordinate).
+    std::uint32_t invalid_value{0};
+    // A body or constraint for an entity that already has another role: a constraint for a
+    // body, a body for a constraint, either for an asset, a manifold or an island.
+    std::uint32_t conflicting_role{0};
+
+    std::uint32_t total() const noexcept { return out_of_range + invalid_value + conflicting_role; }
+};
 
 using network_client_packet_signal = sigh<void(const packet::edyn_packet &)>;
 using network_client_entity_signal = sigh<void(entity)>;
@@ -57,6 +76,9 @@ void client_asset_ready(registry &registry, entity asset_entity);
 // update_network_client merges it). For tools and tests that run frames faster than real time,
 // where a background job would otherwise always finish frames late.
 void wait_for_network_client(registry &registry);
+
+// What the client refused of its server's packets so far.
+const network_client_rejections &get_network_client_rejections(const registry &registry);
 
 // The client's entity in the server, once the server said it (null before).
 entity get_network_client_entity(const registry &registry);

@@ -10,6 +10,17 @@ namespace edyn {
 
 using step_callback_t = void (*)(registry &);
 
+// The ranges the setters of world.hpp accept (they throw std::invalid_argument outside them),
+// and a network client accepts from its server. Beyond them a step costs without bound or its
+// arithmetic leaves the range of a float.
+// Seconds: from 10,000 steps per second to one.
+inline constexpr scalar min_fixed_dt = scalar(1e-4);
+inline constexpr scalar max_fixed_dt = scalar(1);
+// Sub-steps per step, and relax, position, restitution and individual restitution iterations.
+inline constexpr unsigned max_solver_substeps = 64;
+inline constexpr unsigned max_solver_iterations = 64;
+inline constexpr unsigned max_steps_per_update_limit = 1000;
+
 // World-wide simulation settings, kept in the registry's context by attach().
 struct settings {
     edyn::execution_mode execution_mode{edyn::execution_mode::sequential};

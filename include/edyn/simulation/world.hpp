@@ -57,6 +57,9 @@ void wake_up_entity(registry &registry, entity entity);
 void set_paused(registry &registry, bool paused);
 bool is_paused(const registry &registry);
 
+// The setters below throw std::invalid_argument, naming the function and the value, for one
+// outside the ranges of settings.hpp (min_fixed_dt to max_fixed_dt, at most max_gravity long,
+// at most max_solver_substeps and max_solver_iterations, max_steps_per_update_limit).
 void set_fixed_dt(registry &registry, scalar dt);
 scalar get_fixed_dt(const registry &registry);
 

@@ -87,7 +87,7 @@ rigidbody_def valid_box() {
 } // namespace
 
 TEST_F(rigidbody_test, a_dynamic_body_needs_a_positive_finite_mass) {
-    for (scalar m : {qnan, scalar(0), scalar(-1), pinf}) {
+    for (scalar m : {qnan, scalar(0), scalar(-1), pinf, scalar(1e-30), scalar(1e30)}) {
         auto def = valid_box();
         def.mass = m;
         SCOPED_TRACE(m);
@@ -110,6 +110,28 @@ TEST_F(rigidbody_test, an_amorphous_dynamic_body_needs_a_valid_inertia) {
     expect_rejected(def, "inertia");
     def.inertia = diagonal_matrix(vector3{1, qnan, 1});
     expect_rejected(def, "inertia");
+    // Values a server sent a client, which its simulation could not survive: too small or too
+    // large to invert in a float, not symmetric, positive diagonal and determinant yet two
+    // negative eigenvalues.
+    def.inertia = diagonal_matrix(vector3{scalar(1e-13), scalar(1e-13), scalar(1e-13)});
+    expect_rejected(def, "inertia");
+    def.inertia = diagonal_matrix(vector3{scalar(1e30), 1, 1});
+    expect_rejected(def, "inertia");
+    def.inertia = matrix3x3{{vector3{1, scalar(0.9), 0}, vector3{scalar(-0.9), 1, 0}, vector3{0, 0, 1}}};
+    expect_rejected(def, "inertia");
+    def.inertia = matrix3x3{{vector3{1, 2, 2}, vector3{2, 1, 2}, vector3{2, 2, 1}}};
+    expect_rejected(def, "inertia");
+    // Nearly singular: a diagonal in range, a principal moment far below it.
+    auto small = scalar(1e-6);
+    auto next = std::nextafter(small, scalar(1));
+    def.inertia = matrix3x3{{vector3{small, small, 0}, vector3{small, next, 0}, vector3{0, 0, small}}};
+    expect_rejected(def, "inertia");
+    // A rotated tensor, symmetric to rounding, and the bounds themselves are accepted.
+    auto r = to_matrix3x3(normalize(quaternion{scalar(0.3), scalar(0.2), scalar(0.1), 1}));
+    def.inertia = r * diagonal_matrix(vector3{1, 2, 3}) * transpose(r);
+    EXPECT_NO_THROW(make_rigidbody(reg, def));
+    def.inertia = diagonal_matrix(vector3{min_body_inertia, max_body_inertia, 1});
+    EXPECT_NO_THROW(make_rigidbody(reg, def));
     def.inertia = diagonal_matrix(vector3{1, 2, 3});
     auto e = make_rigidbody(reg, def);
     EXPECT_EQ(static_cast<const matrix3x3 &>(reg.get<inertia>(e)), diagonal_matrix(vector3{1, 2, 3}));
@@ -186,6 +208,8 @@ TEST_F(rigidbody_test, vectors_must_be_finite) {
     expect_rejected(def, "angvel");
     def = valid_box();
     def.gravity = vector3{0, qnan, 0};
+    expect_rejected(def, "gravity");
+    def.gravity = vector3{0, scalar(-4e34), 0};
     expect_rejected(def, "gravity");
     def = valid_box();
     def.center_of_mass = vector3{qnan, 0, 0};

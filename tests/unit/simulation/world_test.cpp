@@ -1,7 +1,10 @@
 #include <cmath>
 #include <edyn/edyn.hpp>
+#include <functional>
 #include <gtest/gtest.h>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace edyn {
 namespace {
@@ -212,6 +215,74 @@ TEST(world, present_transforms_are_interpolated_between_the_last_two_steps) {
     // step_simulation sets the present to the step it ran.
     step_simulation(reg);
     EXPECT_EQ(reg.get<present_position>(ball).x, reg.get<position>(ball).x);
+}
+
+// Each setter throws naming itself and the value it refused.
+void expect_refused(const char *function, const std::string &value, const std::function<void()> &call) {
+    try {
+        call();
+        ADD_FAILURE() << function << " accepted " << value;
+    } catch (const std::invalid_argument &e) {
+        auto what = std::string(e.what());
+        EXPECT_NE(what.find(function), std::string::npos) << "\"" << what << "\" does not name " << function;
+        EXPECT_NE(what.find(value), std::string::npos) << "\"" << what << "\" does not name " << value;
+    }
+}
+
+// Values a network client once took from its server: a step count that overflows, a step that
+// never ends, a gravity the solver cannot integrate.
+TEST(world, settings_are_bounded) {
+    registry reg;
+    attach(reg);
+    auto before = get_settings(reg);
+    expect_refused("set_fixed_dt", "1e-21", [&] { set_fixed_dt(reg, scalar(1e-21)); });
+    expect_refused("set_fixed_dt", "5.7e+36", [&] { set_fixed_dt(reg, scalar(5.7e36)); });
+    expect_refused("set_fixed_dt", "inf",
+                   [&] { set_fixed_dt(reg, std::numeric_limits<scalar>::infinity()); });
+    expect_refused("set_gravity", "-4e+34", [&] { set_gravity(reg, {0, scalar(-4e34), 0}); });
+    expect_refused("set_solver_substeps", "4000000000", [&] { set_solver_substeps(reg, 4000000000u); });
+    expect_refused("set_solver_velocity_iterations", "65", [&] { set_solver_velocity_iterations(reg, 65); });
+    expect_refused("set_solver_relax_iterations", "4000000000",
+                   [&] { set_solver_relax_iterations(reg, 4000000000u); });
+    expect_refused("set_solver_position_iterations", "4000000000",
+                   [&] { set_solver_position_iterations(reg, 4000000000u); });
+    expect_refused("set_solver_restitution_iterations", "4000000000",
+                   [&] { set_solver_restitution_iterations(reg, 4000000000u); });
+    expect_refused("set_solver_individual_restitution_iterations", "4000000000",
+                   [&] { set_solver_individual_restitution_iterations(reg, 4000000000u); });
+    expect_refused("set_max_steps_per_update", "4000000000",
+                   [&] { set_max_steps_per_update(reg, 4000000000u); });
+    auto &after = get_settings(reg);
+    EXPECT_EQ(after.fixed_dt, before.fixed_dt);
+    EXPECT_EQ(after.gravity, before.gravity);
+    EXPECT_EQ(after.num_substeps, before.num_substeps);
+    EXPECT_EQ(after.num_relax_iterations, before.num_relax_iterations);
+    EXPECT_EQ(after.max_steps_per_update, before.max_steps_per_update);
+
+    // The bounds themselves are accepted.
+    set_fixed_dt(reg, min_fixed_dt);
+    set_fixed_dt(reg, max_fixed_dt);
+    set_gravity(reg, {0, -max_gravity, 0});
+    set_solver_substeps(reg, max_solver_substeps);
+    set_solver_relax_iterations(reg, max_solver_iterations);
+    set_max_steps_per_update(reg, max_steps_per_update_limit);
+}
+
+// A long pause over the smallest dt is more steps than an integer holds: the count is capped
+// before it is converted, and update() runs max_steps_per_update steps.
+TEST(world, a_pause_of_any_length_runs_at_most_max_steps_per_update) {
+    registry reg;
+    attach(reg);
+    set_fixed_dt(reg, min_fixed_dt);
+    set_max_steps_per_update(reg, 3);
+    update(reg, 0.0);
+    update(reg, 1e30); // 1e34 steps due: 2^64 is 1.8e19
+    EXPECT_EQ(get_step_count(reg), 3u);
+    update(reg, 1e300);
+    EXPECT_EQ(get_step_count(reg), 6u);
+    // Time going on normally after it steps as before.
+    update(reg, 1e300);
+    EXPECT_EQ(get_step_count(reg), 6u);
 }
 
 TEST(world, settings_are_validated_and_read_back) {

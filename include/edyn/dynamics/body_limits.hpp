@@ -1,0 +1,25 @@
+#ifndef EDYN_DYNAMICS_BODY_LIMITS_HPP
+#define EDYN_DYNAMICS_BODY_LIMITS_HPP
+
+// The ranges make_rigidbody and set_gravity accept for a body's mass, inertia and gravity.
+// Beyond them the solver's products and inverses leave the range of a float within a few
+// steps (an infinite inverse mass, a NaN orientation), so values outside are refused up front,
+// from the program and from the network alike.
+
+#include "edyn/math/scalar.hpp"
+
+namespace edyn {
+
+// kg: from a milligram to a billion tonnes.
+inline constexpr scalar min_body_mass = scalar(1e-6);
+inline constexpr scalar max_body_mass = scalar(1e12);
+// kg·m², for an inertia given explicitly: its smallest and largest principal moments (a 1 cm,
+// 1 g bead has 1e-8; an aircraft carrier about 1e12).
+inline constexpr scalar min_body_inertia = scalar(1e-12);
+inline constexpr scalar max_body_inertia = scalar(1e18);
+// m/s², the magnitude of the world's gravity or a body's: a thousand g.
+inline constexpr scalar max_gravity = scalar(1e4);
+
+} // namespace edyn
+
+#endif // EDYN_DYNAMICS_BODY_LIMITS_HPP
