@@ -13,8 +13,8 @@
 
 namespace edyn_bench {
 
-// One scene at one size. `size` is the pyramid's base width, the pile's body count or the
-// chain's number of links or the number of rag dolls.
+// One scene at one size. `size` is the pyramid's base width, the pile's or the mesh scene's
+// body count, the chain's number of links or the number of rag dolls.
 struct scene_spec {
     std::string scene;
     unsigned size{0};
@@ -42,7 +42,8 @@ struct run_result {
     std::size_t contacts{0}; // contact points at the end
     // Pyramid: top box displacement (m) at the end; pile: deepest penetration (m) at the end;
     // chain and ragdolls: largest distance between a joint's two pivots (m) after any step,
-    // warm-up included (the rag dolls land during it).
+    // warm-up included (the rag dolls land during it); mesh: bodies whose centre is below the
+    // terrain's surface at the end.
     double stability{0};
     std::string stability_metric;
     bool ok{false};
@@ -59,6 +60,10 @@ std::string stability_metric(const std::string &scene);
 // Whether the scene's stability figure is the worst joint error over the run, which the runners
 // then measure after every step (outside the timed part).
 bool tracks_joint_error(const std::string &scene);
+
+// The mesh scene's stability figure: how many of these body centres lie over the terrain and
+// below its surface. 0 when no body went through.
+unsigned count_below_terrain(const std::vector<edyn::vector3> &centres);
 
 // Scenes edyn-bench knows, in the order `--scene all` runs them.
 std::vector<std::string> available_scenes();

@@ -39,12 +39,15 @@ std::vector<unsigned> sizes_for(const std::string &scene, const std::string &set
         if (scene == "pyramid") return {4};
         if (scene == "chain") return {10};
         if (scene == "ragdolls") return {2};
+        if (scene == "mesh") return {16};
         return {64};
     }
     if (scene == "pyramid") return {20, 40, 100};
     // The chain: a hundred links is long enough for the error to build up along it.
     if (scene == "chain") return {100};
     if (scene == "ragdolls") return {64};
+    // The mesh scene: about 1,800 bodies on a 20,000-triangle terrain, two layers of 900.
+    if (scene == "mesh") return {1800};
     return {1024, 4096, 16384};
 }
 
@@ -54,13 +57,20 @@ unsigned max_size(const std::string &scene) {
     if (scene == "pyramid") return 200;
     if (scene == "chain") return 2000;
     if (scene == "ragdolls") return 1024;
+    if (scene == "mesh") return 16384;
     return 65536;
 }
 
 // Steps of the standard set. 10 s for the pyramids, so that the top box's displacement is the
 // issue's figure, and for the chain. 8 s for every pile, so that all of them have landed (see
 // default_warmup) and the whole run stays within a few minutes on two cores.
-unsigned default_steps(const std::string &scene) { return scene == "pile" ? 480 : 600; }
+// The mesh scene's two layers have landed after about 1.5 s; 6 s lets them roll into the
+// terrain's hollows and settle.
+unsigned default_steps(const std::string &scene) {
+    if (scene == "pile") return 480;
+    if (scene == "mesh") return 360;
+    return 600;
+}
 
 // Steps left out of the timings. The piles' layers are dropped from 2 m up, 3.3 m apart: the
 // 16,384-body pile's top layer starts 210 m up and reaches the heap after about 6.5 s, the
@@ -73,9 +83,12 @@ unsigned default_steps(const std::string &scene) { return scene == "pile" ? 480 
 // same; the smaller piles spend more of the run at rest before it, which costs little. Their
 // heaps still differ in height and the largest is still slumping, so the growth exponents
 // include that: the largest pile is the least settled of the three.
+// The mesh scene is timed as the piles are, over its last 60 steps (5 s to 6 s by default), when
+// every body lies on the terrain with all its contacts.
 // Other scenes leave out a tenth, at most 60 steps: the start-up only.
 unsigned default_warmup(const std::string &scene, unsigned steps) {
     if (scene == "pile") return steps - steps / 8;
+    if (scene == "mesh") return steps - steps / 6;
     return std::min(60u, steps / 10);
 }
 
@@ -297,17 +310,17 @@ int run(const options &opt) {
 int main(int argc, char **argv) {
     edyn_bench::options opt;
     CLI::App app{"edyn-bench: the standard scenes in edyn and in Bullet, side by side"};
-    app.add_option("--scene", opt.scene, "pyramid, pile, chain, ragdolls or all")
-        ->check(CLI::IsMember({"all", "pyramid", "pile", "chain", "ragdolls"}));
+    app.add_option("--scene", opt.scene, "pyramid, pile, chain, ragdolls, mesh or all")
+        ->check(CLI::IsMember({"all", "pyramid", "pile", "chain", "ragdolls", "mesh"}));
     app.add_option("--bodies", opt.bodies,
-                   "sizes: the pyramid's base width, the pile's body count, the chain's links or the rag "
-                   "doll count; 'standard' (pyramid 20 40 100, pile 1024 4096 16384, chain 100, ragdolls "
-                   "64) or 'small' (a quick check)")
+                   "sizes: the pyramid's base width, the pile's or the mesh scene's body count, the chain's "
+                   "links or the rag doll count; 'standard' (pyramid 20 40 100, pile 1024 4096 16384, chain "
+                   "100, ragdolls 64, mesh 1800) or 'small' (a quick check)")
         ->check(CLI::IsMember({"standard", "small"}) | CLI::PositiveNumber);
     app.add_option("--steps", opt.steps, "steps per run, warm-up included (0: each scene's default)");
     app.add_option("--warmup", opt.warmup,
-                   "steps left out of the timings (default: the piles' first seven eighths; other scenes' "
-                   "first tenth, at most 60)")
+                   "steps left out of the timings (default: the piles' first seven eighths, the mesh "
+                   "scene's first five sixths; other scenes' first tenth, at most 60)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--threads", opt.threads,
                    "threads edyn runs on (sequential_multithreaded above 1); Bullet runs on one")

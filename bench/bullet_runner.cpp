@@ -4,10 +4,16 @@
 // btDiscreteDynamicsWorld, btDbvtBroadphase, btSequentialImpulseConstraintSolver with 10
 // iterations, one 1/60 s step per stepSimulation call (no sub-steps). Point constraints become
 // btPoint2PointConstraint with the same pivots; hinges, CV joints and cones are converted in
-// bullet_joints.cpp, which also excludes from collision the pairs edyn excludes.
+// bullet_joints.cpp, which also excludes from collision the pairs edyn excludes. Convex
+// polyhedra become btConvexHullShape over the same vertices (with Bullet's default collision
+// margin of 4 cm around them, as its users have them); triangle meshes a btBvhTriangleMeshShape
+// over the same vertices and triangles, with Bullet's internal edge utility, which plays the
+// part of edyn's inactive edges (contacts on an edge between two triangles lying flat or
+// concave take the triangle's normal).
 #include "bench.hpp"
 #include "bullet_joints.hpp"
 #include "to_bullet.hpp"
+#include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
 #include <algorithm>
 #include <btBulletDynamicsCommon.h>
 #include <chrono>
@@ -122,9 +128,56 @@ scene_desc describe_scene(edyn::registry &registry, edyn::entity tracked) {
     return scene;
 }
 
-std::unique_ptr<btCollisionShape> make_bt_shape(const edyn::shapes_variant_t &shape) {
+// The arrays a btBvhTriangleMeshShape reads through its btTriangleIndexVertexArray, which
+// copies none of them, and its internal edge information.
+struct bt_mesh_data {
+    std::vector<btScalar> vertices; // x, y, z of each vertex
+    std::vector<int> indices;       // three per triangle
+    btTriangleIndexVertexArray array;
+    btTriangleInfoMap edge_info;
+};
+
+// A triangle mesh as Bullet's static concave mesh. Both engines' triangles face the side from
+// which their vertices run counter-clockwise (Bullet's btTriangleShape normal is
+// (v1 - v0) x (v2 - v0), as edyn's is), so the indices are kept in edyn's order.
+std::unique_ptr<btCollisionShape> make_bt_mesh(const edyn::triangle_mesh &mesh,
+                                               std::vector<std::shared_ptr<void>> &owned) {
+    auto data = std::make_shared<bt_mesh_data>();
+    auto vertices = mesh.get_vertices();
+    auto indices = mesh.get_indices();
+    data->vertices.reserve(vertices.size() * 3);
+    for (const auto &v : vertices)
+        data->vertices.insert(data->vertices.end(), {btScalar(v.x), btScalar(v.y), btScalar(v.z)});
+    data->indices.assign(indices.begin(), indices.end());
+    btIndexedMesh part;
+    part.m_numTriangles = static_cast<int>(data->indices.size() / 3);
+    part.m_triangleIndexBase = reinterpret_cast<const unsigned char *>(data->indices.data());
+    part.m_triangleIndexStride = 3 * sizeof(int);
+    part.m_numVertices = static_cast<int>(vertices.size());
+    part.m_vertexBase = reinterpret_cast<const unsigned char *>(data->vertices.data());
+    part.m_vertexStride = 3 * sizeof(btScalar);
+    part.m_indexType = PHY_INTEGER;
+    part.m_vertexType = sizeof(btScalar) == sizeof(double) ? PHY_DOUBLE : PHY_FLOAT;
+    data->array.addIndexedMesh(part, PHY_INTEGER);
+    auto shape = std::make_unique<btBvhTriangleMeshShape>(&data->array, true, true);
+    btGenerateInternalEdgeInfo(shape.get(), &data->edge_info);
+    owned.push_back(std::move(data));
+    return shape;
+}
+
+// Bullet calls this for each new contact point of a body with CF_CUSTOM_MATERIAL_CALLBACK (the
+// mesh). A convex-concave pair's manifold always has the convex body first and the mesh's
+// triangle second.
+bool adjust_internal_edge_contacts(btManifoldPoint &cp, const btCollisionObjectWrapper *wrapper0, int, int,
+                                   const btCollisionObjectWrapper *wrapper1, int part1, int index1) {
+    btAdjustInternalEdgeContacts(cp, wrapper1, wrapper0, part1, index1);
+    return false;
+}
+
+std::unique_ptr<btCollisionShape> make_bt_shape(const edyn::shapes_variant_t &shape,
+                                                std::vector<std::shared_ptr<void>> &owned) {
     return std::visit(
-        [](const auto &s) -> std::unique_ptr<btCollisionShape> {
+        [&owned](const auto &s) -> std::unique_ptr<btCollisionShape> {
             using T = std::decay_t<decltype(s)>;
             if constexpr (std::is_same_v<T, edyn::plane_shape>) {
                 return std::make_unique<btStaticPlaneShape>(to_bt(s.normal), btScalar(s.constant));
@@ -152,6 +205,14 @@ std::unique_ptr<btCollisionShape> make_bt_shape(const edyn::shapes_variant_t &sh
                 default:
                     return std::make_unique<btCylinderShapeZ>(btVector3(r, r, h));
                 }
+            } else if constexpr (std::is_same_v<T, edyn::polyhedron_shape>) {
+                auto hull = std::make_unique<btConvexHullShape>();
+                for (const auto &v : s.mesh->vertices)
+                    hull->addPoint(to_bt(v), false);
+                hull->recalcLocalAabb();
+                return hull;
+            } else if constexpr (std::is_same_v<T, edyn::mesh_shape>) {
+                return make_bt_mesh(*s.trimesh, owned);
             } else {
                 throw std::invalid_argument("edyn-bench: a shape the Bullet scenes do not support");
             }
@@ -185,8 +246,8 @@ public:
         // A shapeless anchor stays out of the world: the joints read its transform, and the
         // solver treats every body of zero mass as fixed. A shapeless moving body is in the
         // world with no collision group or mask, which keeps it out of every pair.
-        auto &shape =
-            shapes.emplace_back(desc.shape ? make_bt_shape(*desc.shape) : std::make_unique<btEmptyShape>());
+        auto &shape = shapes.emplace_back(desc.shape ? make_bt_shape(*desc.shape, owned)
+                                                     : std::make_unique<btEmptyShape>());
         btTransform transform;
         transform.setOrigin(to_bt(desc.position));
         transform.setRotation(btQuaternion(btScalar(desc.orientation.x), btScalar(desc.orientation.y),
@@ -202,6 +263,11 @@ public:
         info.m_restitution = btScalar(desc.restitution);
         auto &body = bodies.emplace_back(std::make_unique<btRigidBody>(info));
         if (!sleeping && !desc.is_static) body->setActivationState(DISABLE_DEACTIVATION);
+        if (desc.shape && std::holds_alternative<edyn::mesh_shape>(*desc.shape)) {
+            body->setCollisionFlags(body->getCollisionFlags() |
+                                    btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+            gContactAddedCallback = adjust_internal_edge_contacts;
+        }
         in_world.push_back(desc.shape.has_value() || !desc.is_static);
         if (desc.shape) {
             world.addRigidBody(body.get());
@@ -255,6 +321,7 @@ private:
     btDbvtBroadphase broadphase;
     btSequentialImpulseConstraintSolver solver;
     btDiscreteDynamicsWorld world;
+    std::vector<std::shared_ptr<void>> owned; // what the shapes point into; outlives them
     std::vector<std::unique_ptr<btCollisionShape>> shapes;
     std::vector<std::unique_ptr<btRigidBody>> bodies;
     std::vector<bool> in_world;
@@ -289,12 +356,15 @@ run_result run_bullet(const scene_spec &spec) {
 
     bullet_world world(gravity, spec.sleeping);
     btRigidBody *tracked = nullptr;
-    std::vector<btRigidBody *> bt_bodies;
+    std::vector<btRigidBody *> bt_bodies, dynamic_bodies;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         auto *body = world.add(scene.bodies[i]);
         bt_bodies.push_back(body);
         if (i == scene.tracked_index) tracked = body;
-        if (!scene.bodies[i].is_static) ++result.bodies;
+        if (!scene.bodies[i].is_static) {
+            ++result.bodies;
+            dynamic_bodies.push_back(body);
+        }
     }
     for (const auto &joint : scene.joints)
         world.add(joint);
@@ -324,6 +394,13 @@ run_result run_bullet(const scene_spec &spec) {
     result.contacts = points;
     if (joints) {
         result.stability = worst_joint_error;
+    } else if (spec.scene == "mesh") {
+        std::vector<edyn::vector3> centres;
+        for (auto *body : dynamic_bodies) {
+            const auto &o = body->getCenterOfMassPosition();
+            centres.push_back({edyn::scalar(o.x()), edyn::scalar(o.y()), edyn::scalar(o.z())});
+        }
+        result.stability = count_below_terrain(centres);
     } else if (tracked) {
         result.stability = double((tracked->getWorldTransform().getOrigin() - tracked_start).length());
     } else {

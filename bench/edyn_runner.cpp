@@ -68,6 +68,11 @@ run_result run_edyn(const scene_spec &spec) {
     result.contacts = contacts.points;
     if (joints) {
         result.stability = worst_joint_error;
+    } else if (spec.scene == "mesh") {
+        std::vector<edyn::vector3> centres;
+        for (auto e : registry.view<edyn::dynamic_tag>())
+            centres.push_back(registry.get<edyn::position>(e));
+        result.stability = count_below_terrain(centres);
     } else if (tracked != edyn::null) {
         result.stability = double(edyn::length(registry.get<edyn::position>(tracked) - tracked_start));
     } else {

@@ -61,6 +61,9 @@ std::string stability_text(const run_result &r) {
     auto cm = number(r.stability * 100, "%.2f");
     if (r.stability_metric == "top_box_displacement_m") return "top box moved " + cm + " cm";
     if (r.stability_metric == "max_penetration_m") return "deepest penetration " + cm + " cm";
+    if (r.stability_metric == "bodies_below_terrain") {
+        return number(r.stability, "%.0f") + (r.stability == 1 ? " body" : " bodies") + " below the terrain";
+    }
     if (r.stability_metric == "max_joint_error_m") {
         return "worst joint error over the run " + number(r.stability * 1000, "%.2f") + " mm";
     }

@@ -6,12 +6,13 @@
 
 namespace edyn_bench {
 
-std::vector<std::string> available_scenes() { return {"pyramid", "pile", "chain", "ragdolls"}; }
+std::vector<std::string> available_scenes() { return {"pyramid", "pile", "chain", "ragdolls", "mesh"}; }
 
 std::string stability_metric(const std::string &scene) {
     if (scene == "pyramid") return "top_box_displacement_m";
     if (scene == "pile") return "max_penetration_m";
     if (scene == "chain" || scene == "ragdolls") return "max_joint_error_m";
+    if (scene == "mesh") return "bodies_below_terrain";
     throw std::invalid_argument("stability_metric: unknown scene '" + scene + "'");
 }
 
@@ -19,12 +20,24 @@ bool tracks_joint_error(const std::string &scene) { return scene == "chain" || s
 
 namespace {
 
+// The mesh scene's terrain: the scene builder's default, 100 x 100 cells of 1.25 m, 20,000
+// triangles, 125 m across.
+const edyn::scenes::mesh_pile_terrain mesh_terrain{};
+
 edyn::entity build_bodies(edyn::registry &registry, const scene_spec &spec) {
     if (spec.scene == "chain") {
         // A joint test only: the chain swings down from horizontal in empty space, with no
         // ground to land on, so that the solver's joint error is the whole of its stability
         // figure. The anchor sits at the origin, where floats are finest along the chain.
         edyn::scenes::make_chain(registry, spec.size, edyn::scalar(0.5), edyn::vector3_zero);
+        return edyn::null;
+    }
+    if (spec.scene == "mesh") {
+        // The terrain instead of a ground plane; the bodies 30 wide (900 to a layer, 64 m across
+        // the 125 m terrain, so that what rolls down its slopes for the few seconds of the run
+        // stays on it), fewer make a smaller square.
+        auto width = std::min(30u, static_cast<unsigned>(std::ceil(std::sqrt(double(spec.size)))));
+        edyn::scenes::make_mesh_pile(registry, spec.size, width, 2, mesh_terrain, 1);
         return edyn::null;
     }
     // Both engines get the ground's defaults from the scene builder: friction 0.6, no bounce.
@@ -58,6 +71,16 @@ edyn::entity build_scene(edyn::registry &registry, const scene_spec &spec) {
         }
     }
     return tracked;
+}
+
+unsigned count_below_terrain(const std::vector<edyn::vector3> &centres) {
+    unsigned count = 0;
+    for (const auto &c : centres) {
+        auto surface = edyn::scenes::terrain_surface_height(mesh_terrain, c.x, c.z);
+        // A body beyond the terrain's edge rolled off it: it did not go through.
+        if (surface && c.y < *surface) ++count;
+    }
+    return count;
 }
 
 step_stats summarize_steps(const std::vector<double> &step_ms, unsigned warmup) {

@@ -11,6 +11,7 @@ packages=(
   libcli11-dev
   libbullet-dev gnuplot-nox
   libenet-dev
+  libtinyobjloader-dev
   clang libclang-rt-14-dev
 )
 

@@ -73,6 +73,7 @@
 #include "edyn/serialization/math_types.hpp"
 #include "edyn/serialization/memory_archive.hpp"
 #include "edyn/serialization/std_types.hpp"
+#include "edyn/util/load_mesh_from_obj.hpp"
 #include "edyn/util/ragdoll.hpp"
 
 #endif // EDYN_EDYN_HPP

@@ -88,8 +88,8 @@ struct triangle_prism {
     }
 };
 
-// Cosine above which a normal is the triangle's own.
-constexpr scalar face_normal_cosine = scalar(0.9999);
+// Cosine above which a normal is the triangle's own (0.08 degrees: rounding only).
+constexpr scalar face_normal_cosine = scalar(1) - scalar(1e-6);
 // Barycentric tolerance of the feature classification, and how far outside its triangle a
 // point along the triangle's normal may lie (relative to the triangle's size) and still count.
 constexpr scalar feature_tolerance = scalar(1e-4);
@@ -131,6 +131,20 @@ bool feature_allows_normal(const triangle_mesh &mesh, std::size_t t, const colli
     if (kind == triangle_feature::edge) return mesh.is_edge_active(t, f.index);
     if (kind == triangle_feature::vertex) return mesh.is_vertex_active(t, f.index);
     return false;
+}
+
+// Whether the triangles beyond feature f of triangle t (across an edge, or across both edges
+// at a vertex) are coplanar with it.
+bool flat_beyond(const triangle_mesh &mesh, std::size_t t, const collision_feature &f) noexcept {
+    auto coplanar = [&](std::size_t edge) {
+        auto adj = mesh.get_adjacent_triangle(t, edge);
+        return adj >= 0 && dot(mesh.get_triangle_normal(t), mesh.get_triangle_normal(std::size_t(adj))) >=
+                               face_normal_cosine;
+    };
+    auto kind = std::get<triangle_feature>(f.feature);
+    if (kind == triangle_feature::edge) return coplanar(f.index);
+    if (kind == triangle_feature::vertex) return coplanar(f.index) && coplanar((f.index + 2) % 3);
+    return true;
 }
 
 // Clips the convex polygon `poly` (count points, in the prism's frame) to the triangle's prism
@@ -318,7 +332,7 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
     auto local_aabb = shape_aabb(a, rotate(inv_orn_b, ctx.posA - ctx.posB), inv_orn_b * ctx.ornA);
     local_aabb = inset(local_aabb, vector3_one * ctx.threshold);
 
-    collision_result tri_result;
+    collision_result tri_result, exact;
     mesh.visit_triangles(local_aabb, [&](std::size_t t) {
         triangle_prism prism(mesh, t);
         auto prism_ctx = ctx;
@@ -334,11 +348,13 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
             auto feature = triangle_feature_at(t, w);
             forced = !feature_allows_normal(mesh, t, feature, rotate(inv_orn_b, p.normal));
         }
+        exact = tri_result;
         if (forced) {
             tri_result.num_points = 0;
             forced_prism(a, prism, prism_ctx, tri_result);
         }
 
+        auto added = std::size_t(0);
         for (std::size_t i = 0; i < tri_result.num_points; ++i) {
             auto p = tri_result.point[i];
             if (forced) {
@@ -357,6 +373,32 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
             auto w = barycentric_coordinates(p.pivotB, tri[0], tri[1], tri[2]);
             if (forced && (w.x < -outside_tolerance || w.y < -outside_tolerance || w.z < -outside_tolerance))
                 continue;
+            p.featureB = triangle_feature_at(t, w);
+            result.add_point(p);
+            ++added;
+        }
+        if (!forced || added > 0) return;
+        // The shape's supporting feature along the triangle's normal lies beyond the triangle
+        // (a round shape on a nearly flat ridge reaches its lowest point over the neighbour):
+        // the exact points that are in the triangle stay, with the triangle's normal and their
+        // depth along it.
+        for (std::size_t i = 0; i < exact.num_points; ++i) {
+            auto p = exact.point[i];
+            auto on_a = to_object_space(to_world_space(p.pivotA, ctx.posA, ctx.ornA), ctx.posB, ctx.ornB);
+            auto on_b = p.pivotB + prism.centroid;
+            auto normal = mesh.get_triangle_normal(t);
+            auto distance = dot(on_a - on_b, normal);
+            // Only where the shape is in the triangle: near misses are the neighbours' to report.
+            if (distance > 0 || distance < -prism.depth) continue;
+            // Across an edge to a coplanar neighbour, the neighbour reports the supporting point.
+            if (flat_beyond(mesh, t,
+                            triangle_feature_at(t, barycentric_coordinates(on_b, tri[0], tri[1], tri[2]))))
+                continue;
+            p.pivotB = on_a - normal * distance;
+            auto w = barycentric_coordinates(p.pivotB, tri[0], tri[1], tri[2]);
+            if (w.x < -outside_tolerance || w.y < -outside_tolerance || w.z < -outside_tolerance) continue;
+            p.distance = distance;
+            p.normal = rotate(ctx.ornB, normal);
             p.featureB = triangle_feature_at(t, w);
             result.add_point(p);
         }

@@ -117,12 +117,29 @@ void on_destroy_manifold(registry &registry, entity e) {
 }
 
 // The program moved a body: refresh what depends on its transform and wake it.
+void wake_sleepers_near(registry &registry, world_state &w, entity e, const AABB &aabb) {
+    auto margin = vector3_one * contact_breaking_threshold;
+    std::vector<entity> sleepers;
+    w.broadphase.query(inset(aabb, margin), [&](entity other) {
+        if (other != e && registry.all_of<sleeping_tag>(other)) sleepers.push_back(other);
+    });
+    for (auto other : sleepers)
+        w.islands.wake_entity(registry, other);
+}
+
 void on_update_transform(registry &registry, entity e) {
     if (!registry.all_of<rigidbody_tag>(e)) return;
     auto &w = world(registry);
     if (registry.all_of<dynamic_tag>(e)) update_inertia_world(registry, e);
     if (registry.all_of<AABB>(e)) {
+        auto old_aabb = registry.get<AABB>(e);
         update_rigidbody_aabb(registry, e);
+        if (!registry.all_of<dynamic_tag>(e) && w.broadphase.contains(e)) {
+            // A static or kinematic body is in no island: waking it wakes nothing. Bodies asleep
+            // against it where it was, or in the way where it is now, must wake to respond.
+            wake_sleepers_near(registry, w, e, old_aabb);
+            wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
+        }
         if (registry.all_of<static_tag>(e) && w.broadphase.contains(e)) {
             // Static proxies are never moved by the broadphase: put it back where it is now.
             w.broadphase.remove(registry, e);

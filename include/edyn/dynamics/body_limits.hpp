@@ -10,13 +10,13 @@
 
 namespace edyn {
 
-// kg: from a milligram to a billion tonnes.
+// kg: from a milligram to a small moon (gravity constraints between planetoids need such masses).
 inline constexpr scalar min_body_mass = scalar(1e-6);
-inline constexpr scalar max_body_mass = scalar(1e12);
+inline constexpr scalar max_body_mass = scalar(1e20);
 // kg·m², for an inertia given explicitly: its smallest and largest principal moments (a 1 cm,
-// 1 g bead has 1e-8; an aircraft carrier about 1e12).
+// 1 g bead has 1e-8; a 1e20 kg body 100 km across about 1e29).
 inline constexpr scalar min_body_inertia = scalar(1e-12);
-inline constexpr scalar max_body_inertia = scalar(1e18);
+inline constexpr scalar max_body_inertia = scalar(1e30);
 // m/s², the magnitude of the world's gravity or a body's: a thousand g.
 inline constexpr scalar max_gravity = scalar(1e4);
 

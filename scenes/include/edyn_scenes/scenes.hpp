@@ -5,6 +5,7 @@
 #include <edyn/edyn.hpp>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace edyn::scenes {
@@ -28,6 +29,34 @@ entity make_mesh_floor(registry &registry, unsigned cells, scalar cell_size, sca
 scalar terrain_height(scalar x, scalar z, scalar amplitude);
 entity make_terrain(registry &registry, unsigned cells, scalar cell_size, scalar amplitude,
                     scalar friction = scalar(0.6));
+
+// The terrain of make_mesh_pile: a make_terrain grid of `cells` x `cells` squares of
+// `cell_size` (100 x 100 of 1.25 m: 20,000 triangles over 125 m by 125 m), hills up to
+// `amplitude`.
+struct mesh_pile_terrain {
+    unsigned cells{100};
+    scalar cell_size{scalar(1.25)};
+    scalar amplitude{3};
+    scalar friction{scalar(0.6)};
+};
+
+// The height of that terrain's triangles at (x, z): terrain_height at the vertices, linear across
+// each triangle in between. None outside the grid.
+std::optional<scalar> terrain_surface_height(const mesh_pile_terrain &terrain, scalar x, scalar z);
+
+// `count` convex bodies of 1 kg and friction 0.6 dropped on a mesh terrain: boxes, spheres,
+// capsules and convex polyhedra (irregular rocks) in equal share, their largest dimension 0.5 to
+// 1, in a grid `width` bodies wide and 2.2 m apart centred on the origin, layer after layer, each
+// body `height` above the terrain under it and each layer 3.3 m above the one below. Sizes and
+// orientations come from a fixed-seed generator. The rocks are built with their centroid at the
+// origin and their principal axes along the object axes (no centre of mass offset, diagonal
+// inertia). No ground plane: whatever leaves the terrain falls for ever.
+struct mesh_pile_scene {
+    entity terrain{null};
+    std::vector<entity> bodies;
+};
+mesh_pile_scene make_mesh_pile(registry &registry, unsigned count, unsigned width = 30, scalar height = 2,
+                               const mesh_pile_terrain &terrain = {}, std::uint32_t seed = 1);
 
 // Pyramid of unit boxes (half extent `half_extent`) standing on the ground, `base` boxes wide
 // in its bottom row and one box fewer in each row above: base * (base + 1) / 2 boxes. Returns

@@ -260,7 +260,7 @@ TEST(network_bounds, bodies_the_client_cannot_simulate_are_refused) {
     add("tiny inertia", [](auto &d) {
         d.inertia = diagonal_matrix(vector3{scalar(1e-13), scalar(1e-13), scalar(1e-13)});
     });
-    add("huge inertia", [](auto &d) { d.inertia = diagonal_matrix(vector3{scalar(1e30), 1, 1}); });
+    add("huge inertia", [](auto &d) { d.inertia = diagonal_matrix(vector3{scalar(1e32), 1, 1}); });
     add("non-symmetric inertia", [](auto &d) {
         auto I = matrix3x3_identity;
         I[0][1] = scalar(0.9);
