@@ -1,5 +1,5 @@
-// edyn-demo: a pyramid, a pile of mixed shapes, bouncing balls, a chain, a bridge and a pile of
-// rag dolls on a floor,
+// edyn-demo: a pyramid, a pile of mixed shapes, bouncing balls, a chain, a bridge, a pile of
+// rag dolls on a floor, and mixed piles on two hilly terrains (a triangle mesh and a paged one),
 // simulated for a while in fixed steps, with a progress line and a summary of what happened.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -19,6 +19,7 @@ struct options {
     unsigned pile_count{512};
     unsigned balls{8};
     unsigned ragdolls{10};
+    unsigned terrain_bodies{225};
     double seconds{10};
     bool quiet{false};
 };
@@ -68,19 +69,27 @@ summary summarize(edyn::registry &registry) {
 int main(int argc, char **argv) {
     options opt;
     CLI::App app{"edyn-demo: rigid bodies falling, stacking, bouncing and sleeping"};
-    app.add_option("--scene", opt.scene, "all, pyramid, pile, balls, chain, bridge or ragdolls")
-        ->check(CLI::IsMember({"all", "pyramid", "pile", "balls", "chain", "bridge", "ragdolls"}));
+    app.add_option("--scene", opt.scene,
+                   "all, pyramid, pile, balls, chain, bridge, ragdolls, terrain or paged")
+        ->check(CLI::IsMember(
+            {"all", "pyramid", "pile", "balls", "chain", "bridge", "ragdolls", "terrain", "paged"}));
     app.add_option("--pyramid-base", opt.pyramid_base, "boxes in the pyramid's bottom row")
         ->check(CLI::Range(1u, 200u));
     app.add_option("--pile-count", opt.pile_count, "bodies in the pile")->check(CLI::Range(1u, 100000u));
     app.add_option("--balls", opt.balls, "bouncing balls")->check(CLI::Range(1u, 1000u));
     app.add_option("--ragdolls", opt.ragdolls, "rag dolls in their pile")->check(CLI::Range(1u, 1000u));
+    app.add_option("--terrain-bodies", opt.terrain_bodies, "bodies dropped on each terrain")
+        ->check(CLI::Range(1u, 100000u));
     app.add_option("--seconds", opt.seconds, "simulated time")->check(CLI::Range(0.0, 3600.0));
     app.add_flag("--quiet", opt.quiet, "no progress line");
     CLI11_PARSE(app, argc, argv);
 
+    // Sequential: each step runs inside step_simulation() on this thread, so that the demo can
+    // time it (the default asynchronous mode would only hand it to the worker).
     edyn::registry registry;
-    edyn::attach(registry);
+    edyn::init_config config;
+    config.execution_mode = edyn::execution_mode::sequential;
+    edyn::attach(registry, config);
     edyn::scenes::make_ground(registry);
 
     bool all = opt.scene == "all";
@@ -116,6 +125,23 @@ int main(int argc, char **argv) {
         // Twenty bodies each; beyond the bridge, on the side away from the pile.
         ragdolls = edyn::scenes::make_ragdoll_pile(registry, opt.ragdolls, 2, edyn::scalar(0.5), {30, 0, 30});
     }
+
+    // Terrains of 256 x 256 one-metre cells (131,072 triangles), raised above the ground plane,
+    // each with a mixed pile dropped on it: one a mesh, one paged in pages of 2,000 triangles.
+    std::vector<std::pair<const char *, edyn::scenes::mesh_pile_terrain>> terrains;
+    std::vector<std::vector<edyn::entity>> terrain_bodies;
+    auto add_terrain = [&](const char *name, bool paged, edyn::vector3 origin) {
+        edyn::scenes::mesh_pile_terrain terrain;
+        terrain.cells = 256;
+        terrain.cell_size = 1;
+        terrain.origin = origin;
+        terrain.paged = paged;
+        auto scene = edyn::scenes::make_mesh_pile(registry, opt.terrain_bodies, 15, 2, terrain);
+        terrains.emplace_back(name, terrain);
+        terrain_bodies.push_back(std::move(scene.bodies));
+    };
+    if (all || opt.scene == "terrain") add_terrain("terrain (mesh)", false, {0, 4, 300});
+    if (all || opt.scene == "paged") add_terrain("terrain (paged)", true, {300, 4, 300});
 
     auto dt = double(edyn::get_fixed_dt(registry));
     auto steps = static_cast<std::size_t>(opt.seconds / dt + 0.5);
@@ -160,6 +186,18 @@ int main(int argc, char **argv) {
     if (!ragdolls.empty()) {
         std::printf("  rag dolls         %zu, joints %s (pivots at most %.2f mm apart)\n", ragdolls.size(),
                     worst_separation < 0.01 ? "held" : "were pulled apart", worst_separation * 1000);
+    }
+    for (std::size_t k = 0; k < terrains.size(); ++k) {
+        // Bodies still over the terrain, and any of them below its surface (fallen through).
+        std::size_t over = 0, below = 0;
+        for (auto e : terrain_bodies[k]) {
+            auto p = registry.get<edyn::position>(e);
+            auto surface = edyn::scenes::terrain_surface_height(terrains[k].second, p.x, p.z);
+            if (!surface) continue;
+            ++over;
+            if (p.y < *surface) ++below;
+        }
+        std::printf("  %-17s %zu bodies over it, %zu below its surface\n", terrains[k].first, over, below);
     }
     edyn::detach(registry);
     return 0;

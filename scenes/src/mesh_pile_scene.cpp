@@ -81,6 +81,8 @@ std::optional<scalar> terrain_surface_height(const mesh_pile_terrain &terrain, s
     // The grid of make_grid_mesh: vertex (i, j) at x = j * cell_size - half, z = i * cell_size -
     // half; each cell split along its diagonal from (i, j) to (i + 1, j + 1).
     auto half = scalar(terrain.cells) * terrain.cell_size / 2;
+    x -= terrain.origin.x;
+    z -= terrain.origin.z;
     auto gx = (x + half) / terrain.cell_size, gz = (z + half) / terrain.cell_size;
     auto n = scalar(terrain.cells);
     if (!(gx >= 0 && gx <= n && gz >= 0 && gz <= n)) return std::nullopt;
@@ -93,15 +95,32 @@ std::optional<scalar> terrain_surface_height(const mesh_pile_terrain &terrain, s
     };
     auto h00 = height(i, j), h01 = height(i, j + 1), h10 = height(i + 1, j), h11 = height(i + 1, j + 1);
     // Triangle (00, 10, 11) where w >= u, triangle (00, 11, 01) where u >= w.
-    if (w >= u) return h00 + u * (h11 - h10) + w * (h10 - h00);
-    return h00 + u * (h01 - h00) + w * (h11 - h01);
+    if (w >= u) return terrain.origin.y + h00 + u * (h11 - h10) + w * (h10 - h00);
+    return terrain.origin.y + h00 + u * (h01 - h00) + w * (h11 - h01);
 }
 
 mesh_pile_scene make_mesh_pile(registry &registry, unsigned count, unsigned width, scalar height,
                                const mesh_pile_terrain &terrain, std::uint32_t seed) {
     mesh_pile_scene scene;
-    scene.terrain =
-        make_terrain(registry, terrain.cells, terrain.cell_size, terrain.amplitude, terrain.friction);
+    {
+        auto amplitude = terrain.amplitude;
+        auto mesh = make_grid_mesh(terrain.cells, terrain.cell_size, [amplitude](scalar x, scalar z) {
+            return terrain_height(x, z, amplitude);
+        });
+        rigidbody_def def;
+        def.kind = rigidbody_kind::rb_static;
+        def.material->friction = terrain.friction;
+        def.position = terrain.origin;
+        if (terrain.paged) {
+            auto v = mesh->get_vertices();
+            auto idx = mesh->get_indices();
+            def.shape = paged_mesh_shape{create_paged_triangle_mesh(
+                {v.begin(), v.end()}, {idx.begin(), idx.end()}, terrain.page_size)};
+        } else {
+            def.shape = mesh_shape{mesh};
+        }
+        scene.terrain = make_rigidbody(registry, def);
+    }
 
     std::mt19937 rng(seed);
     std::uniform_real_distribution<scalar> size_dist(scalar(0.5), scalar(1));
@@ -120,8 +139,10 @@ mesh_pile_scene make_mesh_pile(registry &registry, unsigned count, unsigned widt
         def.material->friction = scalar(0.6);
         auto x = offset + scalar(cell % width) * spacing;
         auto z = offset + scalar(cell / width) * spacing;
-        def.position = {
-            x, terrain_height(x, z, terrain.amplitude) + height + scalar(layer) * scalar(1.5) * spacing, z};
+        def.position = terrain.origin + vector3{x,
+                                                terrain_height(x, z, terrain.amplitude) + height +
+                                                    scalar(layer) * scalar(1.5) * spacing,
+                                                z};
         vector3 axis{unit(rng), unit(rng), unit(rng)};
         if (!try_normalize(axis)) axis = vector3_y;
         def.orientation = quaternion_axis_angle(axis, angle_dist(rng));

@@ -150,6 +150,11 @@ void collide(const compound_shape &a, const mesh_shape &b, const collision_conte
     collide_compound_convex(a, b, ctx, result);
 }
 
+void collide(const compound_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_compound_convex(a, b, ctx, result);
+}
+
 // The other argument order runs the routines above with A and B exchanged, so that both orders
 // give the same points.
 
@@ -184,6 +189,11 @@ void collide(const polyhedron_shape &a, const compound_shape &b, const collision
 }
 
 void collide(const mesh_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const paged_mesh_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
 }

@@ -467,6 +467,81 @@ void collide(const polyhedron_shape &a, const mesh_shape &b, const collision_con
     detail::collide_triangle_mesh(a, *b.trimesh, ctx, result);
 }
 
+namespace {
+
+// Every loaded page near A, each as a mesh, with triangles numbered across pages.
+template<typename Shape>
+void collide_pages(const Shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+                   collision_result &result) {
+    EDYN_ASSERT(b.trimesh);
+    const auto &paged = *b.trimesh;
+    auto inv_orn_b = conjugate(ctx.ornB);
+    auto local_aabb = shape_aabb(a, rotate(inv_orn_b, ctx.posA - ctx.posB), inv_orn_b * ctx.ornA);
+    local_aabb = inset(local_aabb, vector3_one * ctx.threshold);
+    collision_result page_result;
+    paged.visit_loaded_pages(local_aabb, [&](std::size_t page, const triangle_mesh &mesh) {
+        page_result.num_points = 0;
+        detail::collide_triangle_mesh(a, mesh, ctx, page_result);
+        for (std::size_t i = 0; i < page_result.num_points; ++i) {
+            auto p = page_result.point[i];
+            if (p.featureB) p.featureB->part += static_cast<std::int32_t>(paged.first_triangle(page));
+            result.add_point(p);
+        }
+    });
+}
+
+} // namespace
+
+void collide(const sphere_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_pages(a, b, ctx, result);
+}
+
+void collide(const capsule_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_pages(a, b, ctx, result);
+}
+
+void collide(const cylinder_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_pages(a, b, ctx, result);
+}
+
+void collide(const box_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_pages(a, b, ctx, result);
+}
+
+void collide(const polyhedron_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    collide_pages(a, b, ctx, result);
+}
+
+void collide(const paged_mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const paged_mesh_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const paged_mesh_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const paged_mesh_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
+void collide(const paged_mesh_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result) {
+    detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);
+}
+
 void collide(const mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result) {
     detail::collide_swapped([](auto &&...args) { collide(args...); }, a, b, ctx, result);

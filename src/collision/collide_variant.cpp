@@ -47,6 +47,10 @@ static_assert(!has_exact_overload<plane_shape, plane_shape> && !has_exact_overlo
                   !has_exact_overload<plane_shape, mesh_shape> &&
                   !has_exact_overload<mesh_shape, plane_shape>,
               "pairs of static-only shapes are answered by the variant overload alone");
+static_assert(!has_exact_overload<paged_mesh_shape, paged_mesh_shape> &&
+                  !has_exact_overload<paged_mesh_shape, mesh_shape> &&
+                  !has_exact_overload<plane_shape, paged_mesh_shape>,
+              "pairs of static-only shapes are answered by the variant overload alone");
 
 } // namespace
 

@@ -248,17 +248,19 @@ shape_raycast_result shape_raycast(const polyhedron_shape &shape, const raycast_
     return make_result(t_in, t_out, ctx, info, [&] { return rotate(ctx.orn, mesh.normals[entry_face]); });
 }
 
-shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_context &ctx) {
-    EDYN_ASSERT(shape.trimesh && shape.trimesh->initialized());
-    if (ctx.p0 == ctx.p1) return {};
-    const auto &mesh = *shape.trimesh;
-    auto p0 = to_object_space(ctx.p0, ctx.pos, ctx.orn);
-    auto p1 = to_object_space(ctx.p1, ctx.pos, ctx.orn);
+namespace {
+
+// First triangle of `mesh` along the segment [p0, p1] (mesh space), from either side.
+struct triangle_hit {
+    scalar fraction{raycast_miss_fraction};
+    std::size_t triangle{0};
+};
+
+triangle_hit raycast_triangles(const triangle_mesh &mesh, const vector3 &p0, const vector3 &p1) {
     auto d = p1 - p0;
-    shape_raycast_result best;
-    std::size_t best_triangle = 0;
+    triangle_hit best;
     mesh.visit_triangles_segment(p0, p1, [&](std::size_t t) {
-        // Moller-Trumbore, both sides.
+        // Moller-Trumbore.
         auto tri = mesh.get_triangle_vertices(t);
         auto e1 = tri[1] - tri[0], e2 = tri[2] - tri[0];
         auto h = cross(d, e2);
@@ -273,17 +275,57 @@ shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_contex
         if (v < 0 || u + v > 1) return;
         auto fraction = dot(e2, q) * inv;
         if (fraction < 0 || fraction > 1) return;
-        if (fraction < best.fraction || (fraction == best.fraction && t < best_triangle)) {
+        if (fraction < best.fraction || (fraction == best.fraction && t < best.triangle)) {
             best.fraction = fraction;
-            best_triangle = t;
+            best.triangle = t;
         }
     });
-    if (!best.hit()) return {};
-    auto normal = mesh.get_triangle_normal(best_triangle);
-    if (dot(normal, d) > 0) normal = -normal;
-    best.normal = rotate(ctx.orn, normal);
-    best.info_var = mesh_raycast_info{best_triangle};
     return best;
+}
+
+// The normal of the triangle hit, facing the ray's start, in world space.
+vector3 facing_normal(const triangle_mesh &mesh, std::size_t t, const vector3 &d, const quaternion &orn) {
+    auto normal = mesh.get_triangle_normal(t);
+    if (dot(normal, d) > 0) normal = -normal;
+    return rotate(orn, normal);
+}
+
+} // namespace
+
+shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_context &ctx) {
+    EDYN_ASSERT(shape.trimesh && shape.trimesh->initialized());
+    if (ctx.p0 == ctx.p1) return {};
+    auto p0 = to_object_space(ctx.p0, ctx.pos, ctx.orn);
+    auto p1 = to_object_space(ctx.p1, ctx.pos, ctx.orn);
+    auto hit = raycast_triangles(*shape.trimesh, p0, p1);
+    if (!(hit.fraction <= 1)) return {};
+    shape_raycast_result result;
+    result.fraction = hit.fraction;
+    result.normal = facing_normal(*shape.trimesh, hit.triangle, p1 - p0, ctx.orn);
+    result.info_var = mesh_raycast_info{hit.triangle};
+    return result;
+}
+
+shape_raycast_result shape_raycast(const paged_mesh_shape &shape, const raycast_context &ctx) {
+    EDYN_ASSERT(shape.trimesh);
+    if (ctx.p0 == ctx.p1) return {};
+    auto p0 = to_object_space(ctx.p0, ctx.pos, ctx.orn);
+    auto p1 = to_object_space(ctx.p1, ctx.pos, ctx.orn);
+    AABB span{min(p0, p1), max(p0, p1)};
+    shape_raycast_result result;
+    std::size_t best_page = 0, best_triangle = 0;
+    shape.trimesh->visit_loaded_pages(span, [&](std::size_t page, const triangle_mesh &mesh) {
+        auto hit = raycast_triangles(mesh, p0, p1);
+        if (hit.fraction < result.fraction) {
+            result.fraction = hit.fraction;
+            result.normal = facing_normal(mesh, hit.triangle, p1 - p0, ctx.orn);
+            best_page = page;
+            best_triangle = hit.triangle;
+        }
+    });
+    if (!result.hit()) return {};
+    result.info_var = paged_mesh_raycast_info{best_page, best_triangle};
+    return result;
 }
 
 shape_raycast_result shape_raycast(const compound_shape &shape, const raycast_context &ctx) {

@@ -1,5 +1,6 @@
 #include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/shapes/mesh_shape.hpp"
+#include "edyn/shapes/paged_mesh_shape.hpp"
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -53,21 +54,50 @@ material_base get_mixed_material(const registry &registry, const material &a, co
 
 namespace {
 
-const triangle_mesh *per_vertex_mesh(const registry &registry, entity e) {
-    auto *shape = registry.try_get<mesh_shape>(e);
-    if (!shape || !shape->trimesh) return nullptr;
-    const auto &mesh = *shape->trimesh;
-    return mesh.has_per_vertex_friction() || mesh.has_per_vertex_restitution() ? &mesh : nullptr;
+bool has_coefficients(const triangle_mesh &mesh) {
+    return mesh.has_per_vertex_friction() || mesh.has_per_vertex_restitution();
+}
+
+// The triangle mesh holding triangle `part` of the body's mesh (a paged mesh's page), and the
+// triangle's index in it, when the mesh has per-vertex coefficients.
+struct mesh_triangle {
+    const triangle_mesh *mesh{nullptr};
+    std::size_t triangle{0};
+};
+
+mesh_triangle per_vertex_triangle(const registry &registry, entity e, std::int32_t part) {
+    if (part < 0) return {};
+    if (auto *shape = registry.try_get<mesh_shape>(e); shape && shape->trimesh) {
+        if (!has_coefficients(*shape->trimesh) || std::size_t(part) >= shape->trimesh->num_triangles())
+            return {};
+        return {shape->trimesh.get(), std::size_t(part)};
+    }
+    if (auto *shape = registry.try_get<paged_mesh_shape>(e); shape && shape->trimesh) {
+        const auto &paged = *shape->trimesh;
+        if (std::size_t(part) >= paged.num_triangles()) return {};
+        auto page = paged.page_of_triangle(std::size_t(part));
+        const auto *mesh = paged.get_page(page);
+        if (!mesh || !has_coefficients(*mesh)) return {};
+        return {mesh, std::size_t(part) - paged.first_triangle(page)};
+    }
+    return {};
+}
+
+bool may_have_coefficients(const registry &registry, entity e) {
+    if (auto *shape = registry.try_get<mesh_shape>(e); shape && shape->trimesh)
+        return has_coefficients(*shape->trimesh);
+    // A paged mesh's pages tell when they are loaded.
+    return registry.all_of<paged_mesh_shape>(e);
 }
 
 // The body's material with the mesh's coefficients at `pivot` (object space) on the triangle
 // its feature names, where it has them.
-material_base at_point(const material &base, const triangle_mesh *mesh,
+material_base at_point(const registry &registry, entity e, const material &base,
                        const std::optional<collision_feature> &feature, const vector3 &pivot) {
     material_base m = base;
-    if (!mesh || !feature || feature->part < 0 || std::size_t(feature->part) >= mesh->num_triangles())
-        return m;
-    auto t = std::size_t(feature->part);
+    if (!feature) return m;
+    auto [mesh, t] = per_vertex_triangle(registry, e, feature->part);
+    if (!mesh) return m;
     auto tri = mesh->get_triangle_vertices(t);
     auto w = barycentric_coordinates(pivot, tri[0], tri[1], tri[2]);
     // Clamped onto the triangle: points just outside it take its edge's values.
@@ -82,7 +112,7 @@ material_base at_point(const material &base, const triangle_mesh *mesh,
 } // namespace
 
 bool has_per_vertex_material(const registry &registry, entity a, entity b) {
-    return per_vertex_mesh(registry, a) || per_vertex_mesh(registry, b);
+    return may_have_coefficients(registry, a) || may_have_coefficients(registry, b);
 }
 
 material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point) {
@@ -93,8 +123,8 @@ material_base get_point_material(const registry &registry, entity a, entity b, c
             if (auto *mixed = table->find(mat_a.id, mat_b.id)) return *mixed;
         }
     }
-    auto ma = at_point(mat_a, per_vertex_mesh(registry, a), point.featureA, point.pivotA);
-    auto mb = at_point(mat_b, per_vertex_mesh(registry, b), point.featureB, point.pivotB);
+    auto ma = at_point(registry, a, mat_a, point.featureA, point.pivotA);
+    auto mb = at_point(registry, b, mat_b, point.featureB, point.pivotB);
     return mix_materials(ma, mb);
 }
 

@@ -101,7 +101,7 @@ void check_inertia(const char *function, const matrix3x3 &inertia) {
     auto inv = inverse(inertia);
     auto inv_high = std::max({inv[0][0], inv[1][1], inv[2][2]});
     if (!(low >= min_body_inertia && high <= max_body_inertia) || !isfinite(inv) ||
-        !(inv_high <= 1 / min_body_inertia)) {
+        !(inv_high <= scalar(1.0001) / min_body_inertia)) {
         fail(function, "inertia",
              "must have principal moments in [" + str(min_body_inertia) + ", " + str(max_body_inertia) +
                  "] kg*m^2, got " + str(inertia));
@@ -233,6 +233,9 @@ void validate_rigidbody_def(const rigidbody_def &def) {
         if (std::holds_alternative<mesh_shape>(*def.shape) && def.kind == rigidbody_kind::rb_dynamic) {
             fail(fn, "shape", "mesh_shape is only allowed on static and kinematic bodies");
         }
+        if (std::holds_alternative<paged_mesh_shape>(*def.shape) && def.kind == rigidbody_kind::rb_dynamic) {
+            fail(fn, "shape", "paged_mesh_shape is only allowed on static and kinematic bodies");
+        }
     }
     if (def.kind == rigidbody_kind::rb_dynamic) {
         check_mass(fn, def.mass);
@@ -306,6 +309,10 @@ void rigidbody_set_kind(registry &registry, entity e, rigidbody_kind kind) {
     if (shape && std::holds_alternative<mesh_shape>(*shape) && kind == rigidbody_kind::rb_dynamic) {
         throw std::invalid_argument("rigidbody_set_kind: a body with a mesh_shape cannot become dynamic");
     }
+    if (shape && std::holds_alternative<paged_mesh_shape>(*shape) && kind == rigidbody_kind::rb_dynamic) {
+        throw std::invalid_argument(
+            "rigidbody_set_kind: a body with a paged_mesh_shape cannot become dynamic");
+    }
     auto *com = registry.try_get<center_of_mass>(e);
     auto com_value = com ? std::optional<vector3>(*com) : std::nullopt;
     mass_properties props{large_scalar, matrix3x3_zero, com_value.value_or(vector3_zero)};
@@ -350,6 +357,10 @@ void rigidbody_set_shape(registry &registry, entity e, std::optional<shapes_vari
         if (std::holds_alternative<mesh_shape>(*shape) && kind == rigidbody_kind::rb_dynamic) {
             throw std::invalid_argument(
                 "rigidbody_set_shape: mesh_shape is only allowed on static and kinematic bodies");
+        }
+        if (std::holds_alternative<paged_mesh_shape>(*shape) && kind == rigidbody_kind::rb_dynamic) {
+            throw std::invalid_argument(
+                "rigidbody_set_shape: paged_mesh_shape is only allowed on static and kinematic bodies");
         }
     } else if (kind == rigidbody_kind::rb_dynamic && !registry.all_of<inertia>(e)) {
         throw std::invalid_argument("rigidbody_set_shape: a dynamic body without a shape needs an inertia");

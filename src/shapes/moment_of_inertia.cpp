@@ -117,6 +117,8 @@ matrix3x3 moment_of_inertia_solid_capsule(scalar mass, scalar radius, scalar hal
 scalar shape_volume(const plane_shape &) { return std::numeric_limits<scalar>::infinity(); }
 
 scalar shape_volume(const mesh_shape &) { return std::numeric_limits<scalar>::infinity(); }
+
+scalar shape_volume(const paged_mesh_shape &) { return std::numeric_limits<scalar>::infinity(); }
 scalar shape_volume(const sphere_shape &s) { return scalar(4) / 3 * pi * s.radius * s.radius * s.radius; }
 scalar shape_volume(const box_shape &s) { return 8 * s.half_extents.x * s.half_extents.y * s.half_extents.z; }
 scalar shape_volume(const cylinder_shape &s) { return pi * s.radius * s.radius * 2 * s.half_length; }
@@ -144,6 +146,8 @@ scalar shape_volume(const compound_child_shape_t &s) {
 vector3 shape_centroid(const plane_shape &) { return vector3_zero; }
 
 vector3 shape_centroid(const mesh_shape &) { return vector3_zero; }
+
+vector3 shape_centroid(const paged_mesh_shape &) { return vector3_zero; }
 vector3 shape_centroid(const sphere_shape &) { return vector3_zero; }
 vector3 shape_centroid(const box_shape &) { return vector3_zero; }
 vector3 shape_centroid(const cylinder_shape &) { return vector3_zero; }

@@ -24,14 +24,26 @@ AABB shape_aabb(const plane_shape &shape, const vector3 &, const quaternion &) {
     return aabb;
 }
 
-AABB shape_aabb(const mesh_shape &shape, const vector3 &pos, const quaternion &orn) {
-    EDYN_ASSERT(shape.trimesh && shape.trimesh->initialized());
-    const auto &local = shape.trimesh->get_aabb();
+namespace {
+
+AABB placed_aabb(const AABB &local, const vector3 &pos, const quaternion &orn) {
     auto basis = to_matrix3x3(orn);
     auto he = (local.max - local.min) * scalar(0.5);
     auto center = pos + basis * aabb_center(local);
     auto extent = vector3{dot(abs(basis[0]), he), dot(abs(basis[1]), he), dot(abs(basis[2]), he)};
     return {center - extent, center + extent};
+}
+
+} // namespace
+
+AABB shape_aabb(const mesh_shape &shape, const vector3 &pos, const quaternion &orn) {
+    EDYN_ASSERT(shape.trimesh && shape.trimesh->initialized());
+    return placed_aabb(shape.trimesh->get_aabb(), pos, orn);
+}
+
+AABB shape_aabb(const paged_mesh_shape &shape, const vector3 &pos, const quaternion &orn) {
+    EDYN_ASSERT(shape.trimesh);
+    return placed_aabb(shape.trimesh->get_aabb(), pos, orn);
 }
 
 AABB shape_aabb(const sphere_shape &shape, const vector3 &pos, const quaternion &) {

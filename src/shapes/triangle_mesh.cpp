@@ -58,7 +58,11 @@ struct edge_use {
 
 } // namespace
 
-void triangle_mesh::initialize() {
+void triangle_mesh::initialize() { initialize_with(nullptr); }
+
+void triangle_mesh::initialize(std::span<const std::uint8_t> active_edges) { initialize_with(&active_edges); }
+
+void triangle_mesh::initialize_with(const std::span<const std::uint8_t> *given_flags) {
     const char *fn = "triangle_mesh::initialize";
     if (vertices.empty()) throw_invalid_argument(fn, ": the mesh has no vertices");
     if (indices.empty()) throw_invalid_argument(fn, ": the mesh has no indices");
@@ -159,6 +163,19 @@ void triangle_mesh::initialize() {
         aabbs[t] = {min(min(a, b), c), max(max(a, b), c)};
     }
     tree.build(aabbs);
+
+    if (given_flags) {
+        if (dropped > 0) {
+            throw_invalid_argument(fn, ": ", dropped,
+                                   " triangles have zero area, which a page with given edge flags "
+                                   "cannot drop");
+        }
+        if (given_flags->size() != num_tri) {
+            throw_invalid_argument(fn, ": there must be one set of edge flags per triangle (", num_tri,
+                                   "), got ", given_flags->size());
+        }
+        new_flags.assign(given_flags->begin(), given_flags->end());
+    }
 
     indices = std::move(kept);
     normals = std::move(new_normals);

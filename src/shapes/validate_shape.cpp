@@ -32,6 +32,10 @@ void validate_shape(const mesh_shape &shape) {
     }
 }
 
+void validate_shape(const paged_mesh_shape &shape) {
+    if (!shape.trimesh) throw_invalid_argument("paged_mesh_shape: trimesh is null");
+}
+
 void validate_shape(const plane_shape &shape) {
     if (!isfinite(shape.normal)) {
         throw_invalid_argument("plane_shape: normal must be finite, got ", shape.normal);

@@ -37,8 +37,8 @@ struct component_list {};
 // that bodies made before attach() are sent in an order the worker's listeners accept).
 using replicated_components =
     component_list<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
-                   compound_shape, mesh_shape, shape_index, position, orientation, linvel, angvel, gravity,
-                   mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
+                   compound_shape, mesh_shape, paged_mesh_shape, shape_index, position, orientation, linvel,
+                   angvel, gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
                    rigidbody_dynamic_mass, material, collision_filter, collision_exclusion, sensor_tag,
                    sleeping_disabled_tag, dynamic_tag, static_tag, kinematic_tag, rigidbody_tag, AABB,
                    external_tag>;
@@ -97,9 +97,9 @@ void on_update_transform(registry &registry, entity e) {
 }
 
 // The components whose change wakes a body in the worker (registry_listeners.cpp).
-using waking_components =
-    component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape, sphere_shape,
-                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape, mesh_shape>;
+using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
+                                         plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
+                                         polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 template<typename... Components>
 void connect_wake(registry &registry, component_list<Components...>, bool connect) {

@@ -189,7 +189,7 @@ using edyn_components =
                    rigidbody_dynamic_mass, material, shape_index, AABB, collision_filter, collision_exclusion,
                    previous_transform, island_resident, island_edge, sleep_timer, constraint_links,
                    constraint_list, plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
-                   polyhedron_shape, compound_shape, mesh_shape>;
+                   polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 template<typename... Components>
 void clear_all(registry &registry, component_list<Components...>) {
@@ -239,13 +239,14 @@ void disconnect_update(registry &registry, component_list<Components...>) {
 }
 
 // Changes that must wake a sleeping body (besides its transform).
-using waking_components =
-    component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape, sphere_shape,
-                   cylinder_shape, capsule_shape, box_shape, polyhedron_shape, compound_shape, mesh_shape>;
+using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
+                                         plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
+                                         polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 // Changes after which contact points computed with the old geometry must not be reused.
-using shape_components = component_list<shape_index, plane_shape, sphere_shape, cylinder_shape, capsule_shape,
-                                        box_shape, polyhedron_shape, compound_shape, mesh_shape>;
+using shape_components =
+    component_list<shape_index, plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
+                   polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 } // namespace
 

@@ -1,6 +1,7 @@
 #include "edyn/simulation/step.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/narrowphase.hpp"
+#include "edyn/simulation/paged_mesh_loading.hpp"
 #include "edyn/simulation/solve_step.hpp"
 #include "edyn/simulation/world.hpp"
 #include "edyn/simulation/world_state.hpp"
@@ -17,6 +18,8 @@ void run_step(registry &registry) {
 
     // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones.
     world.broadphase.update(registry);
+    //    Paged meshes load the pages bodies are over and near, and unload those left behind.
+    update_paged_meshes(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.
     run_narrowphase(registry, world);
     // 3. External forces: gravity becomes each body's acceleration for the sub-steps.

@@ -148,6 +148,33 @@ void collide(const mesh_shape &a, const polyhedron_shape &b, const collision_con
 void collide(const mesh_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 
+// Paged triangle mesh: as a mesh, against the pages that are loaded (see paged_triangle_mesh).
+// Feature `part` numbers the triangle across pages.
+void collide(const sphere_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const capsule_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const cylinder_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const box_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const polyhedron_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const compound_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const paged_mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const paged_mesh_shape &a, const capsule_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const paged_mesh_shape &a, const cylinder_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const paged_mesh_shape &a, const box_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const paged_mesh_shape &a, const polyhedron_shape &b, const collision_context &ctx,
+             collision_result &result);
+void collide(const paged_mesh_shape &a, const compound_shape &b, const collision_context &ctx,
+             collision_result &result);
+
 // Any two shapes of a rigid body. Two static-only shapes (planes, meshes) report nothing.
 void collide(const shapes_variant_t &a, const shapes_variant_t &b, const collision_context &ctx,
              collision_result &result);

@@ -57,10 +57,16 @@ struct mesh_raycast_info {
     std::size_t triangle_index;
 };
 
+// The page of a paged mesh that was hit and the triangle's index in that page's mesh.
+struct paged_mesh_raycast_info {
+    std::size_t submesh_index;
+    std::size_t triangle_index;
+};
+
 // Spheres and planes report std::monostate.
 using raycast_info_variant =
     std::variant<std::monostate, box_raycast_info, cylinder_raycast_info, capsule_raycast_info,
-                 polyhedron_raycast_info, compound_raycast_info, mesh_raycast_info>;
+                 polyhedron_raycast_info, compound_raycast_info, mesh_raycast_info, paged_mesh_raycast_info>;
 
 // Fraction of a ray that hits nothing.
 inline constexpr scalar raycast_miss_fraction = std::numeric_limits<scalar>::infinity();
@@ -101,6 +107,8 @@ shape_raycast_result shape_raycast(const polyhedron_shape &shape, const raycast_
 shape_raycast_result shape_raycast(const compound_shape &shape, const raycast_context &ctx);
 shape_raycast_result shape_raycast(const compound_child_shape_t &shape, const raycast_context &ctx);
 shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_context &ctx);
+// Only the pages that are loaded are hit.
+shape_raycast_result shape_raycast(const paged_mesh_shape &shape, const raycast_context &ctx);
 
 template<shapes_variant Variant>
 shape_raycast_result shape_raycast(const Variant &shape, const raycast_context &ctx) {

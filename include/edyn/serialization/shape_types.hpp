@@ -208,6 +208,18 @@ void serialize(Archive &archive, mesh_shape &shape) {
     }
 }
 
+// A paged mesh is not sent: its pages come from the program's own loader, which a peer
+// provides through an asset (see the manual's assets). It is written as absent and read as a
+// shape without a mesh, which make_rigidbody refuses.
+template<typename Archive>
+void serialize(Archive &archive, paged_mesh_shape &shape) {
+    bool has_mesh = false;
+    archive(has_mesh);
+    if constexpr (!Archive::is_output) {
+        if (!archive.failed()) shape.trimesh.reset();
+    }
+}
+
 // Each child as its shape, position and orientation (its bounds are recomputed), then whether
 // finish() had been called.
 template<typename Archive>

@@ -35,6 +35,7 @@ scalar shape_volume(const compound_shape &shape);
 scalar shape_volume(const compound_child_shape_t &shape);
 // Planes and meshes: infinite, as static-only shapes.
 scalar shape_volume(const mesh_shape &shape);
+scalar shape_volume(const paged_mesh_shape &shape);
 
 template<shapes_variant Variant>
 scalar shape_volume(const Variant &shape) {
@@ -51,6 +52,7 @@ vector3 shape_centroid(const polyhedron_shape &shape);
 vector3 shape_centroid(const compound_shape &shape);
 vector3 shape_centroid(const compound_child_shape_t &shape);
 vector3 shape_centroid(const mesh_shape &shape);
+vector3 shape_centroid(const paged_mesh_shape &shape);
 
 template<shapes_variant Variant>
 vector3 shape_centroid(const Variant &shape) {

@@ -28,6 +28,7 @@ AABB shape_aabb(const compound_shape &shape, const vector3 &pos, const quaternio
 AABB shape_aabb(const compound_child_shape_t &shape, const vector3 &pos, const quaternion &orn);
 // A mesh's bounds in its object space, placed at (pos, orn): tight when orn is the identity.
 AABB shape_aabb(const mesh_shape &shape, const vector3 &pos, const quaternion &orn);
+AABB shape_aabb(const paged_mesh_shape &shape, const vector3 &pos, const quaternion &orn);
 
 template<shapes_variant Variant>
 AABB shape_aabb(const Variant &shape, const vector3 &pos, const quaternion &orn) {

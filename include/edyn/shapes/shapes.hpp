@@ -6,6 +6,7 @@
 #include "edyn/shapes/compound_shape.hpp"
 #include "edyn/shapes/cylinder_shape.hpp"
 #include "edyn/shapes/mesh_shape.hpp"
+#include "edyn/shapes/paged_mesh_shape.hpp"
 #include "edyn/shapes/plane_shape.hpp"
 #include "edyn/shapes/polyhedron_shape.hpp"
 #include "edyn/shapes/sphere_shape.hpp"
@@ -19,11 +20,11 @@ namespace edyn {
 
 // Every shape a rigid body can have.
 using shapes_variant_t = std::variant<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
-                                      polyhedron_shape, compound_shape, mesh_shape>;
+                                      polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 // The same types as a tuple, to iterate over at compile time (e.g. one registry view per shape).
 using shapes_tuple_t = std::tuple<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
-                                  polyhedron_shape, compound_shape, mesh_shape>;
+                                  polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 namespace detail {
 template<typename T, typename Variant>
@@ -56,7 +57,8 @@ inline constexpr std::size_t num_shapes = std::variant_size_v<shapes_variant_t>;
 // and no collision between two of them.
 template<typename Shape>
 inline constexpr bool is_static_only_shape_v =
-    std::is_same_v<Shape, plane_shape> || std::is_same_v<Shape, mesh_shape>;
+    std::is_same_v<Shape, plane_shape> || std::is_same_v<Shape, mesh_shape> ||
+    std::is_same_v<Shape, paged_mesh_shape>;
 
 // Matches shapes_variant_t only. Functions overloaded for every shape take the variant through
 // this constraint rather than by conversion, so that a shape type lacking its own overload is a

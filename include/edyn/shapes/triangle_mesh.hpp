@@ -79,6 +79,16 @@ public:
     // mesh is unchanged (and not initialized) when it throws.
     void initialize();
 
+    // As initialize(), with each triangle's edge activity given (bit i set: edge i active, one
+    // entry per triangle) instead of derived from this mesh alone: for a page of a larger mesh,
+    // whose edges on the page's border are shared with triangles of other pages. Throws
+    // std::invalid_argument as initialize() does, and when a triangle is degenerate or the
+    // count of flags is not the triangle count.
+    void initialize(std::span<const std::uint8_t> active_edges);
+
+    // Each triangle's active edges (bit i: edge i), as initialize() derived or was given them.
+    std::span<const std::uint8_t> get_edge_flags() const noexcept { return edge_flags; }
+
     bool initialized() const noexcept { return is_initialized; }
 
     std::size_t num_vertices() const noexcept { return vertices.size(); }
@@ -143,6 +153,8 @@ public:
 
 private:
     static constexpr std::uint32_t no_triangle = ~std::uint32_t(0);
+
+    void initialize_with(const std::span<const std::uint8_t> *given_flags);
 
     void append_vertices(const std::vector<vector3> &values);
     static void append_index_checked(std::vector<std::uint64_t> &values, long long value);

@@ -25,6 +25,8 @@ void validate_shape(const compound_shape &shape);
 void validate_shape(const compound_child_shape_t &shape);
 //  - mesh: a triangle mesh is present and initialized.
 void validate_shape(const mesh_shape &shape);
+//  - paged mesh: a paged triangle mesh is present.
+void validate_shape(const paged_mesh_shape &shape);
 
 template<shapes_variant Variant>
 void validate_shape(const Variant &shape) {

@@ -38,10 +38,15 @@ struct mesh_pile_terrain {
     scalar cell_size{scalar(1.25)};
     scalar amplitude{3};
     scalar friction{scalar(0.6)};
+    // Where the terrain's body (and the pile with it) is placed.
+    vector3 origin{vector3_zero};
+    // A paged_mesh_shape of pages of at most page_size triangles instead of a mesh_shape.
+    bool paged{false};
+    std::size_t page_size{2000};
 };
 
-// The height of that terrain's triangles at (x, z): terrain_height at the vertices, linear across
-// each triangle in between. None outside the grid.
+// The height of that terrain's triangles at (x, z) (world space): terrain_height at the
+// vertices, linear across each triangle in between. None outside the grid.
 std::optional<scalar> terrain_surface_height(const mesh_pile_terrain &terrain, scalar x, scalar z);
 
 // `count` convex bodies of 1 kg and friction 0.6 dropped on a mesh terrain: boxes, spheres,

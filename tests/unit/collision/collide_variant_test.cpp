@@ -89,6 +89,16 @@ mesh_shape flat_mesh(scalar height, bool facing_up) {
     return {mesh};
 }
 
+// The same as a paged mesh of two pages, both loaded.
+paged_mesh_shape flat_paged_mesh(scalar height, bool facing_up) {
+    auto whole = flat_mesh(height, facing_up).trimesh;
+    auto v = whole->get_vertices();
+    auto i = whole->get_indices();
+    auto paged = create_paged_triangle_mesh({v.begin(), v.end()}, {i.begin(), i.end()}, 4);
+    paged->require(paged->get_aabb(), 0);
+    return {paged};
+}
+
 struct scene {
     shapes_variant_t a;
     shapes_variant_t b;
@@ -109,6 +119,8 @@ scene make_scene() {
         b = plane_below();
     } else if constexpr (std::is_same_v<B, mesh_shape>) {
         b = flat_mesh(0, true);
+    } else if constexpr (std::is_same_v<B, paged_mesh_shape>) {
+        b = flat_paged_mesh(0, true);
     } else {
         auto s = make_sample(std::type_identity<B>{});
         b = s.shape;
@@ -120,6 +132,9 @@ scene make_scene() {
     } else if constexpr (std::is_same_v<A, mesh_shape>) {
         // The mesh takes its body's transform: at the origin, facing down at B's top less depth.
         a = flat_mesh(b_top - depth, false);
+        ctx.ornA = quaternion_identity;
+    } else if constexpr (std::is_same_v<A, paged_mesh_shape>) {
+        a = flat_paged_mesh(b_top - depth, false);
         ctx.ornA = quaternion_identity;
     } else {
         auto s = make_sample(std::type_identity<A>{});

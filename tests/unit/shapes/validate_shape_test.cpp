@@ -138,12 +138,15 @@ TEST(validate_shape_test, variant_dispatches) {
     expect_invalid_argument(
         [] { validate_shape(shapes_variant_t{mesh_shape{std::make_shared<triangle_mesh>()}}); },
         {"mesh_shape: trimesh is not initialized"});
+    expect_invalid_argument([] { validate_shape(shapes_variant_t{paged_mesh_shape{}}); },
+                            {"paged_mesh_shape: trimesh is null"});
 }
 
 TEST(validate_shape_test, shape_index) {
     static_assert(get_shape_index<plane_shape>() == 0);
-    static_assert(get_shape_index<compound_shape>() == num_shapes - 2);
-    static_assert(get_shape_index<mesh_shape>() == num_shapes - 1);
+    static_assert(get_shape_index<compound_shape>() == num_shapes - 3);
+    static_assert(get_shape_index<mesh_shape>() == num_shapes - 2);
+    static_assert(get_shape_index<paged_mesh_shape>() == num_shapes - 1);
     EXPECT_EQ((shapes_variant_t{box_shape{1, 1, 1}}.index()), get_shape_index<box_shape>());
     EXPECT_EQ((shapes_variant_t{polyhedron_shape{}}.index()), get_shape_index<polyhedron_shape>());
 }
