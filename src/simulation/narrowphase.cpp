@@ -29,6 +29,15 @@ void record_events(contact_events &events, entity manifold, const contact_point_
     if (changes.contact_ended()) events.pending.push_back({kind::ended, manifold, 0});
 }
 
+void set_material(contact_point &cp, const material_base &mixed) {
+    cp.friction = mixed.friction;
+    cp.restitution = mixed.restitution;
+    cp.roll_friction = mixed.roll_friction;
+    cp.spin_friction = mixed.spin_friction;
+    cp.stiffness = mixed.stiffness;
+    cp.damping = mixed.damping;
+}
+
 // Mixed material values are stored on new points for the program to read; the solver mixes
 // again every step so that material changes apply at once.
 void fill_materials(const registry &registry, contact_manifold &manifold,
@@ -40,27 +49,14 @@ void fill_materials(const registry &registry, contact_manifold &manifold,
     if (has_per_vertex_material(registry, manifold.body[0], manifold.body[1])) {
         for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
             auto &cp = manifold.point[manifold.ids[i]];
-            auto mixed = get_point_material(registry, manifold.body[0], manifold.body[1], cp);
-            cp.friction = mixed.friction;
-            cp.restitution = mixed.restitution;
-            cp.roll_friction = mixed.roll_friction;
-            cp.spin_friction = mixed.spin_friction;
-            cp.stiffness = mixed.stiffness;
-            cp.damping = mixed.damping;
+            set_material(cp, get_point_material(registry, manifold.body[0], manifold.body[1], cp));
         }
         return;
     }
     if (changes.num_created == 0) return;
     auto mixed = get_mixed_material(registry, *matA, *matB);
-    for (std::uint32_t i = 0; i < changes.num_created; ++i) {
-        auto &cp = manifold.point[changes.created[i]];
-        cp.friction = mixed.friction;
-        cp.restitution = mixed.restitution;
-        cp.roll_friction = mixed.roll_friction;
-        cp.spin_friction = mixed.spin_friction;
-        cp.stiffness = mixed.stiffness;
-        cp.damping = mixed.damping;
-    }
+    for (std::uint32_t i = 0; i < changes.num_created; ++i)
+        set_material(manifold.point[changes.created[i]], mixed);
 }
 
 bool is_resting(const registry &registry, entity body) {
