@@ -13,6 +13,7 @@ packages=(
   libenet-dev
   libtinyobjloader-dev
   clang libclang-rt-14-dev
+  doxygen
 )
 
 missing=()

@@ -1,0 +1,11 @@
+# Fails when Doxygen wrote any warning: an undocumented public name or a broken reference.
+# (WARN_AS_ERROR = FAIL_ON_WARNINGS already fails; this prints every warning at once.)
+if(EXISTS "${WARNINGS}")
+  file(READ "${WARNINGS}" text)
+  string(STRIP "${text}" text)
+  if(NOT text STREQUAL "")
+    string(REGEX MATCHALL "\n" lines "${text}\n")
+    list(LENGTH lines count)
+    message(FATAL_ERROR "The API reference has ${count} warning(s):\n${text}")
+  endif()
+endif()
