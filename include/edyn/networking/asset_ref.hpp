@@ -10,21 +10,30 @@
 
 namespace edyn {
 
-// An asset: a group of entities (bodies, constraints, external entities) that a client
-// instantiates from its own copy of the asset (a file, a cache) instead of receiving them one
-// by one. On the entity that stands for the asset; `entities` holds its entities by their
-// index in the asset, which is the same in every copy (the server's entities in the server,
-// the client's in the client).
+/// An asset: a group of entities (bodies, constraints, external entities) that a client
+/// instantiates from its own copy of the asset (a file, a cache) instead of receiving them one
+/// by one.
+///
+/// The component is on the entity that stands for the asset. In the server the program emplaces
+/// it with the asset's id and fills `entities` with assign_to_asset; in the client the engine
+/// makes the asset entity, with the id, when the asset's entities enter the client's AABB of
+/// interest (network_client_entity_entered_sink), and the program fills `entities` with its own
+/// copies, again with assign_to_asset.
 struct asset_ref {
+    /// The program's id of the asset (which file or record to load it from); 0 by default.
     asset_id_type id{};
+    /// The asset's entities by their index in the asset, which is the same in every copy (the
+    /// server's entities in the server, the client's in the client). Filled by assign_to_asset.
     std::map<asset_index_type, entity> entities;
 };
 
-// On every entity assigned to an asset: which, its index, and the components (type_index) sent
-// with the asset's state when a client asks for it (client_asset_ready).
+/// Which asset an entity belongs to; on every entity assigned to an asset. Written by
+/// assign_to_asset, not by the program.
 struct asset_member {
-    entity asset_entity{null};
-    asset_index_type index{};
+    entity asset_entity{null}; ///< The entity with the asset_ref (null by default).
+    asset_index_type index{};  ///< The entity's index in the asset.
+    /// The components (their `type_index`) sent with the asset's state when a client asks for it
+    /// (client_asset_ready).
     std::vector<std::size_t> components;
 };
 
@@ -33,10 +42,22 @@ void assign_to_asset(registry &registry, entity asset_entity, asset_index_type i
                      std::vector<std::size_t> components);
 }
 
-// Puts `entity` in the asset of `asset_entity` (which has an asset_ref) at `index`; the
-// Components, which must be networked, are the state a client receives to instantiate it
-// (client_asset_ready). Used the same way on the client, to link its copy (client_link_asset).
-// Throws std::invalid_argument when `asset_entity` has no asset_ref or `entity` is not valid.
+/// Puts an entity in an asset at the given index, and names the components that make up its
+/// initial state.
+///
+/// On the server, call it for every networked entity of the asset after creating them. On the
+/// client, call it the same way for the local copies once the asset is instantiated, then call
+/// client_link_asset to link them to the server's entities. Assigning another entity to an index
+/// already used replaces it in asset_ref::entities; the entity's asset_member is replaced too.
+///
+/// @tparam Components Networked components (registered with register_networked_components or
+/// edyn's own) whose values a client receives to instantiate the entity (client_asset_ready).
+/// @param registry The registry of the server or client.
+/// @param asset_entity The entity that has the asset's asset_ref.
+/// @param index The entity's index in the asset, the same in every copy of the asset.
+/// @param entity The entity to assign; it receives an asset_member.
+/// @throws std::invalid_argument When `asset_entity` is not valid or has no asset_ref, or when
+/// `entity` is not valid.
 template<typename... Components>
 void assign_to_asset(registry &registry, entity asset_entity, asset_index_type index, entity entity) {
     detail::assign_to_asset(registry, asset_entity, index, entity, {type_index<Components>()...});
