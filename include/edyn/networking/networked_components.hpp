@@ -183,14 +183,20 @@ void register_networked_types(registry &registry, std::vector<networked_type> ty
 
 } // namespace detail
 
-// Makes the program's components part of registry snapshots: their values travel between server
-// and clients, on networked entities, whenever they change (and with the entity when it is
-// created on a client). Components derived from network_input are the clients' inputs. Actions
-// (action_list.hpp) are listed in the tuple. Server and clients must register the same types in
-// the same order, after register_external_components; a component that is not empty needs a
-// free `serialize(Archive &, T &)`.
-//
-//   edyn::register_networked_components<steering, health>(registry, std::tuple<jump>{});
+/// Makes the program's components part of registry snapshots.
+///
+/// Their values travel between server and clients, on networked entities, whenever they change
+/// (and with the entity when it is created on a client). Components derived from network_input
+/// are the clients' inputs. Actions (action_list.hpp) are listed in the tuple. Server and clients
+/// must register the same types in the same order, after register_external_components; a
+/// component that is not empty needs a free `serialize(Archive &, T &)`, found by
+/// argument-dependent lookup. A type registered already keeps its place; nothing throws.
+/// @code
+/// edyn::register_networked_components<steering, health>(registry, std::tuple<jump>{});
+/// @endcode
+/// @tparam Components The program's networked components.
+/// @tparam Actions The program's action types (each travels as an action_history).
+/// @param registry The registry of the server or client.
 template<typename... Components, typename... Actions>
 void register_networked_components(registry &registry, std::tuple<Actions...> = {}) {
     auto types = std::vector<detail::networked_type>{detail::make_networked_type<Components>()...};

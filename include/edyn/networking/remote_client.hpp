@@ -9,43 +9,55 @@
 
 namespace edyn {
 
-// Packets from a client the server refused, by reason. A refused packet is dropped whole.
+/// Packets from a client the server refused, by reason. A refused packet is dropped whole.
+/// Counted by the engine in remote_client::rejected; all counts start at 0.
 struct remote_client_rejections {
-    // The bytes did not decode, or a pool's values were malformed.
+    /// The bytes did not decode, or a pool's values were malformed.
     std::uint32_t malformed{0};
-    // Named an entity the client does not own.
+    /// Named an entity the client does not own.
     std::uint32_t not_owned{0};
-    // Carried a component that is not an input of the client's, or a packet kind a client may
-    // not send.
+    /// Carried a component that is not an input of the client's, or a packet kind a client may
+    /// not send.
     std::uint32_t not_input{0};
-    // Named an entity the server never sent the client.
+    /// Named an entity the server never sent the client.
     std::uint32_t unknown_entity{0};
-    // Arrived too late to be applied at its time (it is applied at once instead, not refused).
+    /// Snapshots that arrived too late to be applied at their time (they are applied at once
+    /// instead, not refused).
     std::uint32_t late{0};
 
+    /// The number of refused packets.
+    /// @return `malformed + not_owned + not_input + unknown_entity`; `late` is not a refusal and
+    /// is left out.
     std::uint32_t total() const noexcept { return malformed + not_owned + not_input + unknown_entity; }
 };
 
-// A client of the server, on the entity server_make_client made. Fields the program may set:
-// snapshot_rate, aabb_of_interest, owned_entities (through server_set_entity_owner or directly).
+/// A client of the server, on the entity server_make_client made.
+///
+/// Fields the program may set: snapshot_rate, aabb_of_interest, aabb_follows_owned and
+/// owned_entities; the others are written by the engine. Other application data about the client
+/// goes on the same entity, as the program's own components.
 struct remote_client {
-    // Registry snapshots sent to the client per second.
+    /// Registry snapshots sent to the client per second (default 30).
     double snapshot_rate{30};
-    // The region of the world the client is sent: islands with a body inside it are created in
-    // the client, those leaving it destroyed. When the client owns bodies and
-    // aabb_follows_owned is set, it is recentred on them every update, keeping its size.
+    /// The region of the world the client is sent, in world space (m; default a 100 m cube
+    /// centred at the origin): islands with a body inside it are created in the client, those
+    /// leaving it destroyed.
     AABB aabb_of_interest{{-50, -50, -50}, {50, 50, 50}};
+    /// When set (the default) and the client owns bodies, aabb_of_interest is recentred on them
+    /// every update, keeping its size.
     bool aabb_follows_owned{true};
-    // Round-trip time in seconds (server_set_client_round_trip_time).
+    /// Round-trip time in seconds (0 by default); set it with server_set_client_round_trip_time.
     double round_trip_time{0};
-    // Entities whose inputs and actions this client may send.
+    /// Entities whose inputs and actions this client may send (empty by default).
     std::vector<entity> owned_entities;
-    // How long its snapshots wait in the jitter buffer; set by the server from its clients'
-    // latencies, and sent to the client when it changes.
+    /// How long (seconds) its snapshots wait in the jitter buffer; set by the server from the
+    /// client's round-trip time and how late its snapshots arrive, and sent to the client when it
+    /// changes.
     double playout_delay{0};
 
+    /// What the server refused of this client's packets so far.
     remote_client_rejections rejected;
-    // Packets the server handed to the packet sink for this client.
+    /// Packets the server handed to the packet sink for this client.
     std::uint64_t packets_sent{0};
 };
 

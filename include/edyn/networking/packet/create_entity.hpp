@@ -7,14 +7,17 @@
 
 namespace edyn::packet {
 
-// Entities to instantiate with all their networked components: whole islands that entered a
-// client's AABB of interest, or the reply to an entity_request.
+/// Server to client: entities to instantiate with all their networked components: whole islands
+/// that entered a client's AABB of interest, or the reply to an entity_request.
 struct create_entity {
-    double timestamp{};
-    std::vector<entity> entities;
-    std::vector<pool_snapshot> pools;
+    double timestamp{};               ///< Server simulation time of the state, in seconds.
+    std::vector<entity> entities;     ///< The server's entities to create, by position.
+    std::vector<pool_snapshot> pools; ///< Their components' values, one pool per component type.
 };
 
+/// Writes or reads a create_entity packet.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param packet The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, create_entity &packet) {
     archive(packet.timestamp, packet.entities, packet.pools);

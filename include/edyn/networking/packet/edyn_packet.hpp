@@ -10,23 +10,33 @@
 
 namespace edyn::packet {
 
-// Every packet edyn's server and clients exchange. Serialized as the alternative's index (one
-// byte) and its contents:
-//
-//   std::vector<uint8_t> data;
-//   auto archive = edyn::memory_output_archive(data);
-//   archive(packet);
-//
-// New kinds are appended, so that the indices of the existing ones stay.
+/// Every kind of packet edyn's server and clients exchange. Serialized as the alternative's index
+/// (one byte) and its contents. New kinds are appended, so that the indices of the existing ones
+/// stay.
 using edyn_packet_variant =
     std::variant<registry_snapshot, create_entity, destroy_entity, entity_entered, entity_exited,
                  entity_request, asset_sync, asset_sync_response, time_request, time_response,
                  server_settings, set_playout_delay, client_created>;
 
+/// A packet of edyn's networking, as the packet sinks hand it over and the receive functions take
+/// it.
+///
+/// The program transports it as bytes:
+/// @code
+/// std::vector<uint8_t> data;
+/// auto archive = edyn::memory_output_archive(data);
+/// archive(packet);
+/// @endcode
+/// and decodes them on the other end with a memory_input_archive, passing the packet on only when
+/// the archive has not failed().
 struct edyn_packet {
-    edyn_packet_variant var;
+    edyn_packet_variant var; ///< The packet itself, one of the kinds of edyn_packet_variant.
 };
 
+/// Writes or reads an edyn_packet: its kind (one byte) and its contents; reading an unknown kind fails
+/// the archive.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param packet The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, edyn_packet &packet) {
     archive(packet.var);
@@ -36,9 +46,14 @@ void serialize(Archive &archive, edyn_packet &packet) {
 
 namespace edyn {
 
-// Whether the packet must arrive: everything but registry snapshots, which are sent many times
-// per second and repeat recent changes, and the clock's requests and replies, which are
-// repeated too.
+/// Whether a packet must be sent through a reliable channel.
+///
+/// Every packet must arrive but registry snapshots, which are sent many times per second and
+/// repeat recent changes, and the clock's requests and replies, which are repeated too. Passing
+/// this to the transport lets it skip acknowledgements and resends for the most frequent packets.
+/// @param packet The packet about to be sent.
+/// @return False for packet::registry_snapshot, packet::time_request and packet::time_response;
+/// true for every other kind.
 bool should_send_reliably(const packet::edyn_packet &packet) noexcept;
 
 } // namespace edyn

@@ -9,33 +9,44 @@
 
 namespace edyn::packet {
 
-// Entities destroyed in the server.
+/// Server to client: entities destroyed in the server that the client has; it destroys its
+/// copies.
 struct destroy_entity {
-    double timestamp{};
-    std::vector<entity> entities;
+    double timestamp{};           ///< Server simulation time of the destruction, in seconds.
+    std::vector<entity> entities; ///< The server's entities.
 };
 
-// Entities that left the client's AABB of interest: the client destroys its copies.
+/// Server to client: entities that left the client's AABB of interest; the client destroys its
+/// copies.
 struct entity_exited {
-    std::vector<entity> entities;
+    std::vector<entity> entities; ///< The server's entities.
 };
 
-// A client asks for the full state of entities a snapshot named before their create_entity
-// arrived (it can be lost or late); the server answers with a create_entity.
+/// Client to server: a client asks for the full state of entities a snapshot named before their
+/// create_entity arrived (it can be lost or late); the server answers with a create_entity.
 struct entity_request {
-    std::vector<entity> entities;
+    std::vector<entity> entities; ///< The server's entities the client does not know.
 };
 
+/// Writes or reads a destroy_entity packet.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param packet The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, destroy_entity &packet) {
     archive(packet.timestamp, packet.entities);
 }
 
+/// Writes or reads an entity_exited packet.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param packet The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, entity_exited &packet) {
     archive(packet.entities);
 }
 
+/// Writes or reads an entity_request packet.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param packet The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, entity_request &packet) {
     archive(packet.entities);

@@ -7,15 +7,19 @@
 
 namespace edyn::packet {
 
-// Entities and the networked components of theirs that changed recently, as they were at
-// `timestamp` (server simulation time; a client stamps its own with the server time at which
-// its inputs should apply). Sent many times per second through an unreliable channel.
+/// Both ways: entities and the networked components of theirs that changed recently, as they
+/// were at `timestamp`. Sent many times per second through an unreliable channel.
 struct registry_snapshot {
+    /// Server simulation time in seconds; a client stamps its own with the server time at which
+    /// its inputs should apply.
     double timestamp{};
-    std::vector<entity> entities;
-    std::vector<pool_snapshot> pools;
+    std::vector<entity> entities;     ///< The entities the pools refer to, by position (the server's).
+    std::vector<pool_snapshot> pools; ///< The changed values, one pool per component type.
 };
 
+/// Writes or reads a registry_snapshot.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param snapshot The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, registry_snapshot &snapshot) {
     archive(snapshot.timestamp, snapshot.entities, snapshot.pools);
