@@ -36,6 +36,9 @@ void serialize_array(Archive &archive, T (&values)[N]) {
 
 } // namespace detail
 
+/// Writes or reads a point constraint: bodies, pivots, friction torque and its impulses.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, point_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -43,6 +46,9 @@ void serialize(Archive &archive, point_constraint &c) {
     archive(c.friction_torque, c.impulse, c.friction_impulse);
 }
 
+/// Writes or reads a distance constraint: bodies, pivots, distance and its impulse.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, distance_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -50,6 +56,10 @@ void serialize(Archive &archive, distance_constraint &c) {
     archive(c.distance, c.impulse);
 }
 
+/// Writes or reads a soft distance constraint: bodies, pivots, distance, stiffness, damping and
+/// its impulse.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, soft_distance_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -57,6 +67,10 @@ void serialize(Archive &archive, soft_distance_constraint &c) {
     archive(c.distance, c.stiffness, c.damping, c.impulse);
 }
 
+/// Writes or reads a hinge constraint: bodies, pivots, frames, limits, friction, damping, bump
+/// stops, spring, its current angle and its impulses.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, hinge_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -70,6 +84,10 @@ void serialize(Archive &archive, hinge_constraint &c) {
     archive(c.friction_impulse, c.spring_impulse);
 }
 
+/// Writes or reads a constant-velocity joint: bodies, pivots, frames, twist limits, friction,
+/// damping, spring and bump stops, its current twist angle and its impulses.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, cvjoint_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -83,6 +101,10 @@ void serialize(Archive &archive, cvjoint_constraint &c) {
     archive(c.friction_impulse, c.spring_impulse, c.bend_friction_impulse);
 }
 
+/// Writes or reads a cone constraint: bodies, pivots, frame, span angles, restitution, bump stop
+/// and its impulses.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, cone_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -92,18 +114,29 @@ void serialize(Archive &archive, cone_constraint &c) {
     archive(c.restitution, c.bump_stop_angle, c.bump_stop_stiffness, c.impulse, c.bump_stop_impulse);
 }
 
-// Called directly by generic_dof's serializer: `archive(mode)` would bypass the range check.
+/// Writes or reads a degree of freedom's mode, failing the input archive on a value that names no
+/// mode. Called directly by generic_dof's serializer: `archive(mode)` would bypass the range check.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param mode The mode to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, dof_mode &mode) {
     serialize_enum(archive, mode, dof_mode::limited);
 }
 
+/// Writes or reads one degree of freedom of a generic constraint: mode, limits, stiffness, rest
+/// value, damping and friction.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param dof The degree of freedom to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, generic_dof &dof) {
     serialize(archive, dof.mode);
     archive(dof.min, dof.max, dof.stiffness, dof.rest, dof.damping, dof.friction);
 }
 
+/// Writes or reads a generic constraint: bodies, pivots, frames, each degree of freedom and the
+/// impulses.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, generic_constraint &c) {
     detail::serialize_array(archive, c.body);
@@ -118,11 +151,17 @@ void serialize(Archive &archive, generic_constraint &c) {
     detail::serialize_array(archive, c.friction_impulse);
 }
 
+/// Writes or reads a gravity constraint: its bodies.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, gravity_constraint &c) {
     detail::serialize_array(archive, c.body);
 }
 
+/// Writes or reads a null constraint: its bodies.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param c The constraint to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, null_constraint &c) {
     detail::serialize_array(archive, c.body);

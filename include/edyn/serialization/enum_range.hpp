@@ -11,7 +11,15 @@
 
 namespace edyn {
 
-// For enumerations whose enumerators run from 0 to `last` without gaps.
+/// Writes or reads an enumeration as its underlying integer, checking the range when reading.
+///
+/// For enumerations whose enumerators run from 0 to `last` without gaps. Call it from a
+/// serialize function instead of `archive(value)`, which does not check: an input archive fails
+/// on a value past `last` (or below 0), so a switch over the enumeration never meets a value it
+/// does not handle.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param value The value to write from or read into; left as it was when reading fails.
+/// @param last The last enumerator.
 template<typename Archive, typename Enum>
 void serialize_enum(Archive &archive, Enum &value, Enum last) {
     static_assert(std::is_enum_v<Enum>);

@@ -27,40 +27,63 @@
 
 namespace edyn {
 
-// Bounds on a polyhedron read from bytes, checked before anything is built: validation costs
-// vertices times faces, and a convex polyhedron has at most 2V - 4 faces and 6V - 12 indices.
+/// The most vertices a polyhedron read from bytes may have (4096); more fail the archive.
+///
+/// Bounds on a polyhedron read from bytes are checked before anything is built: validation costs
+/// vertices times faces, and a convex polyhedron has at most 2V - 4 faces and 6V - 12 indices.
 inline constexpr std::size_t max_serialized_polyhedron_vertices = 4096;
+/// The most faces a polyhedron read from bytes may have (twice the vertices' bound).
 inline constexpr std::size_t max_serialized_polyhedron_faces = 2 * max_serialized_polyhedron_vertices;
+/// The most vertex indices, over all faces, a polyhedron read from bytes may have (six times the
+/// vertices' bound).
 inline constexpr std::size_t max_serialized_polyhedron_indices = 6 * max_serialized_polyhedron_vertices;
 
-// Called directly by the shapes' serializers: `archive(axis)` would bypass the range check.
+/// Writes or reads a coordinate axis, failing the input archive on a value that names no axis.
+/// Called directly by the shapes' serializers: `archive(axis)` would bypass the range check.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param axis The axis to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, coordinate_axis &axis) {
     serialize_enum(archive, axis, coordinate_axis::z);
 }
 
+/// Writes or reads a plane: its normal and constant. Not checked.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, plane_shape &shape) {
     archive(shape.normal, shape.constant);
 }
 
+/// Writes or reads a sphere: its radius. Not checked.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, sphere_shape &shape) {
     archive(shape.radius);
 }
 
+/// Writes or reads a cylinder: radius, half length and axis. Only the axis is checked.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, cylinder_shape &shape) {
     archive(shape.radius, shape.half_length);
     serialize(archive, shape.axis);
 }
 
+/// Writes or reads a capsule: radius, half length and axis. Only the axis is checked.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, capsule_shape &shape) {
     archive(shape.radius, shape.half_length);
     serialize(archive, shape.axis);
 }
 
+/// Writes or reads a box: its half extents. Not checked.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, box_shape &shape) {
     archive(shape.half_extents);
@@ -113,7 +136,14 @@ bool read_convex_mesh_data(Archive &archive, std::vector<vector3> &vertices,
 
 } // namespace detail
 
-// A polyhedron without a mesh (default constructed) round-trips as one.
+/// Writes or reads a polyhedron as its vertices and the vertex indices of each face.
+///
+/// Reading rebuilds it through its constructor, which validates: counts beyond the
+/// max_serialized_polyhedron_* bounds, bad indices, or a non-convex or open surface fail the
+/// archive and leave `shape` as it was. A polyhedron without a mesh (default constructed)
+/// round-trips as one.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, polyhedron_shape &shape) {
     bool has_mesh = shape.mesh != nullptr;
@@ -139,8 +169,11 @@ void serialize(Archive &archive, polyhedron_shape &shape) {
     }
 }
 
-// Bounds on a triangle mesh read from bytes.
+/// The most vertices (and per-vertex coefficients) a triangle mesh read from bytes may have
+/// (2^20); more fail the archive.
 inline constexpr std::size_t max_serialized_mesh_vertices = std::size_t(1) << 20;
+/// The most vertex indices a triangle mesh read from bytes may have (six times the vertices'
+/// bound).
 inline constexpr std::size_t max_serialized_mesh_indices = 6 * max_serialized_mesh_vertices;
 
 namespace detail {
@@ -164,10 +197,15 @@ void write_array(memory_output_archive &archive, std::span<const T> values) {
 
 } // namespace detail
 
-// A mesh as its vertices, indices and per-vertex coefficients; the rest is rebuilt by
-// initialize(), which validates (whatever it refuses fails the archive). Sent after
-// initialize(), so the copy numbers its triangles as the original does. A shape without a mesh
-// round-trips as one.
+/// Writes or reads a triangle mesh shape as its vertices, indices and per-vertex friction and
+/// restitution coefficients.
+///
+/// The rest is rebuilt by `triangle_mesh::initialize()`, which validates: whatever it refuses,
+/// or counts beyond the max_serialized_mesh_* bounds, fail the archive and leave `shape` as it
+/// was. Sent after initialize(), so the copy numbers its triangles as the original does. A shape
+/// without a mesh round-trips as one. The mesh read is a new one, not shared with other shapes.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, mesh_shape &shape) {
     bool has_mesh = shape.trimesh != nullptr;
@@ -208,9 +246,12 @@ void serialize(Archive &archive, mesh_shape &shape) {
     }
 }
 
-// A paged mesh is not sent: its pages come from the program's own loader, which a peer
-// provides through an asset (see the manual's assets). It is written as absent and read as a
-// shape without a mesh, which make_rigidbody refuses.
+/// Writes or reads a paged mesh shape as absent: its pages are not sent.
+///
+/// The pages come from the program's own loader, which a peer provides through an asset (see the
+/// manual's assets). The shape is read as one without a mesh, which make_rigidbody refuses.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from (ignored) or read into.
 template<typename Archive>
 void serialize(Archive &archive, paged_mesh_shape &shape) {
     bool has_mesh = false;
@@ -220,8 +261,13 @@ void serialize(Archive &archive, paged_mesh_shape &shape) {
     }
 }
 
-// Each child as its shape, position and orientation (its bounds are recomputed), then whether
-// finish() had been called.
+/// Writes or reads a compound shape: each child as its shape, position and orientation (its
+/// bounds are recomputed), then whether finish() had been called.
+///
+/// Reading rebuilds it through add_shape and finish, which validate: whatever they refuse fails
+/// the archive and leaves `shape` as it was.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, compound_shape &shape) {
     if constexpr (Archive::is_output) {

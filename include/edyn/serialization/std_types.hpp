@@ -31,6 +31,11 @@ std::size_t read_count(memory_input_archive &archive) noexcept {
 }
 } // namespace detail
 
+/// Writes or reads a vector: its size, then each element (a vector of bytes as one block).
+/// Reading replaces the contents; a size larger than the bytes left fails the archive before
+/// anything is allocated.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param values The vector to write from or read into.
 template<typename Archive, typename T, typename Allocator>
 void serialize(Archive &archive, std::vector<T, Allocator> &values) {
     if constexpr (Archive::is_output) {
@@ -56,6 +61,10 @@ void serialize(Archive &archive, std::vector<T, Allocator> &values) {
     }
 }
 
+/// Writes or reads a string: its length, then its bytes. A length larger than the bytes left
+/// fails the archive.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param value The string to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, std::string &value) {
     if constexpr (Archive::is_output) {
@@ -69,22 +78,34 @@ void serialize(Archive &archive, std::string &value) {
     }
 }
 
+/// Writes or reads a fixed-size array: each element, without a count.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param values The array to write from or read into.
 template<typename Archive, typename T, std::size_t N>
 void serialize(Archive &archive, std::array<T, N> &values) {
     for (auto &v : values)
         archive(v);
 }
 
+/// Writes or reads a pair: first, then second.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param value The pair to write from or read into.
 template<typename Archive, typename A, typename B>
 void serialize(Archive &archive, std::pair<A, B> &value) {
     archive(value.first, value.second);
 }
 
+/// Writes or reads a tuple: each element in order.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param value The tuple to write from or read into.
 template<typename Archive, typename... Ts>
 void serialize(Archive &archive, std::tuple<Ts...> &value) {
     std::apply([&](auto &...elements) { archive(elements...); }, value);
 }
 
+/// Writes or reads an optional: whether it has a value, then the value if so.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param value The optional to write from or read into.
 template<typename Archive, typename T>
 void serialize(Archive &archive, std::optional<T> &value) {
     bool has_value = value.has_value();
@@ -101,6 +122,10 @@ void serialize(Archive &archive, std::optional<T> &value) {
     }
 }
 
+/// Writes or reads a variant: the index of its alternative (one byte), then the alternative. An
+/// index past the last alternative fails the archive.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param value The variant to write from or read into.
 template<typename Archive, typename... Ts>
 void serialize(Archive &archive, std::variant<Ts...> &value) {
     static_assert(sizeof...(Ts) < 256);
@@ -122,6 +147,10 @@ void serialize(Archive &archive, std::variant<Ts...> &value) {
     }
 }
 
+/// Writes or reads a map: its size, then each key and value in key order. Reading replaces the
+/// contents; a repeated key keeps the last value read.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param values The map to write from or read into.
 template<typename Archive, typename Key, typename T, typename Compare, typename Allocator>
 void serialize(Archive &archive, std::map<Key, T, Compare, Allocator> &values) {
     if constexpr (Archive::is_output) {
