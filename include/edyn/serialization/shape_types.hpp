@@ -139,7 +139,7 @@ bool read_convex_mesh_data(Archive &archive, std::vector<vector3> &vertices,
 /// Writes or reads a polyhedron as its vertices and the vertex indices of each face.
 ///
 /// Reading rebuilds it through its constructor, which validates: counts beyond the
-/// max_serialized_polyhedron_* bounds, bad indices, or a non-convex or open surface fail the
+/// `max_serialized_polyhedron_*` bounds, bad indices, or a non-convex or open surface fail the
 /// archive and leave `shape` as it was. A polyhedron without a mesh (default constructed)
 /// round-trips as one.
 /// @param archive A memory_output_archive or memory_input_archive.
@@ -201,7 +201,7 @@ void write_array(memory_output_archive &archive, std::span<const T> values) {
 /// restitution coefficients.
 ///
 /// The rest is rebuilt by `triangle_mesh::initialize()`, which validates: whatever it refuses,
-/// or counts beyond the max_serialized_mesh_* bounds, fail the archive and leave `shape` as it
+/// or counts beyond the `max_serialized_mesh_*` bounds, fail the archive and leave `shape` as it
 /// was. Sent after initialize(), so the copy numbers its triangles as the original does. A shape
 /// without a mesh round-trips as one. The mesh read is a new one, not shared with other shapes.
 /// @param archive A memory_output_archive or memory_input_archive.
