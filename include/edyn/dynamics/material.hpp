@@ -50,8 +50,10 @@ using material_id_type = std::uint32_t;
 inline constexpr material_id_type invalid_material_id = std::numeric_limits<material_id_type>::max();
 
 /// Component: a body's material, set from rigidbody_def::material by make_rigidbody.
-/// Sensors have none. Pairs of ids can have their mixed material overridden with
-/// insert_material_mixing. Change it with `replace` or `patch` so that the simulation sees it.
+/// Its surface properties (friction, restitution, roll_friction, spin_friction, stiffness,
+/// damping) are the members it inherits from material_base. Sensors have none. Pairs of ids can
+/// have their mixed material overridden with insert_material_mixing. Change it with `replace`
+/// or `patch` so that the simulation sees it.
 struct material : material_base {
     /// Id for pair overrides; `invalid_material_id` (the default) when the material has none.
     material_id_type id{invalid_material_id};
