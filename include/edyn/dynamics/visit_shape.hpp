@@ -8,8 +8,16 @@
 
 namespace edyn {
 
-// Calls fn(const Shape &) with the shape component of `entity` (which must have a shape_index),
-// without copying it into a variant.
+/// Calls `fn(const Shape &)` with the shape component of `entity`, without copying it into a
+/// variant.
+/// The entity must have a shape_index (any rigid body with a shape); this is not checked, other
+/// than by assertions in debug builds. `fn` must accept every shape type and return the same
+/// type for all of them.
+/// @tparam Fn A callable taking `const S &` for every shape type `S` of shapes_variant_t.
+/// @param registry The registry the body lives in.
+/// @param entity A body with a shape.
+/// @param fn The function to call with the shape.
+/// @return Whatever `fn` returns.
 template<typename Fn>
 decltype(auto) visit_shape(const registry &registry, entity entity, Fn &&fn) {
     auto index = registry.get<shape_index>(entity).value;

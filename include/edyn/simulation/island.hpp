@@ -8,32 +8,38 @@
 
 namespace edyn {
 
-// A connected component of the entity graph: dynamic bodies (nodes) joined by manifolds in
-// contact and constraints (edges). Static and kinematic bodies are not nodes, so they never join
-// two islands. Each island is an entity with this component; when it sleeps, it and every
-// entity in it carry sleeping_tag.
+/// Component: a connected component of the entity graph, on an island entity of its own.
+/// Dynamic bodies are its nodes, joined by manifolds in contact and constraints (its edges).
+/// Static and kinematic bodies are not nodes, so they never join two islands. When the island
+/// sleeps, it and every entity in it carry sleeping_tag. Written only by the island_manager;
+/// programs may read it.
 struct island {
-    std::vector<entity> nodes;
-    std::vector<entity> edges;
-    // An edge left since the island was last split: it may have come apart.
+    std::vector<entity> nodes; ///< The dynamic bodies in the island, in no particular order.
+    std::vector<entity> edges; ///< The manifolds in contact and constraints linking them.
+    /// Whether an edge or node left since the island was last split: it may have come apart.
+    /// The island is split when it is about to sleep.
     bool may_split{false};
 };
 
-// On every node and linked edge: the island it belongs to, and its position in that island's
-// `nodes` or `edges` (for removal in constant time).
+/// Component: on every node and linked edge, the island it belongs to and its place there.
+/// Its position in that island's `nodes` or `edges` allows removal in constant time. Written
+/// by the island_manager.
 struct island_resident {
-    entity island_entity;
-    std::uint32_t index;
+    entity island_entity; ///< The entity with the island component.
+    std::uint32_t index;  ///< Index in the island's `nodes` (for a body) or `edges` (for an edge).
 };
 
-// On every linked edge: the two bodies it joins.
+/// Component: on every linked edge, the two bodies it joins.
+/// Either may be a static or kinematic body, which is not a node of the island.
 struct island_edge {
-    entity body[2];
+    entity body[2]; ///< The two bodies, in the edge's own order.
 };
 
-// How long a dynamic body has been slow enough to sleep, in simulated seconds.
+/// Component: how long a dynamic body has been slow enough to sleep, in simulated seconds.
+/// Written by the island_manager each step: reset to 0 when the body moves faster than
+/// settings::sleep_linear_velocity or settings::sleep_angular_velocity, or is woken.
 struct sleep_timer {
-    scalar time{0};
+    scalar time{0}; ///< Seconds spent below the sleep speeds; starts at 0.
 };
 
 } // namespace edyn

@@ -6,9 +6,14 @@
 
 namespace edyn {
 
-// Step phase 2: closest points for every awake manifold whose pair has a dynamic body, merged
-// into the manifold (points matched across steps for warm starting); contact events recorded;
-// manifolds that start touching join (and wake) their bodies' islands, those that stop leave.
+/// Step phase 2: updates the contact points of every awake manifold.
+/// Closest points for every awake manifold whose pair has a dynamic body, merged into the
+/// manifold (points matched across steps for warm starting), with each point's mixed material;
+/// contact events recorded (when someone listens); manifolds that start touching join (and
+/// wake) their bodies' islands, those that stop leave. The collision of each manifold runs on
+/// the world's scheduler threads when there is one. Called by run_step.
+/// @param registry An attached registry.
+/// @param world The registry's world_state.
 void run_narrowphase(registry &registry, world_state &world);
 
 } // namespace edyn

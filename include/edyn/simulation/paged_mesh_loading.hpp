@@ -6,10 +6,13 @@
 
 namespace edyn {
 
-// The pages of every paged mesh, before the narrowphase: each moving (awake, dynamic) body
-// within its reach ahead of a paged mesh has the pages under it loaded now (waiting for a late background
-// load) and those it can reach within the mesh's lookahead_time requested in the background; pages no body
-// neared for the mesh's unload_delay steps are unloaded.
+/// Loads and unloads the pages of every paged mesh, before the narrowphase.
+/// Each moving (awake, dynamic) body within its reach ahead of a paged mesh has the pages it
+/// can touch during this step loaded now (waiting for a late background load) and those it can
+/// reach within the mesh's lookahead_time requested in the background; pages no body neared for
+/// the mesh's unload_delay steps are unloaded. Called by run_step, after the broadphase.
+/// @param registry An attached registry.
+/// @param world The registry's world_state (its step count dates the pages' use).
 void update_paged_meshes(registry &registry, world_state &world);
 
 } // namespace edyn

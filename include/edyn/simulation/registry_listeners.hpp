@@ -5,18 +5,26 @@
 
 namespace edyn {
 
-// The listeners that keep the simulation in step with changes the program makes: bodies added
-// to and removed from the broadphase and the islands, islands woken when a body is changed
-// through replace/patch, AABBs refreshed when a body is moved by the program, pairs re-filtered
-// when collision filters change, manifolds leaving their islands when destroyed.
+/// Connects the listeners that keep the simulation in step with changes the program makes.
+/// Bodies are added to and removed from the broadphase and the islands, islands are woken when
+/// a body is changed through replace/patch, AABBs are refreshed when a body is moved by the
+/// program, pairs are re-filtered when collision filters change, and manifolds and constraints
+/// leave their islands when destroyed. attach calls it in the sequential modes (in asynchronous
+/// mode the simulation worker's registry has them instead).
+/// @param registry A registry whose world_state and settings are in its context.
 void connect_registry_listeners(registry &registry);
+/// Disconnects what connect_registry_listeners connected (detach).
+/// @param registry The registry.
 void disconnect_registry_listeners(registry &registry);
 
-// Bodies made before attach() join the simulation.
+/// Makes the bodies and constraints created before attach() join the simulation, oldest first.
+/// @param registry A registry whose listeners were just connected.
 void adopt_existing_bodies(registry &registry);
 
-// Removes every edyn component from every entity and destroys edyn's own entities (manifolds,
-// islands).
+/// Removes every edyn component from every entity and destroys edyn's own entities (manifolds,
+/// islands).
+/// The program's own entities and components stay. Called by detach.
+/// @param registry The registry.
 void remove_edyn_components(registry &registry);
 
 } // namespace edyn

@@ -9,14 +9,21 @@
 
 namespace edyn {
 
-// How a value arriving from the main registry is merged into the simulation worker's copy of a
-// component the entity already has: by default it replaces it. Specialise it to merge
-// otherwise (before calling register_external_components for that type):
-//
-//   template<>
-//   void edyn::merge_component<my_component>(my_component &current, const my_component &incoming) {
-//       current.items.insert(current.items.end(), incoming.items.begin(), incoming.items.end());
-//   }
+/// How a value arriving from the main registry is merged into the simulation worker's copy of a
+/// component the entity already has: by default it replaces it.
+/// Specialise it to merge otherwise (before calling register_external_components for that
+/// type). It runs in the worker thread, at the start of a step, after the value's entities
+/// have been translated into the worker's:
+/// @code
+/// template<>
+/// void edyn::merge_component<my_component>(my_component &current, const my_component &incoming) {
+///     current.items.insert(current.items.end(), incoming.items.begin(), incoming.items.end());
+/// }
+/// @endcode
+/// @tparam Component A component type registered with register_external_components (or one of
+/// edyn's own).
+/// @param current The worker's component, to update in place.
+/// @param new_value The value that arrived from the main registry.
 template<typename Component>
 void merge_component(Component &current, const Component &new_value) {
     current = new_value;
@@ -102,14 +109,17 @@ replicated_type make_replicated_type() {
 
 } // namespace detail
 
-// Makes the program's own components travel to the simulation worker in asynchronous mode:
-// on the entities the worker has (rigid bodies, constraints, external entities), their
-// emplace, replace, patch and removal are applied in the worker's registry at the start of its
-// next step, in the order they were made, and step callbacks see them there. Entities the
-// components hold are translated into the worker's: declare them with edyn::entity_members
-// (ecs/entity_members.hpp). Registering a type twice does nothing more; in the other modes
-// nothing needs to travel and this does nothing. Throws std::invalid_argument naming the
-// function when the registry is not attached.
+/// Makes the program's own components travel to the simulation worker in asynchronous mode.
+/// On the entities the worker has (rigid bodies, constraints, external entities), their
+/// emplace, replace, patch and removal are applied in the worker's registry at the start of its
+/// next step, in the order they were made, and step callbacks see them there. Values the
+/// entities have already are sent too. Entities the components hold are translated into the
+/// worker's: declare them with edyn::entity_members (ecs/entity_members.hpp). Registering a
+/// type twice does nothing more; in the other modes nothing needs to travel and this does
+/// nothing. Changes only travel from the main registry to the worker, not back.
+/// @tparam Components The component types to replicate; each must be copyable.
+/// @param registry The main registry, attached.
+/// @throws std::invalid_argument Naming the function, when the registry is not attached.
 template<typename... Components>
 void register_external_components(registry &registry) {
     (detail::register_replicated(registry, "register_external_components",
@@ -117,10 +127,15 @@ void register_external_components(registry &registry) {
      ...);
 }
 
-// Marks `entity` as external (constraints/external_entity.hpp): joined to a rigid body with a
-// null_constraint, it and its registered components travel to the simulation worker. Throws
-// std::invalid_argument naming the function for a registry that is not attached, an invalid
-// entity or a rigid body (which is part of the simulation already).
+/// Marks `entity` as external, so that it can take part in the simulation without being a
+/// rigid body.
+/// An external entity (constraints/external_entity.hpp) joined to a rigid body with a
+/// null_constraint travels, with its registered components, to the simulation worker, where
+/// step callbacks can use it. Tagging an entity twice does nothing more.
+/// @param registry An attached registry (the main one, in asynchronous mode).
+/// @param entity The entity to tag; not a rigid body.
+/// @throws std::invalid_argument Naming the function, when the registry is not attached, when
+/// `entity` is not valid, or when it is a rigid body (which is part of the simulation already).
 void tag_external_entity(registry &registry, entity entity);
 
 } // namespace edyn

@@ -8,41 +8,74 @@
 
 namespace edyn {
 
+/// A function run before or after every step: set_pre_step_callback, set_post_step_callback.
+/// It gets the registry the step runs in: in asynchronous mode the simulation worker's, on the
+/// worker thread.
 using step_callback_t = void (*)(registry &);
 
-// The ranges the setters of world.hpp accept (they throw std::invalid_argument outside them),
-// and a network client accepts from its server. Beyond them a step costs without bound or its
-// arithmetic leaves the range of a float.
-// Seconds: from 10,000 steps per second to one.
+/// Shortest fixed step set_fixed_dt accepts, in seconds (10,000 steps per second).
+/// This and the constants below are the ranges the setters of world.hpp accept (they throw
+/// std::invalid_argument outside them), and a network client accepts from its server. Beyond
+/// them a step costs without bound or its arithmetic leaves the range of a float.
 inline constexpr scalar min_fixed_dt = scalar(1e-4);
+/// Longest fixed step set_fixed_dt accepts, in seconds (one step per second).
 inline constexpr scalar max_fixed_dt = scalar(1);
-// Sub-steps per step, and relax, position, restitution and individual restitution iterations.
+/// Most sub-steps per step set_solver_substeps (and set_solver_velocity_iterations) accepts.
 inline constexpr unsigned max_solver_substeps = 64;
+/// Most relax, position, restitution and individual restitution iterations their setters
+/// accept.
 inline constexpr unsigned max_solver_iterations = 64;
+/// Most steps per update() set_max_steps_per_update accepts.
 inline constexpr unsigned max_steps_per_update_limit = 1000;
 
-// World-wide simulation settings, kept in the registry's context by attach().
+/// World-wide simulation settings, kept in the registry's context by attach().
+/// Read them with get_settings and change them with the setters of world.hpp, which validate
+/// the values; in asynchronous mode the changes reach the simulation worker with the next
+/// update(). A step works on a copy made when it starts, so a step callback's changes apply
+/// from the next step.
 struct settings {
+    /// The mode the registry was attached with (init_config::execution_mode); fixed by attach.
     edyn::execution_mode execution_mode{edyn::execution_mode::sequential};
+    /// Length of a step, in seconds; default 1/60 (set_fixed_dt).
     scalar fixed_dt{scalar(1) / scalar(60)};
+    /// The world's gravitational acceleration, in m/s²; default (0, -9.8, 0) (set_gravity).
     vector3 gravity{0, scalar(-9.8), 0};
-    // The soft-step solver splits each step into this many sub-steps, each with one biased
-    // iteration; more sub-steps, stiffer and more accurate contacts and joints.
+    /// Sub-steps per step; default 6 (set_solver_substeps).
+    /// The soft-step solver splits each step into this many sub-steps, each with one biased
+    /// iteration; more sub-steps, stiffer and more accurate contacts and joints.
     unsigned num_substeps{6};
-    // Relax iterations per sub-step: velocity-only passes removing the push-out velocity.
+    /// Relax iterations per sub-step; default 1 (set_solver_relax_iterations).
+    /// Velocity-only passes removing the push-out velocity.
     unsigned num_relax_iterations{1};
+    /// Iterations of the restitution solver per sub-step; default 8; 0 turns it off
+    /// (set_solver_restitution_iterations).
     unsigned num_restitution_iterations{8};
+    /// Iterations the restitution solver spends on each group of contacts; default 3
+    /// (set_solver_individual_restitution_iterations).
     unsigned num_individual_restitution_iterations{3};
-    // update() runs at most this many steps; the rest of a long pause is dropped so that a slow
-    // frame cannot make the next one slower still.
+    /// update() runs at most this many steps; default 10 (set_max_steps_per_update).
+    /// The rest of a long pause is dropped so that a slow frame cannot make the next one slower
+    /// still.
     unsigned max_steps_per_update{10};
+    /// Contact solver settings: stiffness, damping, push-out speed, restitution threshold.
+    /// No setter of world.hpp changes them.
     contact_solver_settings contact{};
+    /// Joint solver settings, including the position projection passes
+    /// (set_solver_position_iterations).
     constraint_solver_settings joint{};
-    // A body whose speeds stay below these for time_to_sleep seconds may sleep with its island.
+    /// Linear speed below which a body counts as at rest, in m/s; default 0.05.
+    /// A body whose speeds stay below these for time_to_sleep seconds may sleep with its island.
     scalar sleep_linear_velocity{scalar(0.05)};
-    scalar sleep_angular_velocity{scalar(0.0872665)}; // 5 degrees per second
+    /// Angular speed below which a body counts as at rest, in rad/s; default 5 degrees per
+    /// second.
+    scalar sleep_angular_velocity{scalar(0.0872665)};
+    /// Seconds a whole island's bodies must stay below the sleep speeds before it sleeps;
+    /// default 0.5.
     scalar time_to_sleep{scalar(0.5)};
+    /// Run at the start of every step, or null (the default); set_pre_step_callback.
     step_callback_t pre_step_callback{nullptr};
+    /// Run at the end of every step, after collision events, or null (the default);
+    /// set_post_step_callback.
     step_callback_t post_step_callback{nullptr};
 };
 

@@ -5,8 +5,13 @@
 
 namespace edyn {
 
-// One fixed step of the simulation, phase by phase (see step.cpp). Called by update() and
-// step_simulation(); requires attach().
+/// Runs one fixed step of the simulation, phase by phase.
+/// Pre-step callback, broadphase, paged meshes, narrowphase, gathering, solving, write back,
+/// sleeping, then collision events and the post-step callback; the simulation time and step
+/// count advance by one step. Called by update() and step_simulation(), which also save and
+/// interpolate the transforms for rendering; requires attach(), and in asynchronous mode runs
+/// in the worker.
+/// @param registry An attached registry (the worker's, in asynchronous mode).
 void run_step(registry &registry);
 
 } // namespace edyn

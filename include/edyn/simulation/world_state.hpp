@@ -16,41 +16,55 @@
 
 namespace edyn {
 
-// The simulation's own state, in the registry's context: the broadphase, the islands, the
-// clock and the scratch arrays the solver reuses from step to step (so that a step allocates
-// nothing once the world stops growing).
+/// The simulation's own state, in the registry's context.
+/// The broadphase, the islands, the clock and the scratch arrays the solver reuses from step to
+/// step (so that a step allocates nothing once the world stops growing). Created by attach and
+/// erased by detach; the step phases take it as a parameter. Programs use the functions of
+/// world.hpp rather than this.
 struct world_state {
-    edyn::broadphase broadphase;
-    island_manager islands;
+    edyn::broadphase broadphase; ///< AABB trees of the bodies with a shape, and their manifolds.
+    island_manager islands;      ///< Keeps the islands and puts them to sleep.
 
     // Clock.
+    /// Whether update() has been called once (the first call only sets the start).
     bool started{false};
+    /// The time given to the last update(), in seconds of the caller's clock.
     double last_time{0};
+    /// Elapsed time not yet simulated, in seconds (less than a step after each update()).
     double accumulator{0};
+    /// Simulated time of the last step, in seconds since attach (get_simulation_time).
     double simulation_time{0};
+    /// Steps run since attach (get_step_count).
     std::uint64_t step_count{0};
+    /// Whether update() runs no steps (set_paused).
     bool paused{false};
 
-    // Solver scratch: bodies[0] is the shared static body; body_entities[i] is bodies[i]'s
-    // entity; body_index maps an entity's index to its solver body (0 when it has none).
+    /// Solver scratch: the bodies being solved; bodies[0] is the shared static body.
     std::vector<solver_body> bodies;
+    /// body_entities[i] is bodies[i]'s entity (null for index 0).
     std::vector<entity> body_entities;
+    /// Maps an entity's index to its solver body (0 when it has none).
     std::vector<std::uint32_t> body_index;
+    /// The contact constraints and points being solved, in colour order.
     contact_solver_set contacts;
-    // The manifolds solved this step, in the order found (a constraint's `source` indexes this),
-    // with the colour each was given and its constraint's place in `contacts`.
+    /// The manifolds solved this step, in the order found (a constraint's `source` indexes this).
     std::vector<entity> contact_manifolds;
+    /// The colour each of contact_manifolds was given.
     std::vector<std::uint32_t> contact_colours;
+    /// The place of each of contact_manifolds' constraints in `contacts`.
     std::vector<std::uint32_t> contact_slots;
+    /// Assigns colours to contacts, so that those of one colour share no moving body.
     constraint_colouring colouring;
+    /// The joints (non-contact constraints) being solved.
     constraint_solver_state joints;
 
-    // Manifold entities in the order the narrowphase visits them, and what changed in each.
+    /// Manifold entities in the order the narrowphase visits them.
     std::vector<entity> manifolds;
+    /// What changed in each of `manifolds` this step.
     std::vector<contact_point_changes> manifold_changes;
 
-    // Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
-    // other modes, where every phase runs on the calling thread.
+    /// Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
+    /// other modes, where every phase runs on the calling thread.
     std::unique_ptr<task_scheduler> scheduler;
 };
 
