@@ -6,34 +6,60 @@
 
 namespace edyn {
 
-// How rows of joints are solved in one pass of the soft-step solver. Rigid rows are soft
-// springs in the biased pass (a stiff, well damped correction of their position error) and
-// purely rigid velocity constraints in the relax pass.
+/// How rows of joints are solved in one pass of the soft-step solver. Rigid rows are soft
+/// springs in the biased pass (a stiff, well damped correction of their position error) and
+/// purely rigid velocity constraints in the relax pass.
+/// Made by make_constraint_solve_context() from the world's constraint_solver_settings, once per
+/// pass kind, and passed to every joint's solve function.
 struct constraint_solve_context {
-    scalar h{0};     // sub-step
-    scalar inv_h{0}; // 1 / h
+    scalar h{0};     ///< Duration of the sub-step (s).
+    scalar inv_h{0}; ///< 1 / h (1/s).
+    /// Soft coefficients of the joints' rigid rows in the biased pass, from the joint frequency
+    /// and damping ratio of the settings; ignored when `use_bias` is false.
     softness joint{};
+    /// True in the biased pass (position errors are corrected softly), false in the relax pass
+    /// (velocity constraints only).
     bool use_bias{false};
-    // Pivots are kept together by position projection after each sub-step, so their velocity
-    // rows are rigid and carry no bias: a soft pivot would sag under the load of a chain.
+    /// Pivots are kept together by position projection after each sub-step, so their velocity
+    /// rows are rigid and carry no bias: a soft pivot would sag under the load of a chain.
     bool rigid_pivots{false};
-    // A limit reached slower than this does not bounce, so that resting limits stay quiet.
+    /// A limit reached slower than this does not bounce, so that resting limits stay quiet
+    /// (m/s or rad/s, as the limit's coordinate).
     scalar restitution_threshold{0};
 };
 
-// A joint's pivots as seen when the step begins. Every sub-step recovers the current pivots
-// from the bodies' accumulated motion, so errors are measured exactly without the registry.
+/// A joint's pivots as seen when the step begins. Every sub-step recovers the current pivots
+/// from the bodies' accumulated motion, so errors are measured exactly without the registry.
+/// Made by make_joint_anchor() when the solver gathers the joints.
 struct joint_anchor {
+    /// Indices of the two bodies in the step's solver bodies (0: the static body).
     solver_body_index body[2]{0, 0};
-    vector3 rA{vector3_zero}, rB{vector3_zero}; // pivots relative to each centre of mass, world
-    vector3 separation{vector3_zero};           // pivot A minus pivot B, world
+    /// @var rA
+    /// Pivot A relative to body A's centre of mass, world space (m), at the start of the step.
+    /// @var rB
+    /// Pivot B relative to body B's centre of mass, world space (m), at the start of the step.
+    vector3 rA{vector3_zero}, rB{vector3_zero};
+    vector3 separation{vector3_zero}; ///< Pivot A minus pivot B, world space (m).
 };
 
-// Current pivots: lever arms from the centres of mass and d = pivot A - pivot B.
+/// Current pivots: lever arms from the centres of mass and d = pivot A - pivot B.
+/// Computed by current_pose() from a joint_anchor and the bodies' motion so far in the step.
 struct joint_pose {
+    /// @var rA
+    /// Current pivot A relative to body A's centre of mass, world space (m).
+    /// @var rB
+    /// Current pivot B relative to body B's centre of mass, world space (m).
+    /// @var d
+    /// Current pivot A minus pivot B, world space (m): zero when a ball joint is satisfied.
     vector3 rA, rB, d;
 };
 
+/// The pivots of a joint now: its anchor moved and turned by each body's motion accumulated
+/// since the start of the step (`delta_position`, `delta_rotation`).
+/// @param j The joint's pivots at the start of the step.
+/// @param a The solver body of the joint's first body.
+/// @param b The solver body of the joint's second body.
+/// @return The current lever arms and pivot separation.
 inline joint_pose current_pose(const joint_anchor &j, const solver_body &a, const solver_body &b) noexcept {
     auto rA = rotate(a.delta_rotation, j.rA);
     auto rB = rotate(b.delta_rotation, j.rB);
@@ -41,35 +67,65 @@ inline joint_pose current_pose(const joint_anchor &j, const solver_body &a, cons
     return {rA, rB, d};
 }
 
-// One row of a constraint: its velocity is dot(linA, vA) + dot(angA, wA) + dot(linB, vB) +
-// dot(angB, wB), and an impulse `lambda` along the row changes the bodies' velocities by
-// M^-1 J^T lambda.
+/// One row of a constraint: its velocity is dot(linA, vA) + dot(angA, wA) + dot(linB, vB) +
+/// dot(angB, wB), and an impulse `lambda` along the row changes the bodies' velocities by
+/// M^-1 J^T lambda.
 struct jacobian {
+    /// @var linA
+    /// Linear part for body A (dimensionless direction, world space).
+    /// @var angA
+    /// Angular part for body A (m for a linear row, dimensionless for an angular one).
+    /// @var linB
+    /// Linear part for body B (dimensionless direction, world space).
+    /// @var angB
+    /// Angular part for body B (m for a linear row, dimensionless for an angular one).
     vector3 linA, angA, linB, angB;
 };
 
-// Row along the world direction n at the pivots: its velocity is the velocity of pivot A
-// relative to pivot B along n.
+/// Row along the world direction n at the pivots: its velocity is the velocity of pivot A
+/// relative to pivot B along n.
+/// @param n Unit direction, world space.
+/// @param rA Pivot A relative to body A's centre of mass, world space (m).
+/// @param rB Pivot B relative to body B's centre of mass, world space (m).
+/// @return The row's jacobian.
 inline jacobian linear_jacobian(const vector3 &n, const vector3 &rA, const vector3 &rB) noexcept {
     return {n, cross(rA, n), -n, -cross(rB, n)};
 }
 
-// Row about the world axis: its velocity is the angular velocity of A relative to B about it.
+/// Row about the world axis: its velocity is the angular velocity of A relative to B about it.
+/// @param axis Unit axis, world space.
+/// @return The row's jacobian.
 inline jacobian angular_jacobian(const vector3 &axis) noexcept {
     return {vector3_zero, axis, vector3_zero, -axis};
 }
 
+/// Velocity of a row: how fast its coordinate changes with the bodies' current velocities.
+/// @param j The row.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @return dot(linA, vA) + dot(angA, wA) + dot(linB, vB) + dot(angB, wB) (m/s or rad/s).
 inline scalar row_velocity(const jacobian &j, const solver_body &a, const solver_body &b) noexcept {
     return dot(j.linA, a.linvel) + dot(j.angA, a.angvel) + dot(j.linB, b.linvel) + dot(j.angB, b.angvel);
 }
 
-// Inverse of J M^-1 J^T, or zero when neither body can move along the row.
+/// Inverse of J M^-1 J^T, or zero when neither body can move along the row.
+/// @param j The row.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @return The row's effective mass (kg for a linear row, kg m^2 for an angular one), or 0.
 inline scalar row_effective_mass(const jacobian &j, const solver_body &a, const solver_body &b) noexcept {
     auto k = a.inv_mass * length_sqr(j.linA) + dot(j.angA, a.inv_inertia * j.angA) +
              b.inv_mass * length_sqr(j.linB) + dot(j.angB, b.inv_inertia * j.angB);
     return k > 0 ? scalar(1) / k : scalar(0);
 }
 
+/// Applies an impulse along a row: changes the bodies' velocities by M^-1 J^T lambda.
+/// Bodies that do not move (the static body, kinematic bodies) are left untouched, so that
+/// rows solved at once on several threads may share them.
+/// @param j The row.
+/// @param a Body A's solver state, changed when it moves.
+/// @param b Body B's solver state, changed when it moves.
+/// @param lambda The impulse along the row (N s, or N m s for an angular row).
 inline void apply_row_impulse(const jacobian &j, solver_body &a, solver_body &b, scalar lambda) noexcept {
     if (moves(a)) {
         a.linvel += j.linA * (a.inv_mass * lambda);
@@ -81,43 +137,95 @@ inline void apply_row_impulse(const jacobian &j, solver_body &a, solver_body &b,
     }
 }
 
-// Soft coefficients of an implicit spring of stiffness k and damping c acting on a row of
-// effective mass `mass` over the sub-step h (the rigid softness formula expressed in physical
-// units, so that the spring's frequency is sqrt(k / mass) whatever the sub-step).
+/// Soft coefficients of an implicit spring of stiffness k and damping c acting on a row of
+/// effective mass `mass` over the sub-step h (the rigid softness formula expressed in physical
+/// units, so that the spring's frequency is sqrt(k / mass) whatever the sub-step).
+/// @param k Stiffness (N/m, or N m/rad for an angular row).
+/// @param c Damping (N s/m, or N m s/rad for an angular row).
+/// @param mass The row's effective mass (kg, or kg m^2).
+/// @param h The sub-step (s).
+/// @return The coefficients; when c + h k or `mass` is not positive, zero bias rate and mass
+/// scale with an impulse scale of 1, so that the row only takes back its accumulated impulse.
 softness make_spring_softness(scalar k, scalar c, scalar mass, scalar h) noexcept;
 
-// Bilateral row keeping C at zero: soft in the biased pass, rigid in the relax pass.
+/// Bilateral row keeping C at zero: soft in the biased pass, rigid in the relax pass.
+/// Does nothing when the row's effective mass is zero.
+/// @param j The row.
+/// @param C The row's position error now (m or rad).
+/// @param impulse The row's impulse accumulated over the sub-step (N s or N m s), updated.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param ctx The pass: sub-step, softness and whether to correct position errors.
 void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                         const constraint_solve_context &ctx) noexcept;
 
-// Unilateral row keeping C >= 0 (impulse >= 0). A gap (C > 0) may close within the sub-step
-// but no further. `bounce_velocity`, when positive, is the separating velocity the row must
-// reach (restitution); it replaces the soft correction.
+/// Unilateral row keeping C >= 0 (impulse >= 0). A gap (C > 0) may close within the sub-step
+/// but no further. `bounce_velocity`, when positive, is the separating velocity the row must
+/// reach (restitution); it replaces the soft correction.
+/// Does nothing when the row's effective mass is zero.
+/// @param j The row.
+/// @param C The row's gap now (m or rad): positive apart, negative past the limit.
+/// @param impulse The row's impulse accumulated over the sub-step, kept non-negative, updated.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param ctx The pass: sub-step, softness and whether to correct position errors.
+/// @param bounce_velocity Separating velocity to reach when positive (m/s or rad/s); 0 for none.
 void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                      const constraint_solve_context &ctx, scalar bounce_velocity = 0) noexcept;
 
-// Row driving its velocity to zero with an impulse bounded by max_impulse per sub-step.
+/// Row driving its velocity to zero with an impulse bounded by max_impulse per sub-step.
+/// Does nothing when the row's effective mass is zero.
+/// @param j The row.
+/// @param max_impulse Bound on the accumulated impulse's magnitude, usually a friction force or
+/// torque times the sub-step (N s or N m s).
+/// @param impulse The row's impulse accumulated over the sub-step, kept in
+/// [-max_impulse, max_impulse], updated.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
 void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, solver_body &a,
                         solver_body &b) noexcept;
 
-// Spring and damper pulling C towards zero with stiffness k and damping c; solved in every
-// biased pass only, as the spring is a force of the model, not an error correction. With `unilateral` the
-// spring only pushes (impulse >= 0), as a bump stop does.
+/// Spring and damper pulling C towards zero with stiffness k and damping c; solved in every
+/// biased pass only, as the spring is a force of the model, not an error correction. With `unilateral` the
+/// spring only pushes (impulse >= 0), as a bump stop does.
+/// Does nothing in the relax pass or when the row's effective mass is zero.
+/// @param j The row.
+/// @param C The spring's extension now (m or rad).
+/// @param k Stiffness (N/m or N m/rad).
+/// @param c Damping (N s/m or N m s/rad).
+/// @param impulse The row's impulse accumulated over the sub-step (N s or N m s), updated.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param ctx The pass: its sub-step sets the spring's softness; `use_bias` must be true.
+/// @param unilateral Whether the spring may only push.
 void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
                       solver_body &b, const constraint_solve_context &ctx, bool unilateral = false) noexcept;
 
-// Position projection, after the sub-step's positions are integrated: moves the bodies so that
-// the pivots meet again. Velocity-level rows cannot see the second order drift of fast-turning
-// links (L (w h)^2 / 2 per sub-step), which this removes. `fraction` of the error is removed.
-// The bodies' velocities change by the correction over the sub-step (inv_h = 1 / h), as if they
-// had moved there: the velocity that pulled the pivots apart is taken back with it. Moving the
-// bodies alone would leave that velocity in them, unseen by the rigid pivot rows (their error
-// is gone), to pull the pivots apart again every sub-step: joints the solver cannot hold (a
-// taut bridge deck under a heavy box) then keep a hidden motion that nothing damps, and the
-// corrections push it into what rests on them (the box kept the deck bouncing for minutes).
+/// Position projection, after the sub-step's positions are integrated: moves the bodies so that
+/// the pivots meet again. Velocity-level rows cannot see the second order drift of fast-turning
+/// links (L (w h)^2 / 2 per sub-step), which this removes. `fraction` of the error is removed.
+/// The bodies' velocities change by the correction over the sub-step (inv_h = 1 / h), as if they
+/// had moved there: the velocity that pulled the pivots apart is taken back with it. Moving the
+/// bodies alone would leave that velocity in them, unseen by the rigid pivot rows (their error
+/// is gone), to pull the pivots apart again every sub-step: joints the solver cannot hold (a
+/// taut bridge deck under a heavy box) then keep a hidden motion that nothing damps, and the
+/// corrections push it into what rests on them (the box kept the deck bouncing for minutes).
+/// Does nothing when the pivots' 3x3 effective mass cannot be inverted (neither body moves).
+/// @param anchor The joint's pivots at the start of the step.
+/// @param a Body A's solver state: its `delta_position`, `delta_rotation` and velocities change.
+/// @param b Body B's solver state: its `delta_position`, `delta_rotation` and velocities change.
+/// @param fraction Share of the separation removed, in [0, 1].
+/// @param inv_h 1 / h of the sub-step just integrated (1/s).
 void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
                    scalar inv_h) noexcept;
-// The same along the pivots' direction only, to bring them `distance` apart.
+/// The same along the pivots' direction only, to bring them `distance` apart.
+/// Position projection of the distance joint; does nothing when the pivots coincide.
+/// @param anchor The joint's pivots at the start of the step.
+/// @param distance The length to restore between the pivots (m).
+/// @param a Body A's solver state: its `delta_position`, `delta_rotation` and velocities change.
+/// @param b Body B's solver state: its `delta_position`, `delta_rotation` and velocities change.
+/// @param fraction Share of the length error removed, in [0, 1].
+/// @param inv_h 1 / h of the sub-step just integrated (1/s).
 void project_distance(const joint_anchor &anchor, scalar distance, solver_body &a, solver_body &b,
                       scalar fraction, scalar inv_h) noexcept;
 

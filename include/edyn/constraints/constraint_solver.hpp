@@ -19,84 +19,130 @@
 
 namespace edyn {
 
-// Tuning of joints, shared by every joint of a step.
+/// Tuning of joints, shared by every joint of a step.
+/// Held by the world's settings (`settings::joint`); the solver reads it at every step.
 struct constraint_solver_settings {
-    // Rigid joints correct their position error as a spring of this frequency and damping
-    // ratio in the biased pass; stiffer than contacts, since joints carry whole chains.
+    /// Rigid joints correct their position error as a spring of this frequency and damping
+    /// ratio in the biased pass; stiffer than contacts, since joints carry whole chains.
+    /// The frequency in Hz; default 60.
     scalar joint_hertz{60};
+    /// Damping ratio of that spring (1: critically damped, the default).
     scalar joint_damping_ratio{1};
-    // The joint frequency is capped at this fraction of the sub-step rate, for stability.
+    /// The joint frequency is capped at this fraction of the sub-step rate, for stability.
+    /// Default 0.25.
     scalar max_hertz_ratio{scalar(0.25)};
-    // A limit reached slower than this does not bounce (m/s or rad/s).
+    /// A limit reached slower than this does not bounce (m/s or rad/s). Default 0.1.
     scalar restitution_threshold{scalar(0.1)};
-    // Fraction of the joints' pivot separation removed by moving the bodies after each
-    // sub-step's integration (see project_point); 0 leaves it to the soft correction alone.
+    /// Fraction of the joints' pivot separation removed by moving the bodies after each
+    /// sub-step's integration (see project_point); 0 leaves it to the soft correction alone.
+    /// Default 1. While it is above 0 the pivot rows carry no position bias.
     scalar position_projection{1};
-    // Passes of that projection over all the joints. Joined bodies of very different masses
-    // (a rag doll's head on its neck) stretch their joints by centimetres under impacts with
-    // one pass at 60 Hz, by millimetres with four.
+    /// Passes of that projection over all the joints. Joined bodies of very different masses
+    /// (a rag doll's head on its neck) stretch their joints by centimetres under impacts with
+    /// one pass at 60 Hz, by millimetres with four.
+    /// Default 4.
     unsigned position_projection_iterations{4};
 };
 
-// The constraints of one type as the solver sees them this step, and where they came from, in
-// colour order: colour k is [colour_begin[k], colour_begin[k + 1]) (see constraint_colouring).
+/// The constraints of one type as the solver sees them this step, and where they came from, in
+/// colour order: colour k is [colour_begin[k], colour_begin[k + 1]) (see constraint_colouring).
+/// Filled by gather_constraints(); its arrays keep their capacity from step to step.
+/// @tparam Solver The solver state type of the constraint, e.g. hinge_constraint_solver.
 template<typename Solver>
 struct constraint_batch {
-    std::vector<Solver> solvers;
-    std::vector<entity> entities;
-    std::vector<std::uint32_t> colour_begin;
-    // Scratch for sorting by colour, reused from step to step.
+    std::vector<Solver> solvers;             ///< The constraints' solver states, in colour order.
+    std::vector<entity> entities;            ///< The constraint entity of each solver state.
+    std::vector<std::uint32_t> colour_begin; ///< First index of each colour, then one past the last.
+    /// Scratch for sorting by colour, reused from step to step.
+    /// The solver states in the order they were gathered.
     std::vector<Solver> unsorted;
-    std::vector<entity> unsorted_entities;
-    std::vector<std::uint32_t> colours;
+    std::vector<entity> unsorted_entities; ///< Scratch: the entities in the order gathered.
+    std::vector<std::uint32_t> colours;    ///< Scratch: the colour of each gathered constraint.
 };
 
-// Every joint of a step, packed per type in contiguous arrays reused from step to step.
+/// Every joint of a step, packed per type in contiguous arrays reused from step to step.
+/// Owned by the world; made by gather_constraints() and used by the other functions of this
+/// header, on the thread that runs the step.
 struct constraint_solver_state {
+    /// One batch per joint type, in the order of `constraint_types` (null constraints, which
+    /// have no rows, excepted).
     std::tuple<constraint_batch<point_constraint_solver>, constraint_batch<distance_constraint_solver>,
                constraint_batch<soft_distance_constraint_solver>, constraint_batch<hinge_constraint_solver>,
                constraint_batch<cvjoint_constraint_solver>, constraint_batch<cone_constraint_solver>,
                constraint_batch<generic_constraint_solver>, constraint_batch<gravity_constraint_solver>>
         batches;
-    // 1 / h of the sub-step the joints were last solved with: the projection that follows turns
-    // its corrections into velocities over that sub-step.
+    /// 1 / h of the sub-step the joints were last solved with: the projection that follows turns
+    /// its corrections into velocities over that sub-step.
     scalar inv_h{0};
-    // Colours the joints in the order they are solved (type by type, each in the view's order),
-    // so that each colour's joints are solved at once on the scheduler's threads and the
-    // result is the same bit for bit. Null runs every pass on the calling thread.
+    /// Colours the joints in the order they are solved (type by type, each in the view's order),
+    /// so that each colour's joints are solved at once on the scheduler's threads and the
+    /// result is the same bit for bit.
     constraint_colouring colouring;
+    /// The threads each colour's joints are spread over. Null runs every pass on the calling
+    /// thread. Not owned.
     task_scheduler *scheduler{nullptr};
 };
 
-// Maps an entity's index to its solver body (0, the static body, when it has none).
+/// Maps an entity's index to its solver body (0, the static body, when it has none).
 using body_index_map = std::span<const std::uint32_t>;
 
-// The solver body of `e`: entities past the end of the map have none either.
+/// The solver body of `e`: entities past the end of the map have none either.
+/// @param body_index The step's map from entity index to solver body index.
+/// @param e The entity.
+/// @return Its solver body index, or `static_solver_body` (0) when it has none.
 inline solver_body_index body_index_of(body_index_map body_index, entity e) noexcept {
     auto i = to_index(e);
     return i < body_index.size() ? body_index[i] : static_solver_body;
 }
 
-// Packs every awake constraint with at least one body in the solver, with its geometry at the
-// start of the step and last step's impulses, and colours them for the bodies they join.
+/// Packs every awake constraint with at least one body in the solver, with its geometry at the
+/// start of the step and last step's impulses, and colours them for the bodies they join.
+/// Called once per step, before the sub-steps; constraints whose bodies both map to the static
+/// body are skipped.
+/// @param registry The registry holding the constraints and their bodies.
+/// @param state The joints' state, overwritten.
+/// @param body_index The step's map from entity index to solver body index.
+/// @param bodies The step's solver bodies; they must outlive the state's use this step.
 void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index,
                         std::span<const solver_body> bodies);
 
+/// The context of one kind of pass over the joints, from the settings and the sub-step.
+/// The joint frequency is capped at `max_hertz_ratio / h`.
+/// @param settings The joint settings.
+/// @param h The sub-step (s), positive.
+/// @param use_bias True for the biased pass, false for the relax pass.
+/// @return The context to pass to solve_joint_constraints().
 constraint_solve_context make_constraint_solve_context(const constraint_solver_settings &settings, scalar h,
                                                        bool use_bias) noexcept;
 
-// Re-applies the accumulated impulses, at the start of each sub-step.
+/// Re-applies the accumulated impulses, at the start of each sub-step.
+/// Colour by colour, each colour's joints on the state's scheduler when it has one.
+/// @param state The joints gathered this step.
+/// @param bodies The step's solver bodies.
 void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies);
 
-// One Gauss-Seidel pass over every joint row (biased or relax, as ctx says).
+/// One Gauss-Seidel pass over every joint row (biased or relax, as ctx says).
+/// Colour by colour, each colour's joints on the state's scheduler when it has one; the result
+/// does not depend on the number of threads. Records `ctx.inv_h` for the projection.
+/// @param state The joints gathered this step; their impulses accumulate.
+/// @param bodies The step's solver bodies.
+/// @param ctx The pass, from make_constraint_solve_context().
 void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
                              const constraint_solve_context &ctx);
 
-// Position projection of the joints that keep pivots together, after integrating positions.
+/// Position projection of the joints that keep pivots together, after integrating positions.
+/// Runs `position_projection_iterations` passes; does nothing when `position_projection` is not
+/// positive. Uses the sub-step of the last solve_joint_constraints() call.
+/// @param state The joints gathered this step.
+/// @param bodies The step's solver bodies: their positions and velocities change.
+/// @param settings The joint settings.
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
                              const constraint_solver_settings &settings);
 
-// Stores the impulses in the components, for next step's warm start.
+/// Stores the impulses in the components, for next step's warm start.
+/// Also writes the hinge angle and CV joint twist reached. Called once at the end of the step.
+/// @param registry The registry holding the constraint components.
+/// @param state The joints solved this step.
 void store_constraint_impulses(registry &registry, const constraint_solver_state &state);
 
 } // namespace edyn

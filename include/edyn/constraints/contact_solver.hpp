@@ -10,156 +10,230 @@
 
 namespace edyn {
 
-// A velocity constraint row along the unit direction d at offsets rA, rB: its angular parts and
-// those parts premultiplied by each body's inverse inertia, computed once per step so that the
-// iterations apply and measure impulses with dot products and no matrix products.
+/// A velocity constraint row along the unit direction d at offsets rA, rB: its angular parts and
+/// those parts premultiplied by each body's inverse inertia, computed once per step so that the
+/// iterations apply and measure impulses with dot products and no matrix products.
 struct contact_row {
-    vector3 angularA{vector3_zero}, angularB{vector3_zero};         // rA x d, rB x d
-    vector3 inv_angularA{vector3_zero}, inv_angularB{vector3_zero}; // inverse inertia times those
+    /// @var angularA
+    /// rA x d (m).
+    /// @var angularB
+    /// rB x d (m).
+    vector3 angularA{vector3_zero}, angularB{vector3_zero};
+    /// @var inv_angularA
+    /// Body A's world inverse inertia times `angularA`.
+    /// @var inv_angularB
+    /// Body B's world inverse inertia times `angularB`.
+    vector3 inv_angularA{vector3_zero}, inv_angularB{vector3_zero};
 };
 
-// One point of a contact as the solver's iterations see it: only what every pass reads or
-// writes, so that the passes stream through as little memory as possible (a large pile has
-// tens of thousands of points, far more than the caches hold). Geometry is captured at the
-// start of the step (narrowphase output); the current separation is recovered from the
-// bodies' accumulated motion.
+/// One point of a contact as the solver's iterations see it: only what every pass reads or
+/// writes, so that the passes stream through as little memory as possible (a large pile has
+/// tens of thousands of points, far more than the caches hold). Geometry is captured at the
+/// start of the step (narrowphase output); the current separation is recovered from the
+/// bodies' accumulated motion.
+/// The caller sets `rA`, `rB`, `normal`, `adjusted_separation` and last step's impulses;
+/// prepare_contacts() computes the rest.
 struct contact_solver_point {
-    vector3 rA, rB; // contact points relative to each centre of mass, world space
-    vector3 normal; // from B towards A
-    vector3 tangent[2];
-    scalar adjusted_separation{0}; // separation minus dot(normal, rA - rB)
-    scalar normal_mass{0};
-    scalar tangent_mass[2]{0, 0};
-    scalar normal_impulse{0};
-    scalar tangent_impulse[2]{0, 0};
-    contact_row normal_row;
-    contact_row tangent_row[2];
+    /// @var rA
+    /// Contact point on A relative to A's centre of mass, world space (m).
+    /// @var rB
+    /// Contact point on B relative to B's centre of mass, world space (m).
+    vector3 rA, rB;
+    vector3 normal;     ///< Unit contact normal, from B towards A, world space.
+    vector3 tangent[2]; ///< Two unit tangents orthogonal to the normal, set by prepare_contacts().
+    /// Separation minus dot(normal, rA - rB) (m): with the bodies' motion since the step began
+    /// it gives the current separation (negative: overlap).
+    scalar adjusted_separation{0};
+    scalar normal_mass{0};           ///< Effective mass along the normal (kg).
+    scalar tangent_mass[2]{0, 0};    ///< Effective mass along each tangent (kg).
+    scalar normal_impulse{0};        ///< Normal impulse of the sub-step (N s), not negative.
+    scalar tangent_impulse[2]{0, 0}; ///< Friction impulse of the sub-step along each tangent (N s).
+    contact_row normal_row;          ///< The normal row's angular parts.
+    contact_row tangent_row[2];      ///< The tangent rows' angular parts.
 };
 
-// What a point needs only once per sub-step or step: restitution and the impulses reported
-// to the user. Kept apart from contact_solver_point, at the same index.
+/// What a point needs only once per sub-step or step: restitution and the impulses reported
+/// to the user. Kept apart from contact_solver_point, at the same index.
 struct contact_point_totals {
-    // Normal relative velocity when the step began, or the approach carried over from earlier
-    // steps (contact_point::warm_start.approach) where that is faster: set it to the carried
-    // approach (0 for none) before prepare_contacts.
+    /// Normal relative velocity when the step began, or the approach carried over from earlier
+    /// steps (contact_point::warm_start.approach) where that is faster: set it to the carried
+    /// approach (0 for none) before prepare_contacts.
+    /// In m/s, negative when approaching.
     scalar relative_velocity{0};
+    /// Sum of the restitution solver's normal impulses on the point over the step (N s).
     scalar restitution_impulse{0};
+    /// Sum of the restitution solver's friction impulses along each tangent over the step (N s).
     scalar tangent_restitution_impulse[2]{0, 0};
-    // Sums over the step's sub-steps of the point's impulses.
+    /// Sums over the step's sub-steps of the point's impulses.
+    /// The normal impulse (N s).
     scalar normal_impulse{0};
+    /// Sum over the step's sub-steps of the friction impulse along each tangent (N s).
     scalar tangent_impulse[2]{0, 0};
 };
 
-// A manifold's contact ready to be solved: up to four points (each with its own normal, as
-// compound shapes may give several), stored from `first_point` in the set's point arrays,
-// their friction, and torsional (spin) and rolling friction about the manifold's main normal.
+/// A manifold's contact ready to be solved: up to four points (each with its own normal, as
+/// compound shapes may give several), stored from `first_point` in the set's point arrays,
+/// their friction, and torsional (spin) and rolling friction about the manifold's main normal.
+/// Filled by the caller from the contact manifold and the mixed material; prepare_contacts()
+/// computes the effective masses.
 struct contact_solver_constraint {
-    static constexpr std::size_t max_points = 4;
-    solver_body_index body[2]{0, 0};
-    vector3 normal{vector3_zero}; // main normal, for spinning and rolling friction
-    scalar friction{0};
-    scalar restitution{0};
+    static constexpr std::size_t max_points = 4; ///< Most points a constraint may have.
+    solver_body_index body[2]{0, 0};             ///< Indices of the two bodies in the solver bodies.
+    vector3 normal{vector3_zero};                ///< Main normal, for spinning and rolling friction.
+    scalar friction{0};                          ///< Friction coefficient of the mixed material.
+    scalar restitution{0};                       ///< Restitution of the mixed material, in [0, 1].
+    /// Rolling friction of the mixed material: resisting torque per unit normal force (m).
     scalar roll_friction{0};
+    /// Spinning friction of the mixed material: resisting torque per unit normal force (m).
     scalar spin_friction{0};
-    // The mixed material's stiffness (N/m) and damping (Ns/m) of the whole contact, shared by
-    // its points; large_scalar means the global contact_hertz and damping ratio apply.
+    /// The mixed material's stiffness (N/m) and damping (Ns/m) of the whole contact, shared by
+    /// its points; large_scalar means the global contact_hertz and damping ratio apply.
+    /// This member is the stiffness.
     scalar stiffness{large_scalar};
+    /// The mixed material's damping (N s/m); large_scalar means the contact damping ratio applies.
     scalar damping{large_scalar};
-    std::uint32_t first_point{0};
-    std::uint32_t num_points{0};
-    // Spinning friction about the normal.
+    std::uint32_t first_point{0}; ///< Index of the first point in the set's point arrays.
+    std::uint32_t num_points{0};  ///< Number of points, at most `max_points`.
+    /// Spinning friction about the normal.
+    /// Effective mass of the spinning row (kg m^2), set by prepare_contacts().
     scalar spin_mass{0};
-    scalar spin_impulse{0};
-    // Rolling friction about up to two axes orthogonal to the normal (one for cylinders).
+    scalar spin_impulse{0}; ///< Spinning friction impulse of the sub-step (N m s).
+    /// Rolling friction about up to two axes orthogonal to the normal (one for cylinders).
+    /// The number of those axes, 0 to 2.
     std::uint32_t num_roll_axes{0};
-    vector3 roll_axis[2]{vector3_zero, vector3_zero};
-    scalar roll_mass[2]{0, 0};
-    scalar roll_impulse[2]{0, 0};
-    scalar total_spin_impulse{0};
+    vector3 roll_axis[2]{vector3_zero, vector3_zero}; ///< The rolling axes, unit, world space.
+    scalar roll_mass[2]{0, 0};                        ///< Effective mass of each rolling row (kg m^2).
+    scalar roll_impulse[2]{0, 0}; ///< Rolling friction impulse of the sub-step per axis (N m s).
+    scalar total_spin_impulse{0}; ///< Sum over the step's sub-steps of the spinning impulse (N m s).
+    /// Sum over the step's sub-steps of the rolling impulse per axis (N m s).
     scalar total_roll_impulse[2]{0, 0};
-    // Where the impulses go back when the step ends (index into the caller's manifold list).
+    /// Where the impulses go back when the step ends (index into the caller's manifold list).
     std::uint32_t source{0};
 };
 
-// Every contact of a step: the constraints, and their points in two parallel arrays (hot and
-// cold). Reused from step to step, so that a step allocates nothing once the world stops
-// growing.
+/// Every contact of a step: the constraints, and their points in two parallel arrays (hot and
+/// cold). Reused from step to step, so that a step allocates nothing once the world stops
+/// growing.
 struct contact_solver_set {
-    std::vector<contact_solver_constraint> constraints;
+    std::vector<contact_solver_constraint> constraints; ///< The contacts' constraints.
+    /// Hot part of every constraint's points, indexed by `first_point`.
     std::vector<contact_solver_point> points;
+    /// Cold part of every point, at the same index as in `points`.
     std::vector<contact_point_totals> totals;
-    // The constraints in colour order (see constraint_colouring): colour k is the range
-    // [colour_begin[k], colour_begin[k + 1]), and no two constraints of one colour share a body
-    // that moves, so a colour's constraints are solved at once on the scheduler's threads. Any
-    // constraints from colour_begin.back() on (all of them when the set was not coloured) are
-    // solved in order on the calling thread, after the colours.
+    /// The constraints in colour order (see constraint_colouring): colour k is the range
+    /// [colour_begin[k], colour_begin[k + 1]), and no two constraints of one colour share a body
+    /// that moves, so a colour's constraints are solved at once on the scheduler's threads. Any
+    /// constraints from colour_begin.back() on (all of them when the set was not coloured) are
+    /// solved in order on the calling thread, after the colours.
     std::vector<std::uint32_t> colour_begin;
 
+    /// Empties every array, keeping their capacity.
     void clear() noexcept {
         constraints.clear();
         points.clear();
         totals.clear();
         colour_begin.clear();
     }
-    // Appends `c` with `num_points` default points and returns the first of them.
+    /// Appends `c` with `num_points` default points and returns the first of them.
+    /// Sets the new constraint's `first_point` and `num_points` and grows `totals` alongside.
+    /// The pointer is valid until the next add() or clear().
+    /// @param c The constraint to append; its point range is overwritten.
+    /// @param num_points Its number of points, at most contact_solver_constraint::max_points
+    /// (not checked).
+    /// @return The first of the new points, to be filled in.
     contact_solver_point *add(const contact_solver_constraint &c, std::uint32_t num_points);
 };
 
-// Tuning of the soft-step contact solver, shared by all contacts of a step. These are the
-// global contact stiffness and damping, the defaults for every contact: a contact whose mixed
-// material has a finite stiffness (material_base::stiffness) is instead a spring of that
-// stiffness, with the material's damping or, when that is not set, contact_damping_ratio.
+/// Tuning of the soft-step contact solver, shared by all contacts of a step. These are the
+/// global contact stiffness and damping, the defaults for every contact: a contact whose mixed
+/// material has a finite stiffness (material_base::stiffness) is instead a spring of that
+/// stiffness, with the material's damping or, when that is not set, contact_damping_ratio.
+/// Held by the world's settings (`settings::contact`); the solver reads it at every step.
 struct contact_solver_settings {
-    // Stiffness of contacts as a spring frequency, in Hz. A loaded contact sinks by
-    // load / (m w^2), so stacks stand taller the stiffer it is. It is capped at
-    // max_hertz_ratio times the sub-step rate for stability: at the default 60 Hz with 6
-    // sub-steps that cap is 90 Hz, the default, so a stiffer value takes effect only with more
-    // sub-steps or a smaller fixed dt.
+    /// Stiffness of contacts as a spring frequency, in Hz. A loaded contact sinks by
+    /// load / (m w^2), so stacks stand taller the stiffer it is. It is capped at
+    /// max_hertz_ratio times the sub-step rate for stability: at the default 60 Hz with 6
+    /// sub-steps that cap is 90 Hz, the default, so a stiffer value takes effect only with more
+    /// sub-steps or a smaller fixed dt.
     scalar contact_hertz{90};
-    // Damping ratio of the contact spring. Measured with the 30-box tower and the 40-wide
-    // pyramid over 10 s: ratios of 1 to 2 leave the top box within 3 mm (tower) and 1.4 cm
-    // (pyramid, mostly the springs' compression), while 5 to 10 let stacks wobble and creep by
-    // 5 to 30 cm and never sleep.
+    /// Damping ratio of the contact spring. Measured with the 30-box tower and the 40-wide
+    /// pyramid over 10 s: ratios of 1 to 2 leave the top box within 3 mm (tower) and 1.4 cm
+    /// (pyramid, mostly the springs' compression), while 5 to 10 let stacks wobble and creep by
+    /// 5 to 30 cm and never sleep.
+    /// Default 2.
     scalar contact_damping_ratio{2};
-    // Contact frequency (global, or a material's) is capped at this fraction of the sub-step
-    // rate: a material stiffer than that is as stiff as the global default.
+    /// Contact frequency (global, or a material's) is capped at this fraction of the sub-step
+    /// rate: a material stiffer than that is as stiff as the global default.
+    /// Default 0.25.
     scalar max_hertz_ratio{scalar(0.25)};
-    // Cap on the speed at which overlap is pushed out by rigid contacts, m/s (a material spring
-    // pushes as hard as its stiffness says).
+    /// Cap on the speed at which overlap is pushed out by rigid contacts, m/s (a material spring
+    /// pushes as hard as its stiffness says).
+    /// Default 3.
     scalar max_push_out_velocity{3};
-    // Approach speed below which restitution is ignored, so resting bodies do not jitter.
+    /// Approach speed below which restitution is ignored, so resting bodies do not jitter.
+    /// In m/s; default 0.5.
     scalar restitution_threshold{scalar(0.5)};
 };
 
-// Computes tangent frames, effective masses and starting normal velocities; call after the
-// points' rA, rB, normal and adjusted separation are set, and before any solve.
-// The passes below spread their work over the scheduler's threads when one is given, colour by
-// colour; the results do not depend on it, nor on its number of threads.
+/// Computes tangent frames, effective masses and starting normal velocities; call after the
+/// points' rA, rB, normal and adjusted separation are set, and before any solve.
+/// The passes below spread their work over the scheduler's threads when one is given, colour by
+/// colour; the results do not depend on it, nor on its number of threads.
+/// Also resets each point's totals (keeping the carried approach) and each constraint's
+/// spinning and rolling totals. Called once per step.
+/// @param contacts The step's contacts.
+/// @param bodies The step's solver bodies (their velocities and inverse inertias are read).
+/// @param scheduler Threads to spread the work over; null runs it on the calling thread.
 void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies,
                       task_scheduler *scheduler = nullptr);
 
-// Re-applies last step's impulses (scaled) as the initial guess.
+/// Re-applies the accumulated impulses as the initial guess: last step's at the first sub-step,
+/// then those of the sub-step before (they are applied as they are, not scaled).
+/// Called at the start of each sub-step, after the restitution solve.
+/// @param contacts The step's contacts.
+/// @param bodies The step's solver bodies.
+/// @param scheduler Threads each colour is spread over; null runs it on the calling thread.
 void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
                          task_scheduler *scheduler = nullptr);
 
-// One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
-// without it (relax pass) only the velocity constraints are enforced, removing the push-out
-// velocity so that it does not turn into bounce. The springs of contacts with a material
-// stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
+/// One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
+/// without it (relax pass) only the velocity constraints are enforced, removing the push-out
+/// velocity so that it does not turn into bounce. The springs of contacts with a material
+/// stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
+/// Each constraint solves its points' normal rows, then their friction, then its spinning and
+/// rolling friction. Points still apart may close their gap within the sub-step, no further.
+/// @param contacts The step's contacts; their impulses accumulate.
+/// @param bodies The step's solver bodies.
+/// @param h The sub-step (s).
+/// @param settings The contact settings.
+/// @param use_bias True for the biased pass, false for the relax pass.
+/// @param scheduler Threads each colour is spread over; null runs it on the calling thread.
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias,
                     task_scheduler *scheduler = nullptr);
 
-// Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
-// every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
-// from the last one's, warm starting), so their sum is what the contact gave over the step.
+/// Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
+/// every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
+/// from the last one's, warm starting), so their sum is what the contact gave over the step.
+/// @param contacts The step's contacts.
+/// @param scheduler Threads to spread the work over; null runs it on the calling thread.
 void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler = nullptr);
 
-// Restitution, run at the start of each sub-step before the contact solve: a point approaching
-// faster than the threshold that touches, or will within the sub-step h, gets an impulse making
-// it separate at restitution times its approach speed. Manifolds are solved one at a time for
-// `individual_iterations`, the whole set up to `iterations` times, until no point is hit, so
-// that a shock travels along a chain of bodies. Returns the number of passes that found a hit.
+/// Restitution, run at the start of each sub-step before the contact solve: a point approaching
+/// faster than the threshold that touches, or will within the sub-step h, gets an impulse making
+/// it separate at restitution times its approach speed. Manifolds are solved one at a time for
+/// `individual_iterations`, the whole set up to `iterations` times, until no point is hit, so
+/// that a shock travels along a chain of bodies. Returns the number of passes that found a hit.
+/// Runs on the calling thread. Contacts without restitution are skipped; friction acts during
+/// each bounce. The impulses are added to the points' restitution totals.
+/// @param contacts The step's contacts, prepared.
+/// @param bodies The step's solver bodies.
+/// @param settings The contact settings (restitution threshold).
+/// @param h The sub-step (s).
+/// @param iterations Most passes over the whole set; 0 turns the restitution solver off.
+/// @param individual_iterations Iterations of each manifold's isolated solve; 0 turns the
+/// restitution solver off.
+/// @return The number of passes that found a hit (0 when it is off).
 unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> bodies,
                            const contact_solver_settings &settings, scalar h, unsigned iterations,
                            unsigned individual_iterations);

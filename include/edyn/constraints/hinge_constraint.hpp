@@ -9,114 +9,238 @@
 
 namespace edyn {
 
-// Keeps the pivots together and lets the bodies turn only about the hinge axis: the first
-// column of each body's frame (object space). The other columns measure the hinge angle: the
-// angle of body[1]'s second column from body[0]'s, about the axis, positive counterclockwise.
+/// Keeps the pivots together and lets the bodies turn only about the hinge axis: the first
+/// column of each body's frame (object space). The other columns measure the hinge angle: the
+/// angle of body[1]'s second column from body[0]'s, about the axis, positive counterclockwise.
+/// Doors, wheel bearings, elbows and knees. Created with make_constraint(); the user sets the
+/// pivots, frames (or calls set_axes()), limits, friction, damping and springs, the engine
+/// writes `angle` and the impulses.
 struct hinge_constraint {
-    entity body[2]{null, null};
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    /// Pivot on each body, in its object space, relative to its origin (m): a point of the hinge
+    /// axis. Default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};
+    /// Orthonormal frame of each body, in its object space: the first column is the hinge axis,
+    /// the second measures the hinge angle (the third completes the basis). Default: identity,
+    /// so the hinge axis is each body's x axis.
     matrix3x3 frame[2]{matrix3x3_identity, matrix3x3_identity};
-    // Limits of the hinge angle (radians); infinite for a free hinge. angle_min <= angle_max.
+    /// Lower limit of the hinge angle (radians); infinite for a free hinge. angle_min <= angle_max.
+    /// Default: minus infinity (no lower limit).
     scalar angle_min{-std::numeric_limits<scalar>::infinity()};
+    /// Upper limit of the hinge angle (radians), not below `angle_min`; default: infinity (no
+    /// upper limit).
     scalar angle_max{std::numeric_limits<scalar>::infinity()};
-    // Restitution of a limit in [0, 1].
+    /// Restitution of a limit in [0, 1]: the share of the approach speed a limit hit faster than
+    /// the solver's restitution threshold bounces back with. Default 0.
     scalar limit_restitution{0};
-    // Torque opposing rotation about the axis, Nm.
+    /// Torque opposing rotation about the axis, Nm; finite, not negative, default 0.
     scalar friction_torque{0};
-    // Torque per angular velocity about the axis, Nm/(rad/s).
+    /// Torque per angular velocity about the axis, Nm/(rad/s); finite, not negative, default 0.
     scalar damping{0};
-    // Within bump_stop_angle of a limit, a spring of bump_stop_stiffness (Nm/rad) pushes back.
+    /// Within bump_stop_angle of a limit, a spring of bump_stop_stiffness (Nm/rad) pushes back.
+    /// The width of that zone in radians; finite, not negative, default 0 (no bump stops).
     scalar bump_stop_angle{0};
+    /// Stiffness of the bump stops, Nm/rad; finite, not negative, default 0 (no bump stops).
     scalar bump_stop_stiffness{0};
-    // A spring of `stiffness` (Nm/rad) pulls the hinge towards rest_angle.
+    /// A spring of `stiffness` (Nm/rad) pulls the hinge towards rest_angle.
+    /// The angle the spring pulls towards (radians, finite); default 0.
     scalar rest_angle{0};
+    /// Stiffness of the spring towards `rest_angle`, Nm/rad; finite, not negative, default 0
+    /// (no spring).
     scalar stiffness{0};
-    // The hinge angle at the end of the last step, unwrapped so that limits beyond half a turn
-    // work.
+    /// The hinge angle at the end of the last step, unwrapped so that limits beyond half a turn
+    /// work.
+    /// Written by the engine. The frames' angle is unwrapped towards it, so setting it chooses
+    /// which turn a hinge starts in.
     scalar angle{0};
 
-    // Last step's impulses per sub-step, for warm starting.
+    /// Last step's impulses per sub-step, for warm starting: the linear impulse holding the
+    /// pivots together (N s, world space). All impulses are written by the engine.
     vector3 impulse{vector3_zero};
+    /// Impulses of the two angular rows keeping the axes parallel (N m s).
     scalar align_impulse[2]{0, 0};
+    /// Impulses of the lower and upper limits (N m s).
     scalar limit_impulse[2]{0, 0};
+    /// Impulses of the lower and upper bump stops (N m s).
     scalar bump_stop_impulse[2]{0, 0};
+    /// Impulse of the friction torque (N m s).
     scalar friction_impulse{0};
+    /// Impulse of the spring and damper (N m s).
     scalar spring_impulse{0};
 
-    // Sets both frames from the hinge axis in each body's object space, completing each into an
-    // orthonormal basis. The angle is then measured between those completions.
+    /// Sets both frames from the hinge axis in each body's object space, completing each into an
+    /// orthonormal basis. The angle is then measured between those completions.
+    /// The completions come from plane_space(), so limits and `rest_angle` are measured from a
+    /// direction that depends on the axis; set `frame` instead to choose it. Nothing is
+    /// validated here: a zero axis gives frames that make_constraint() rejects.
+    /// @param axisA The hinge axis in body[0]'s object space; need not be unit length.
+    /// @param axisB The hinge axis in body[1]'s object space; need not be unit length.
     void set_axes(const vector3 &axisA, const vector3 &axisB);
 };
 
+/// Name of hinge_constraint in error messages.
 template<>
 inline constexpr const char *constraint_type_name<hinge_constraint> = "hinge_constraint";
 
+/// Checks the fields a user sets; make_constraint() calls it before creating the constraint.
+/// Equal limits are accepted, and infinite ones mean no limit.
+/// @param c The constraint to check.
+/// @throws std::invalid_argument When a pivot is not finite; a frame is not orthonormal; a limit
+/// is NaN or `angle_min > angle_max`; `limit_restitution` is outside [0, 1]; `friction_torque`,
+/// `damping`, `bump_stop_angle`, `bump_stop_stiffness` or `stiffness` is negative or not
+/// finite; or `rest_angle` is not finite.
 void validate_constraint(const hinge_constraint &c);
 
-// Angle of frame B's second column from frame A's about A's first column.
+/// Angle of frame B's second column from frame A's about A's first column.
+/// @param frameA Frame of body A, world space (first column: the hinge axis).
+/// @param frameB Frame of body B, world space.
+/// @return The angle in radians, in [-pi, pi], positive counterclockwise about A's axis.
 scalar relative_angle(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept;
 
-// Rotation about the axis is measured against the value it had at the start of the step so
-// that an angle past half a turn stays continuous.
+/// Rotation about the axis is measured against the value it had at the start of the step so
+/// that an angle past half a turn stays continuous.
+/// @param previous The unwrapped angle it continues (radians).
+/// @param raw The angle measured now, in [-pi, pi].
+/// @return The angle equal to `raw` modulo a full turn that is closest to `previous`.
 inline scalar unwrap_angle(scalar previous, scalar raw) noexcept {
     return previous + normalize_angle(raw - previous);
 }
 
-// Limits, bump stops and limit restitution of an angle whose rate is dot(axis, wB - wA)
-// (shared by the hinge angle and the CV joint's twist).
+/// Limits, bump stops and limit restitution of an angle whose rate is dot(axis, wB - wA)
+/// (shared by the hinge angle and the CV joint's twist).
+/// Part of a joint's solver state; index 0 is the lower limit, 1 the upper.
 struct angular_limit {
+    /// @var min
+    /// Lower limit (radians); minus infinity for none.
+    /// @var max
+    /// Upper limit (radians); infinity for none.
     scalar min{0}, max{0};
+    /// @var bump_angle
+    /// Width of the bump stop zone inside each limit (radians); 0 for none.
+    /// @var bump_stiffness
+    /// Stiffness of the bump stops (N m/rad); 0 for none.
     scalar bump_angle{0}, bump_stiffness{0};
-    scalar restitution{0};
-    // Rate of the angle when the step began: a limit approached faster than the threshold
-    // bounces, with the speed it had before the solver started braking it.
+    scalar restitution{0}; ///< Restitution of the limits, in [0, 1].
+    /// Rate of the angle when the step began: a limit approached faster than the threshold
+    /// bounces, with the speed it had before the solver started braking it (rad/s).
     scalar start_rate{0};
-    // Whether each limit already bounced this step: a step answers one approach.
+    /// Whether each limit already bounced this step: a step answers one approach.
     bool bounced[2]{false, false};
-    scalar impulse[2]{0, 0};
-    scalar bump_impulse[2]{0, 0};
+    scalar impulse[2]{0, 0};      ///< Impulses of the two limits over the sub-step (N m s), not negative.
+    scalar bump_impulse[2]{0, 0}; ///< Impulses of the two bump stops over the sub-step (N m s).
 };
 
+/// Re-applies the accumulated impulses of the limits and bump stops, at the start of each
+/// sub-step.
+/// @param limit The limits and their impulses.
+/// @param axis The axis about which the angle turns, world space.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
 void warm_start_angular_limit(const angular_limit &limit, const vector3 &axis, solver_body &a,
                               solver_body &b) noexcept;
+/// One pass over the rows of the finite limits and, where both bump stop values are positive,
+/// their bump stops (a spring that only pushes, within `bump_angle` of a limit).
+/// @param limit The limits; their impulses accumulate.
+/// @param axis The axis about which the angle turns, world space.
+/// @param angle The angle now (radians, unwrapped).
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param ctx The pass (biased or relax).
 void solve_angular_limit(angular_limit &limit, const vector3 &axis, scalar angle, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept;
-// Separating velocity for each limit hit in the coming sub-step faster than the threshold (0 for
-// the others); marks them as bounced. Returns whether any was hit.
+/// Separating velocity for each limit hit in the coming sub-step faster than the threshold (0 for
+/// the others); marks them as bounced. Returns whether any was hit.
+/// Limits already bounced this step, infinite limits and limits without restitution are never
+/// hit.
+/// @param limit The limits; `bounced` is updated.
+/// @param axis The axis about which the angle turns, world space.
+/// @param angle The angle now (radians, unwrapped).
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param ctx The pass: its sub-step and restitution threshold are read.
+/// @param bounce Receives the separating rate of the lower and upper limits (rad/s), 0 if not hit.
+/// @return Whether either limit was hit.
 bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
                        const solver_body &b, const constraint_solve_context &ctx,
                        scalar (&bounce)[2]) noexcept;
-// Drives the rate of each hit limit to its bounce velocity (impulses that only push), as one
-// row of an isolated collision solve.
+/// Drives the rate of each hit limit to its bounce velocity (impulses that only push), as one
+/// row of an isolated collision solve.
+/// @param axis The axis about which the angle turns, world space.
+/// @param bounce The separating rate of the lower and upper limits (rad/s); rows at 0 or below
+/// are skipped.
+/// @param impulse The bounce impulses of the two limits (N m s), accumulated and not negative.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
 void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (&impulse)[2], solver_body &a,
                         solver_body &b) noexcept;
 
+/// A hinge_constraint as the solver sees it during a step.
 struct hinge_constraint_solver {
-    using component = hinge_constraint;
-    joint_anchor anchor;
-    matrix3x3 frameA, frameB; // world space, at the start of the step
-    scalar angle{0};
+    using component = hinge_constraint; ///< The component this solver is made from.
+    joint_anchor anchor;                ///< The pivots at the start of the step.
+    /// @var frameA
+    /// Body A's frame in world space, at the start of the step.
+    /// @var frameB
+    /// Body B's frame in world space, at the start of the step.
+    matrix3x3 frameA, frameB;
+    scalar angle{0}; ///< Hinge angle (radians, unwrapped), updated after each relax pass.
+    /// @var friction_torque
+    /// Friction torque about the axis (N m).
+    /// @var damping
+    /// Damping about the axis (N m/(rad/s)).
+    /// @var rest_angle
+    /// Angle the spring pulls towards (radians).
+    /// @var stiffness
+    /// Spring stiffness (N m/rad).
     scalar friction_torque, damping, rest_angle, stiffness;
-    angular_limit limit;
-    vector3 impulse;
-    scalar align_impulse[2];
-    scalar friction_impulse;
-    scalar spring_impulse;
+    angular_limit limit;     ///< The angle's limits, bump stops and restitution.
+    vector3 impulse;         ///< Linear impulse holding the pivots together (N s).
+    scalar align_impulse[2]; ///< Impulses keeping the axes parallel (N m s).
+    scalar friction_impulse; ///< Friction impulse (N m s).
+    scalar spring_impulse;   ///< Spring and damper impulse (N m s).
 };
 
+/// Prepares a hinge for this step's solve: pivots and frames in world space, the unwrapped
+/// angle, the angle's rate for restitution and last step's impulses.
+/// @param registry The registry holding the constraint's bodies; their `angvel` is read.
+/// @param c The constraint component.
+/// @param indices The bodies' indices in the step's solver bodies.
+/// @return The solver state.
 hinge_constraint_solver make_constraint_solver(const registry &registry, const hinge_constraint &c,
                                                constraint_body_indices indices);
+/// Re-applies the accumulated impulses to the bodies, at the start of each sub-step.
+/// @param s The solver state.
+/// @param bodies The step's solver bodies.
 void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexcept;
+/// One pass over the hinge's rows: friction, spring and damper, limit bounces, limits and bump
+/// stops, axis alignment, then the pivots, which have the final word.
+/// @param s The solver state; its impulses accumulate.
+/// @param bodies The step's solver bodies.
+/// @param ctx The pass (biased or relax).
 void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept;
+/// Writes the angle and the impulses back into the component, for the next step.
+/// @param s The solver state after the step.
+/// @param c The constraint component.
 void store_impulses(const hinge_constraint_solver &s, hinge_constraint &c) noexcept;
+/// Position projection of the pivots after a sub-step's integration (see project_point()).
+/// @param s The solver state.
+/// @param bodies The step's solver bodies.
+/// @param fraction Share of the pivots' separation removed, in [0, 1].
+/// @param inv_h 1 / h of the sub-step (1/s).
 inline void project_positions(hinge_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
                               scalar inv_h) noexcept {
     project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
 }
 
-// Shared with the other joints that align an axis: two angular rows keeping axisB parallel to
-// axisA, measured against A's two other axes (frame columns 1 and 2).
+/// Shared with the other joints that align an axis: two angular rows keeping axisB parallel to
+/// axisA, measured against A's two other axes (frame columns 1 and 2).
+/// @param frameA Body A's frame now, world space (first column: the axis).
+/// @param axisB Body B's axis now, world space, unit length.
+/// @param impulse Impulses of the two rows over the sub-step (N m s), updated.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param ctx The pass (biased or relax).
 void solve_axis_alignment(const matrix3x3 &frameA, const vector3 &axisB, scalar (&impulse)[2], solver_body &a,
                           solver_body &b, const constraint_solve_context &ctx) noexcept;
 
