@@ -272,7 +272,6 @@ scalar polygon_signed_area(const vector2 *polygon, std::size_t n) noexcept;
 
 /// Area of the quadrilateral with vertices p0..p3 taken in the order (of the three possible)
 /// that gives the largest area; for four points in convex position, the area of their hull.
-/// Used to keep the contact points that cover the largest area.
 /// @return The area, in the square of the points' unit.
 inline scalar quadrilateral_area(const vector3 &p0, const vector3 &p1, const vector3 &p2,
                                  const vector3 &p3) noexcept {
