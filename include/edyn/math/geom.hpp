@@ -5,8 +5,11 @@
 #include "edyn/math/vector3.hpp"
 #include <cstddef>
 
-// Closest-point and clipping routines shared by every collide() pair. None of them allocates;
-// polygon routines write into caller-provided arrays whose required size is stated below.
+/// @file
+/// @brief Closest-point and clipping routines shared by every collide() pair.
+///
+/// None of them allocates; polygon routines write into caller-provided arrays whose required size
+/// is stated with each function. None of them validates its input: they run on hot paths.
 namespace edyn {
 
 // Segments and lines.
