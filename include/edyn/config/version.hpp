@@ -22,7 +22,7 @@ struct version_info {
 /// @return The major, minor and patch numbers the library was built with.
 version_info version() noexcept;
 
-/// Version of the compiled library as text, e.g. `"0.1.0"`.
+/// Version of the compiled library as text, for example `"0.1.0"`.
 /// @return A view of a string with static storage duration.
 std::string_view version_string() noexcept;
 

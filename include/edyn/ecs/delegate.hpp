@@ -18,7 +18,7 @@ struct connect_arg_t {
     explicit connect_arg_t() = default;
 };
 
-/// The tag value of `connect_arg_t<Candidate>`, e.g. `edyn::connect_arg<&fn>`.
+/// The tag value of `connect_arg_t<Candidate>`, for example `edyn::connect_arg<&fn>`.
 /// @tparam Candidate The function or member function pointer to bind.
 template<auto Candidate>
 inline constexpr connect_arg_t<Candidate> connect_arg{};

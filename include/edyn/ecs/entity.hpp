@@ -83,7 +83,7 @@ struct null_t {
     /// @return Always true.
     [[nodiscard]] friend constexpr bool operator==(null_t, null_t) noexcept { return true; }
 
-    /// Whether `e` is null, i.e. has the reserved all-ones index, whatever its version. C++20
+    /// Whether `e` is null, that is, has the reserved all-ones index, whatever its version. C++20
     /// rewrites `e == null`, `null != e` and `e != null` in terms of this one.
     /// @param e The entity to test.
     /// @return True when the index of `e` is `entity_traits::index_mask`.

@@ -161,7 +161,7 @@ public:
 
     /// Creates exactly `hint` if its index is free (any version), otherwise behaves as
     /// `create()`. Indices skipped over become free. Used to give entities the same ids as in
-    /// another registry, e.g. when loading a snapshot.
+    /// another registry, for example when loading a snapshot.
     /// @param hint The entity wanted; null means no preference.
     /// @return `hint`, or a new entity when its index was taken.
     /// @throws std::length_error When a new index is needed and all indices are in use.

@@ -42,7 +42,7 @@ inline std::size_t next_type_index() noexcept {
 
 } // namespace detail
 
-/// The qualified name of `Type` as the compiler spells it, e.g. "edyn::position".
+/// The qualified name of `Type` as the compiler spells it, for example "edyn::position".
 ///
 /// Used in error messages; spellings of templates may differ between compilers, so never compare
 /// or store the result.

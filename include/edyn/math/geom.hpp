@@ -71,7 +71,7 @@ struct segment_closest_points {
 /// times the shorter segment's length.
 inline constexpr scalar segment_parallel_tolerance = scalar(1e-3);
 
-/// Closest points between the segments [a0, a1] and [b0, b1] (e.g. two capsules' axes).
+/// Closest points between the segments [a0, a1] and [b0, b1] (for example two capsules' axes).
 /// Degenerate segments (points) are handled. When they are parallel (see
 /// `segment_parallel_tolerance`) and their projections on A's line overlap by more than a
 /// rounding error, two pairs are returned (see `segment_closest_points`).
@@ -201,7 +201,7 @@ scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0
 // Discs and circles (a cylinder's caps and rims).
 
 /// Closest point to `p` on the solid disc of `radius` centred at `center` with unit `normal`
-/// (e.g. a cylinder's cap).
+/// (for example a cylinder's cap).
 /// @param center Centre of the disc.
 /// @param normal Unit normal of the disc's plane.
 /// @param radius Radius of the disc, m.
@@ -210,7 +210,7 @@ scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0
 vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius,
                            const vector3 &p) noexcept;
 
-/// Closest point to `p` on the circle of `radius` centred at `center` with unit `normal` (e.g. a
+/// Closest point to `p` on the circle of `radius` centred at `center` with unit `normal` (for example a
 /// cylinder's rim).
 /// @param center Centre of the circle.
 /// @param normal Unit normal of the circle's plane.
@@ -247,7 +247,7 @@ std::size_t clip_polygon_half_plane(const vector2 *in, std::size_t n, const vect
 std::size_t clip_polygon_half_space(const vector3 *in, std::size_t n, const vector3 &normal, scalar constant,
                                     vector3 *out) noexcept;
 
-/// Intersection of the polygon `subject` with the convex polygon `clip`, e.g. two contact faces.
+/// Intersection of the polygon `subject` with the convex polygon `clip`, for example two contact faces.
 /// @param subject The polygon to clip.
 /// @param n Number of vertices of `subject`.
 /// @param clip The convex clipping polygon, counter-clockwise.

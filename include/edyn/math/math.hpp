@@ -12,12 +12,12 @@ namespace edyn {
 /// @return The same angle in radians.
 constexpr scalar to_radians(scalar degrees) noexcept { return degrees * pi / scalar(180); }
 
-/// Converts an angle from radians to degrees, e.g. for display.
+/// Converts an angle from radians to degrees, for example for display.
 /// @param radians Angle in radians.
 /// @return The same angle in degrees.
 constexpr scalar to_degrees(scalar radians) noexcept { return radians * scalar(180) / pi; }
 
-/// Converts a torque stiffness given per degree to the engine's unit, N·m per radian (e.g. for
+/// Converts a torque stiffness given per degree to the engine's unit, N·m per radian (for example for
 /// `hinge_constraint::stiffness`).
 /// @param Nm_per_degree Stiffness in N·m per degree.
 /// @return The same stiffness in N·m per radian.

@@ -21,7 +21,7 @@ struct matrix3x3 {
     /// @param i 0, 1 or 2 (not checked).
     /// @return A reference to the row.
     constexpr const vector3 &operator[](int i) const noexcept { return row[i]; }
-    /// Column by index, e.g. an axis of a frame.
+    /// Column by index, for example an axis of a frame.
     /// @param i 0, 1 or 2.
     /// @return A copy of the column.
     constexpr vector3 column(int i) const noexcept { return {row[0][i], row[1][i], row[2][i]}; }
@@ -44,7 +44,7 @@ constexpr matrix3x3 matrix3x3_rows(const vector3 &r0, const vector3 &r1, const v
     return {{r0, r1, r2}};
 }
 
-/// Builds a matrix from its columns, e.g. a frame from its three axes.
+/// Builds a matrix from its columns, for example a frame from its three axes.
 /// @param c0 First column (the frame's x axis).
 /// @param c1 Second column (y axis).
 /// @param c2 Third column (z axis).
@@ -53,7 +53,7 @@ constexpr matrix3x3 matrix3x3_columns(const vector3 &c0, const vector3 &c1, cons
     return {{{c0.x, c1.x, c2.x}, {c0.y, c1.y, c2.y}, {c0.z, c1.z, c2.z}}};
 }
 
-/// Diagonal matrix, e.g. an inertia tensor in its principal axes.
+/// Diagonal matrix, for example an inertia tensor in its principal axes.
 /// @param d The diagonal elements.
 /// @return The matrix with `d` on its diagonal and zeros elsewhere.
 constexpr matrix3x3 diagonal_matrix(const vector3 &d) noexcept {
@@ -94,13 +94,13 @@ constexpr matrix3x3 operator*(const matrix3x3 &m, scalar s) noexcept {
 /// @return `m * s`.
 constexpr matrix3x3 operator*(scalar s, const matrix3x3 &m) noexcept { return m * s; }
 
-/// Matrix times column vector, e.g. a vector transformed by a rotation matrix.
+/// Matrix times column vector, for example a vector transformed by a rotation matrix.
 /// @return `m v`.
 constexpr vector3 operator*(const matrix3x3 &m, const vector3 &v) noexcept {
     return {dot(m[0], v), dot(m[1], v), dot(m[2], v)};
 }
 
-/// Row vector times matrix, i.e. transpose(m) * v without building the transpose.
+/// Row vector times matrix, that is, transpose(m) * v without building the transpose.
 /// @return `v^T m` as a vector.
 constexpr vector3 operator*(const vector3 &v, const matrix3x3 &m) noexcept {
     return m[0] * v.x + m[1] * v.y + m[2] * v.z;
@@ -123,7 +123,7 @@ constexpr matrix3x3 &operator*=(matrix3x3 &a, const matrix3x3 &b) noexcept { ret
 /// @return The scalar triple product of the rows.
 constexpr scalar determinant(const matrix3x3 &m) noexcept { return dot(m[0], cross(m[1], m[2])); }
 
-/// Inverse through the adjugate, e.g. of an inertia tensor; use `transpose` for rotations.
+/// Inverse through the adjugate, for example of an inertia tensor; use `transpose` for rotations.
 /// @param m A matrix with a non-zero determinant (precondition, checked by `EDYN_ASSERT` only).
 /// @return The inverse of `m`.
 constexpr matrix3x3 inverse(const matrix3x3 &m) noexcept {
@@ -172,7 +172,7 @@ inline quaternion to_quaternion(const matrix3x3 &m) noexcept {
 
 /// R diag(d) R^T for a rotation R: a diagonal tensor (inertia) expressed in another frame.
 /// @param r Rotation matrix from the tensor's principal frame to the target frame.
-/// @param d The diagonal of the tensor in its principal frame (e.g. kg·m²).
+/// @param d The diagonal of the tensor in its principal frame (for example kg·m²).
 /// @return The full tensor in the target frame.
 constexpr matrix3x3 rotate_diagonal(const matrix3x3 &r, const vector3 &d) noexcept {
     return r * diagonal_matrix(d) * transpose(r);

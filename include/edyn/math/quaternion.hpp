@@ -6,7 +6,7 @@
 
 namespace edyn {
 
-/// Rotation quaternion, e.g. a body's orientation.
+/// Rotation quaternion, for example a body's orientation.
 ///
 /// The members are ordered x y z w: the vector part first, then the real part. Engines that store
 /// w x y z must swap when converting. Orientations must be unit quaternions (see `is_unit`); the
@@ -89,7 +89,7 @@ constexpr scalar length_sqr(const quaternion &q) noexcept { return dot(q, q); }
 /// @return The four-dimensional length of `q`.
 inline scalar length(const quaternion &q) noexcept { return std::sqrt(length_sqr(q)); }
 
-/// The unit quaternion along `q`, e.g. to remove the drift of accumulated rounding.
+/// The unit quaternion along `q`, for example to remove the drift of accumulated rounding.
 /// @param q A quaternion longer than `epsilon` (precondition, checked by `EDYN_ASSERT` only).
 /// @return `q / length(q)`.
 inline quaternion normalize(const quaternion &q) noexcept {

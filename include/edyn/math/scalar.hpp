@@ -21,7 +21,7 @@ inline constexpr scalar pi = scalar(3.14159265358979323846);
 inline constexpr scalar half_pi = pi / 2;
 /// A full turn, 2 pi radians.
 inline constexpr scalar pi2 = pi * 2;
-/// The largest finite `scalar`, used as "infinitely far" (e.g. empty bounds, no hit).
+/// The largest finite `scalar`, used as "infinitely far" (for example empty bounds, no hit).
 inline constexpr scalar large_scalar = std::numeric_limits<scalar>::max();
 /// Tolerance for geometric degeneracy tests (normalisation, parallel vectors), not for physics:
 /// 16 times the machine epsilon of `scalar`.

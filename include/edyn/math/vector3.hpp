@@ -49,7 +49,7 @@ inline constexpr vector3 vector3_x{1, 0, 0};
 inline constexpr vector3 vector3_y{0, 1, 0};
 /// The unit vector along z, (0, 0, 1).
 inline constexpr vector3 vector3_z{0, 0, 1};
-/// Every component `large_scalar`, e.g. the lower bound of an empty box.
+/// Every component `large_scalar`, for example the lower bound of an empty box.
 inline constexpr vector3 vector3_max{large_scalar, large_scalar, large_scalar};
 
 /// Component-wise sum.
@@ -115,7 +115,7 @@ constexpr vector3 cross(const vector3 &a, const vector3 &b) noexcept {
 /// Squared length, cheaper than `length` for comparisons.
 /// @return `dot(v, v)`.
 constexpr scalar length_sqr(const vector3 &v) noexcept { return dot(v, v); }
-/// Euclidean length, e.g. a speed in m/s from a velocity.
+/// Euclidean length, for example a speed in m/s from a velocity.
 /// @param v Any vector.
 /// @return The length of `v`, in the unit of its components.
 inline scalar length(const vector3 &v) noexcept { return std::sqrt(length_sqr(v)); }
@@ -192,7 +192,7 @@ inline bool isfinite(const vector3 &v) noexcept {
 constexpr vector3 project_plane(const vector3 &v, const vector3 &n) noexcept { return v - n * dot(v, n); }
 
 /// Unit vectors `t0`, `t1` completing the unit vector `n` to a right-handed orthonormal basis
-/// (t0 × t1 = n), e.g. the friction directions of a contact. Continuous except across the
+/// (t0 × t1 = n), for example the friction directions of a contact. Continuous except across the
 /// switch between the two branches (|n.z| = √2 / 2).
 /// @param n Unit vector (not checked; a zero vector gives NaN).
 /// @param t0 Receives the first tangent.
