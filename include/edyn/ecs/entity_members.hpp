@@ -38,8 +38,8 @@ struct entity_members {
 /// Replaces every entity held by `component` (as `entity_members` declares them) with
 /// `map(entity)`, null excepted.
 /// @param component The component to translate, in place.
-/// @param map Callable `entity(entity)` giving the entity to store instead, for example a look-up in an
-/// `entity_map`.
+/// @param map Callable `entity(entity)` giving the entity to store instead, for example a look-up
+/// in an `entity_map`.
 template<typename Component, typename Map>
 void map_entity_members(Component &component, Map &&map) {
     entity_members<Component>::each(component, [&](entity &e) {

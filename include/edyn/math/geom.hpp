@@ -210,8 +210,8 @@ scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0
 vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius,
                            const vector3 &p) noexcept;
 
-/// Closest point to `p` on the circle of `radius` centred at `center` with unit `normal` (for example a
-/// cylinder's rim).
+/// Closest point to `p` on the circle of `radius` centred at `center` with unit `normal`
+/// (for example a cylinder's rim).
 /// @param center Centre of the circle.
 /// @param normal Unit normal of the circle's plane.
 /// @param radius Radius of the circle, m.
@@ -247,7 +247,8 @@ std::size_t clip_polygon_half_plane(const vector2 *in, std::size_t n, const vect
 std::size_t clip_polygon_half_space(const vector3 *in, std::size_t n, const vector3 &normal, scalar constant,
                                     vector3 *out) noexcept;
 
-/// Intersection of the polygon `subject` with the convex polygon `clip`, for example two contact faces.
+/// Intersection of the polygon `subject` with the convex polygon `clip`, for example two contact
+/// faces.
 /// @param subject The polygon to clip.
 /// @param n Number of vertices of `subject`.
 /// @param clip The convex clipping polygon, counter-clockwise.

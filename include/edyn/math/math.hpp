@@ -17,8 +17,8 @@ constexpr scalar to_radians(scalar degrees) noexcept { return degrees * pi / sca
 /// @return The same angle in degrees.
 constexpr scalar to_degrees(scalar radians) noexcept { return radians * scalar(180) / pi; }
 
-/// Converts a torque stiffness given per degree to the engine's unit, N·m per radian (for example for
-/// `hinge_constraint::stiffness`).
+/// Converts a torque stiffness given per degree to the engine's unit, N·m per radian (for
+/// example for `hinge_constraint::stiffness`).
 /// @param Nm_per_degree Stiffness in N·m per degree.
 /// @return The same stiffness in N·m per radian.
 constexpr scalar to_Nm_per_radian(scalar Nm_per_degree) noexcept { return Nm_per_degree * scalar(180) / pi; }

@@ -25,8 +25,8 @@ struct task_hooks {
                      void *user){nullptr};
     /// Blocks until every range of the task behind `handle` has run. Required (null by default).
     void (*wait)(void *handle, void *user){nullptr};
-    /// Passed back unchanged to `enqueue` and `wait`, for example the program's scheduler object. May be
-    /// null (the default).
+    /// Passed back unchanged to `enqueue` and `wait`, for example the program's scheduler object.
+    /// May be null (the default).
     void *user{nullptr};
     /// Threads that run tasks at once, the caller's included (a hint for splitting work); at
     /// least 1 (the default).
