@@ -13,8 +13,8 @@ namespace edyn {
 /// version each free index gives next. Knows nothing of components.
 ///
 /// Freed indices are reused most recently freed first, with the version bumped, so a stale
-/// handle never equals a live entity (until the 12-bit version wraps around). Applications use it
-/// through `registry`; it is public for code that allocates ids without a registry.
+/// handle never equals a live entity (until the 12-bit version wraps around). Applications
+/// normally use it through `registry`.
 class entity_allocator {
     using index_type = entity_traits::value_type;
     static constexpr index_type free_index = entity_traits::index_mask;

@@ -23,7 +23,8 @@ public:
         return slots[i].target;
     }
     /// Maps `source` to `target`, replacing any entry at the same index (whatever its version).
-    /// @param source An entity of the source registry; must not be null.
+    /// @param source An entity of the source registry; not null (not checked: null's index would
+    /// grow the map to 2^20 entries).
     /// @param target The entity of the other registry it stands for.
     void insert(entity source, entity target) {
         auto i = to_index(source);

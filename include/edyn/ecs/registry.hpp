@@ -53,9 +53,9 @@ namespace detail {
 /// Entities and their components, EnTT style: the container of a world's whole state.
 ///
 /// See `sparse_set` and `storage` for what invalidates references, `basic_view` for what is safe
-/// while iterating. A registry is not thread-safe: in asynchronous mode the simulation worker
-/// owns a registry of its own, and the application's registry is only touched from the thread
-/// that calls `edyn::update`.
+/// while iterating. A registry is not thread-safe: use it from one thread at a time. In
+/// asynchronous mode the simulation worker owns a registry of its own; the application's
+/// registry stays with the thread that calls `edyn::update`.
 ///
 /// Misuse:
 /// - `get`, `replace`, `patch`, `erase` and `orphan` on an invalid entity, or `get`, `replace`,

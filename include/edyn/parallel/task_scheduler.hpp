@@ -36,12 +36,14 @@ struct task_hooks {
 /// Runs ranged tasks on worker threads: on a oneTBB task arena of its own by default, or through
 /// a program's task_hooks. Threads are created once, with the scheduler, never per task.
 ///
-/// The world makes one in the sequential multithreaded and asynchronous execution modes;
-/// `parallel_for` spreads loops over it.
+/// The world makes one in the `sequential_multithreaded` execution mode only (from
+/// `init_config::scheduler` or `init_config::num_worker_threads`); `parallel_for` spreads loops
+/// over it.
 class task_scheduler {
 public:
     /// A oneTBB arena of `num_threads` threads, the caller's included.
-    /// @param num_threads Number of threads; 0 means one per hardware thread.
+    /// @param num_threads Number of threads; 0 means one per hardware thread. Not bounded here
+    /// (`init_config::num_worker_threads` is, at `init_config::max_worker_threads`).
     explicit task_scheduler(unsigned num_threads = 0);
     /// A scheduler that hands its work to the program's own scheduler.
     /// @param hooks The program's hooks, copied.
