@@ -1,7 +1,9 @@
 #ifndef EDYN_EDYN_HPP
 #define EDYN_EDYN_HPP
 
-// The whole public API, layer by layer (see DESIGN.md).
+/// @file
+/// @brief The whole public API, layer by layer (see DESIGN.md): include this one header to use
+/// edyn.
 #include "edyn/config/assert.hpp"
 #include "edyn/config/version.hpp"
 

@@ -12,17 +12,23 @@
 
 namespace edyn {
 
-// Context variables of a registry (`registry.ctx()`): at most one value per type, owned by the
-// context, for state that belongs to a registry as a whole rather than to an entity. Values are
-// allocated one by one and never move: references stay valid until that value is erased or the
-// context is destroyed. Values are destroyed in the reverse order of their creation, so a value
-// may refer to values created before it.
+/// Context variables of a registry (`registry.ctx()`): at most one value per type, owned by the
+/// context, for state that belongs to a registry as a whole rather than to an entity (edyn keeps
+/// its settings and per-world state there).
+///
+/// Values are allocated one by one and never move: references stay valid until that value is
+/// erased or the context is destroyed. Values are destroyed in the reverse order of their
+/// creation, so a value may refer to values created before it. A context is not thread-safe.
 class context {
 public:
     context() = default;
     context(const context &) = delete;
     context &operator=(const context &) = delete;
+    /// Takes over the values of `other`, which is left empty; references to them stay valid.
     context(context &&) noexcept = default;
+    /// Destroys this context's values (newest first), then takes over those of `other`.
+    /// @param other The context to move from; left empty.
+    /// @return This context.
     context &operator=(context &&other) noexcept {
         if (this != &other) {
             clear();
@@ -33,8 +39,11 @@ public:
     }
     ~context() { clear(); }
 
-    // Creates the value of type `Type` from `args` and returns it; if there already is one, it
-    // is returned unchanged and `args` are ignored (as EnTT does).
+    /// Creates the value of type `Type` from `args` and returns it; if there already is one, it
+    /// is returned unchanged and `args` are ignored (as EnTT does).
+    /// @tparam Type The variable's type, neither a reference nor cv-qualified.
+    /// @param args Constructor arguments (parentheses, or braces for aggregates).
+    /// @return The value of type `Type`.
     template<typename Type, typename... Args>
     Type &emplace(Args &&...args) {
         if (auto *existing = find<Type>()) {
@@ -43,7 +52,11 @@ public:
         return insert<Type>(std::forward<Args>(args)...);
     }
 
-    // Creates the value or replaces the existing one with a new value built from `args`.
+    /// Creates the value or replaces the existing one with a new value built from `args`
+    /// (assigned, so references to it stay valid).
+    /// @tparam Type The variable's type, neither a reference nor cv-qualified.
+    /// @param args Constructor arguments (parentheses, or braces for aggregates).
+    /// @return The value of type `Type`.
     template<typename Type, typename... Args>
     Type &emplace_or_replace(Args &&...args) {
         if (auto *existing = find<Type>()) {
@@ -53,11 +66,17 @@ public:
         return insert<Type>(std::forward<Args>(args)...);
     }
 
+    /// Stores `value` as the variable of its type (cv-qualifiers and references removed),
+    /// creating it or assigning over the existing one.
+    /// @param value The value to copy or move in.
+    /// @return The stored value.
     template<typename Type>
     Type &insert_or_assign(Type &&value) {
         return emplace_or_replace<std::remove_cvref_t<Type>>(std::forward<Type>(value));
     }
 
+    /// The value of type `Type`, if there is one.
+    /// @return A pointer to the value, or null when the context has none.
     template<typename Type>
     [[nodiscard]] Type *find() noexcept {
         const auto id = type_index<Type>();
@@ -67,11 +86,16 @@ public:
         return static_cast<Type *>(entries[slots[id]].value.get());
     }
 
+    /// Read-only `find`.
+    /// @return A pointer to the value, or null when the context has none.
     template<typename Type>
     [[nodiscard]] const Type *find() const noexcept {
         return const_cast<context *>(this)->find<Type>();
     }
 
+    /// The value of type `Type`, which must exist (checked by `EDYN_ASSERT` only; use `find`
+    /// when it may not).
+    /// @return The value.
     template<typename Type>
     [[nodiscard]] Type &get() noexcept {
         auto *value = find<Type>();
@@ -79,17 +103,22 @@ public:
         return *value;
     }
 
+    /// Read-only `get`; the value must exist.
+    /// @return The value.
     template<typename Type>
     [[nodiscard]] const Type &get() const noexcept {
         return const_cast<context *>(this)->get<Type>();
     }
 
+    /// Whether the context holds a value of type `Type`.
+    /// @return True when there is one.
     template<typename Type>
     [[nodiscard]] bool contains() const noexcept {
         return find<Type>() != nullptr;
     }
 
-    // Destroys the value of type `Type`; returns whether there was one.
+    /// Destroys the value of type `Type`, if any. References to other values stay valid.
+    /// @return Whether there was one.
     template<typename Type>
     bool erase() {
         const auto id = type_index<Type>();
@@ -109,10 +138,14 @@ public:
         return true;
     }
 
+    /// Number of values held.
+    /// @return One per type stored.
     [[nodiscard]] std::size_t size() const noexcept { return entries.size(); }
+    /// Whether the context holds no value.
+    /// @return True when `size() == 0`.
     [[nodiscard]] bool empty() const noexcept { return entries.empty(); }
 
-    // Destroys every value, newest first.
+    /// Destroys every value, newest first.
     void clear() noexcept {
         while (!entries.empty()) {
             auto removed = std::move(entries.back());

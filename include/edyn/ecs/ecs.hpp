@@ -1,7 +1,9 @@
 #ifndef EDYN_ECS_ECS_HPP
 #define EDYN_ECS_ECS_HPP
 
-// The whole ecs layer.
+/// @file
+/// @brief The whole ecs layer: entities, the registry, its pools and views, signals and
+/// context variables.
 #include "edyn/ecs/construct.hpp"
 #include "edyn/ecs/context.hpp"
 #include "edyn/ecs/delegate.hpp"

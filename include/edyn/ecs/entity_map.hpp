@@ -6,25 +6,38 @@
 
 namespace edyn {
 
-// Entities of one registry mapped to those of another, indexed by the source entity's index
-// (entities are dense, so this is an array look-up); a stale source (another version at that
-// index) maps to null.
+/// Entities of one registry mapped to those of another, as the asynchronous worker and network
+/// peers need to translate entity-valued members (see `entity_members`).
+///
+/// It is indexed by the source entity's index (entities are dense, so this is an array look-up);
+/// a stale source (another version at that index) maps to null. It maps one way only: keep a
+/// second map for the reverse direction.
 class entity_map {
 public:
+    /// The entity that `source` maps to.
+    /// @param source An entity of the source registry.
+    /// @return The mapped entity, or null when `source` (with this exact version) has no entry.
     entity find(entity source) const noexcept {
         auto i = to_index(source);
         if (i >= slots.size() || slots[i].source != source) return null;
         return slots[i].target;
     }
+    /// Maps `source` to `target`, replacing any entry at the same index (whatever its version).
+    /// @param source An entity of the source registry; not null (not checked: null's index would
+    /// grow the map to 2^20 entries).
+    /// @param target The entity of the other registry it stands for.
     void insert(entity source, entity target) {
         auto i = to_index(source);
         if (i >= slots.size()) slots.resize(std::size_t(i) + 1);
         slots[i] = {source, target};
     }
+    /// Removes the entry of `source`; does nothing if it has none (or a stale one).
+    /// @param source An entity of the source registry.
     void erase(entity source) noexcept {
         auto i = to_index(source);
         if (i < slots.size() && slots[i].source == source) slots[i] = {};
     }
+    /// Removes every entry.
     void clear() noexcept { slots.clear(); }
 
 private:

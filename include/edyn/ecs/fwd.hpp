@@ -3,7 +3,8 @@
 
 #include <cstdint>
 
-// Declarations of the ecs layer, for headers that only name its types.
+/// @file
+/// @brief Declarations of the ecs layer, for headers that only name its types.
 namespace edyn {
 
 enum class entity : std::uint32_t;

@@ -8,36 +8,50 @@
 
 namespace edyn {
 
+/// A signal; only the specialisation for function types, `sigh<Ret(Args...)>`, is defined.
 template<typename>
 class sigh;
 
+/// The listening side of a signal; only `sink<sigh<Ret(Args...)>>` is defined.
 template<typename>
 class sink;
 
-// A signal: a list of delegates called in the order they were connected. Listeners are added
-// and removed through a `sink` (`edyn::sink{signal}.connect<&fn>()`), so that code that may
-// listen cannot also publish.
-//
-// Changes made by listeners while `publish` runs (the signal is "publishing"):
-// - a listener disconnected during a publish (itself or another) is not called again by it,
-//   even if it had not been reached yet;
-// - a listener connected during a publish is first called by the next publish;
-// - a listener may publish the same signal again (nested publish); the rules above apply to
-//   each level.
-// Destroying the signal while it publishes is undefined behaviour.
+/// A signal: a list of delegates called in the order they were connected.
+///
+/// Listeners are added and removed through a `sink` (`edyn::sink{signal}.connect<&fn>()`), so
+/// that code that may listen cannot also publish. The registry's `on_construct`, `on_update` and
+/// `on_destroy` give sinks of such signals.
+///
+/// Changes made by listeners while `publish` runs (the signal is "publishing"):
+/// - a listener disconnected during a publish (itself or another) is not called again by it,
+///   even if it had not been reached yet;
+/// - a listener connected during a publish is first called by the next publish;
+/// - a listener may publish the same signal again (nested publish); the rules above apply to
+///   each level.
+///
+/// Destroying the signal while it publishes is undefined behaviour. A signal is not thread-safe.
+/// @tparam Ret Return type of the listeners (their results are discarded).
+/// @tparam Args Argument types of the listeners.
 template<typename Ret, typename... Args>
 class sigh<Ret(Args...)> {
     friend class sink<sigh<Ret(Args...)>>;
 
 public:
+    /// Unsigned integer type for counts of listeners.
     using size_type = std::size_t;
+    /// The delegate type that holds each listener.
     using delegate_type = delegate<Ret(Args...)>;
 
-    // Number of connected listeners.
+    /// Number of connected listeners.
+    /// @return Listeners connected now, those disconnected during a running publish excluded.
     [[nodiscard]] size_type size() const noexcept { return live; }
+    /// Whether no listener is connected.
+    /// @return True when `size() == 0`.
     [[nodiscard]] bool empty() const noexcept { return live == 0; }
 
-    // Calls every listener with `args`; return values, if any, are discarded.
+    /// Calls every listener with `args`, in the order they were connected; return values, if any,
+    /// are discarded. An exception thrown by a listener propagates and skips the remaining ones.
+    /// @param args Arguments passed to every listener (copied for each call where taken by value).
     void publish(Args... args) {
         // Listeners connected during this call are appended after `count` and wait for the next.
         const auto count = calls.size();

@@ -14,21 +14,24 @@
 
 namespace edyn {
 
-// The pool of one component type: a sparse set of entities plus, for each entity, its
-// component, at the same position as the entity in the packed array. Empty types (tags,
-// `std::is_empty_v`) store no component at all; `get` on them returns a reference to one shared
-// instance, so that generic code can treat every component alike.
-//
-// Components live in fixed-size pages that are never moved, which gives these rules:
-// - Adding a component (`emplace`) never moves existing components: references and pointers to
-//   components stay valid across insertions into the same pool or any other pool.
-// - Removing a component destroys it and moves the last component of the pool into its place:
-//   a removal invalidates references to the removed component and to the pool's last component
-//   (which now lives elsewhere), and changes positions in the packed array.
-// - `clear()` invalidates every reference into the pool.
-// - Iterators (`begin`/`end`, views) hold positions, not addresses; see `sparse_set`.
-//
-// Functions called directly on a storage fire no signals; the registry's functions do.
+/// The pool of one component type: a sparse set of entities plus, for each entity, its
+/// component, at the same position as the entity in the packed array.
+///
+/// Empty types (tags, `std::is_empty_v`) store no component at all; `get` on them returns a
+/// reference to one shared instance, so that generic code can treat every component alike.
+///
+/// Components live in fixed-size pages that are never moved, which gives these rules:
+/// - Adding a component (`emplace`) never moves existing components: references and pointers to
+///   components stay valid across insertions into the same pool or any other pool.
+/// - Removing a component destroys it and moves the last component of the pool into its place:
+///   a removal invalidates references to the removed component and to the pool's last component
+///   (which now lives elsewhere), and changes positions in the packed array.
+/// - `clear()` invalidates every reference into the pool.
+/// - Iterators (`begin`/`end`, views) hold positions, not addresses; see `sparse_set`.
+///
+/// Functions called directly on a storage fire no signals; the registry's functions do. Obtain a
+/// pool with `registry::storage<T>()`.
+/// @tparam Type The component type: movable, neither a reference nor cv-qualified.
 template<typename Type>
 class storage final : public sparse_set {
     static_assert(std::is_same_v<Type, std::remove_cvref_t<Type>>,
@@ -38,16 +41,22 @@ class storage final : public sparse_set {
     static constexpr bool has_payload = !std::is_empty_v<Type>;
 
 public:
+    /// The component type.
     using value_type = Type;
-    // A power of two, so that finding a component's page is a shift; pages are about 16 KiB.
+    /// Number of components per page. A power of two, so that finding a component's page is a
+    /// shift; pages are about 16 KiB (one component per page when it is larger).
     static constexpr size_type page_capacity = std::bit_floor(std::max<size_type>(1, 16384 / sizeof(Type)));
 
     storage() = default;
+    /// Destroys every component and frees the pages.
     ~storage() override { release_all(); }
 
-    // Adds `e` with a component built from `args` (parentheses, or braces for aggregates).
-    // Precondition: `e` is not in the pool. Strong guarantee: if the component's constructor
-    // or an allocation throws, the pool is unchanged.
+    /// Adds `e` with a component built from `args` (parentheses, or braces for aggregates).
+    /// Strong guarantee: if the component's constructor or an allocation throws, the pool is
+    /// unchanged. Fires no signal (`registry::emplace` does, and checks its arguments).
+    /// @param e An entity not in the pool and not null (preconditions, checked by `EDYN_ASSERT`).
+    /// @param args Constructor arguments of the component; ignored for empty types.
+    /// @return The new component (the shared instance for empty types).
     template<typename... Args>
     Type &emplace(entity e, Args &&...args) {
         if constexpr (has_payload) {
@@ -70,23 +79,38 @@ public:
         }
     }
 
+    /// The component of `e`.
+    /// @param e An entity of the pool (precondition, checked by `EDYN_ASSERT`).
+    /// @return A reference, valid until this component or the pool's last one is removed.
     [[nodiscard]] Type &get(entity e) noexcept {
         EDYN_ASSERT(contains(e), "storage::get: entity does not have the component");
         return value_at(index(e));
     }
 
+    /// Read-only `get`.
+    /// @param e An entity of the pool (precondition, checked by `EDYN_ASSERT`).
+    /// @return A reference to its component.
     [[nodiscard]] const Type &get(entity e) const noexcept {
         EDYN_ASSERT(contains(e), "storage::get: entity does not have the component");
         return value_at(index(e));
     }
 
+    /// The component of `e`, if it has one.
+    /// @param e Any entity, stale and null ones included.
+    /// @return A pointer to the component, or null.
     [[nodiscard]] Type *try_get(entity e) noexcept { return contains(e) ? &value_at(index(e)) : nullptr; }
 
+    /// Read-only `try_get`.
+    /// @param e Any entity.
+    /// @return A pointer to the component, or null.
     [[nodiscard]] const Type *try_get(entity e) const noexcept {
         return contains(e) ? &value_at(index(e)) : nullptr;
     }
 
-    // The component at a position of the packed array (the component of `data()[pos]`).
+    /// The component at a position of the packed array (the component of `data()[pos]`),
+    /// without a look-up in the sparse array.
+    /// @param pos Position, below `size()` (precondition, checked by `EDYN_ASSERT`).
+    /// @return A reference to the component.
     [[nodiscard]] Type &value_at(size_type pos) noexcept {
         if constexpr (has_payload) {
             EDYN_ASSERT(pos < size(), "storage::value_at: position out of range");
@@ -96,10 +120,16 @@ public:
         }
     }
 
+    /// Read-only `value_at`.
+    /// @param pos Position, below `size()`.
+    /// @return A reference to the component.
     [[nodiscard]] const Type &value_at(size_type pos) const noexcept {
         return const_cast<storage *>(this)->value_at(pos);
     }
 
+    /// Removes `e` and its component if present; fires no signal.
+    /// @param e Any entity.
+    /// @return Whether it was there.
     bool remove(entity e) override {
         if (!contains(e)) {
             return false;
@@ -108,7 +138,9 @@ public:
         return true;
     }
 
-    // Removes `e` and its component. Precondition: `e` is in the pool.
+    /// Removes `e` and its component; the pool's last component moves into its place. Fires no
+    /// signal.
+    /// @param e An entity of the pool (precondition, checked by `EDYN_ASSERT`).
     void erase(entity e) {
         EDYN_ASSERT(contains(e), "storage::erase: entity does not have the component");
         if constexpr (has_payload) {
@@ -129,11 +161,14 @@ public:
         swap_and_pop(e);
     }
 
+    /// Destroys every component and removes every entity; fires no signal. Keeps the pages.
     void clear() override {
         destroy_payload();
         sparse_set::clear();
     }
 
+    /// Allocates the packed array and the component pages for `n` entities.
+    /// @param n Number of entities.
     void reserve(size_type n) override {
         sparse_set::reserve(n);
         if constexpr (has_payload) {

@@ -42,16 +42,24 @@ inline std::size_t next_type_index() noexcept {
 
 } // namespace detail
 
-// The qualified name of `Type` as the compiler spells it, e.g. "edyn::position". Used in error
-// messages; spellings of templates may differ between compilers.
+/// The qualified name of `Type` as the compiler spells it, for example "edyn::position".
+///
+/// Used in error messages; spellings of templates may differ between compilers, so never compare
+/// or store the result.
+/// @tparam Type Any type.
+/// @return A view of a string with static storage duration.
 template<typename Type>
 [[nodiscard]] constexpr std::string_view type_name() noexcept {
     return detail::strip_pretty_function(detail::pretty_function<Type>());
 }
 
-// A small integer per type, handed out 0, 1, 2, ... in order of first use in the program, so
-// that registries can keep their pools in plain arrays indexed by it. cv-qualifiers and
-// references are ignored. Ids are not stable across runs or builds: never serialize them.
+/// A small integer per type, handed out 0, 1, 2, ... in order of first use in the program, so
+/// that registries can keep their pools in plain arrays indexed by it.
+///
+/// cv-qualifiers and references are ignored. Ids are not stable across runs or builds: never
+/// serialize them. Thread-safe: the counter is atomic.
+/// @tparam Type Any type.
+/// @return The index of `Type`, the same for the whole run of the program.
 template<typename Type>
 [[nodiscard]] std::size_t type_index() noexcept {
     if constexpr (!std::is_same_v<Type, std::remove_cvref_t<Type>>) {

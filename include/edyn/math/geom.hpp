@@ -5,127 +5,219 @@
 #include "edyn/math/vector3.hpp"
 #include <cstddef>
 
-// Closest-point and clipping routines shared by every collide() pair. None of them allocates;
-// polygon routines write into caller-provided arrays whose required size is stated below.
+/// @file
+/// @brief Closest-point and clipping routines shared by every collide() pair.
+///
+/// None of them allocates; polygon routines write into caller-provided arrays whose required size
+/// is stated with each function. None of them validates its input: they run on hot paths.
 namespace edyn {
 
 // Segments and lines.
 
-// Closest point to q on the segment [p0, p1]; `t` receives its parameter (0 at p0, 1 at p1). A
-// degenerate segment (p0 == p1) gives p0 and t = 0.
+/// Closest point to `q` on the segment [p0, p1]. A degenerate segment (p0 == p1 within
+/// `epsilon`) gives p0 and t = 0.
+/// @param p0 Start of the segment.
+/// @param p1 End of the segment.
+/// @param q The query point.
+/// @param t Receives the parameter of the closest point, in [0, 1] (0 at p0, 1 at p1).
+/// @return The closest point, p0 + (p1 - p0) t.
 vector3 closest_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &q, scalar &t) noexcept;
 
+/// Closest point to `q` on the segment [p0, p1], when its parameter is not needed.
+/// @param p0 Start of the segment.
+/// @param p1 End of the segment.
+/// @param q The query point.
+/// @return The closest point.
 inline vector3 closest_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &q) noexcept {
     scalar t;
     return closest_point_segment(p0, p1, q, t);
 }
 
+/// Squared distance from `q` to the segment [p0, p1].
+/// @param p0 Start of the segment.
+/// @param p1 End of the segment.
+/// @param q The query point.
+/// @return The squared distance.
 inline scalar distance_sqr_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &q) noexcept {
     return distance_sqr(closest_point_segment(p0, p1, q), q);
 }
 
-// Closest point to q on the infinite line p + dir * t; `t` receives its parameter.
-// Precondition: dir is not the zero vector.
+/// Closest point to `q` on the infinite line p + dir t.
+/// @param p A point of the line.
+/// @param dir Direction of the line, any length but not zero (precondition, checked by
+/// `EDYN_ASSERT` only).
+/// @param q The query point.
+/// @param t Receives the parameter of the closest point (unbounded).
+/// @return The closest point, p + dir t.
 vector3 closest_point_line(const vector3 &p, const vector3 &dir, const vector3 &q, scalar &t) noexcept;
 
-// Result of closest_points_segment_segment. Point i is pointA[i] = a0 + (a1 - a0) * sA[i] on
-// segment A paired with pointB[i] = b0 + (b1 - b0) * sB[i] on segment B.
+/// Result of `closest_points_segment_segment`. Point i is pointA[i] = a0 + (a1 - a0) * sA[i] on
+/// segment A paired with pointB[i] = b0 + (b1 - b0) * sB[i] on segment B. Only the first
+/// `num_points` entries of the arrays are set.
 struct segment_closest_points {
-    // 1, or 2 when the segments are parallel and their projections overlap: then the two pairs
-    // sit at the ends of the overlap, each pointB the closest point of B to its pointA.
+    /// 1, or 2 when the segments are parallel and their projections overlap: then the two pairs
+    /// sit at the ends of the overlap, each pointB the closest point of B to its pointA.
     std::size_t num_points{0};
-    vector3 pointA[2];
-    vector3 pointB[2];
-    scalar sA[2];
-    scalar sB[2];
-    // Smallest squared distance among the pairs.
+    vector3 pointA[2]; ///< Closest points on segment A.
+    vector3 pointB[2]; ///< Closest points on segment B, paired with `pointA`.
+    scalar sA[2];      ///< Parameters of `pointA` on segment A, in [0, 1].
+    scalar sB[2];      ///< Parameters of `pointB` on segment B, in [0, 1].
+    /// Smallest squared distance among the pairs.
     scalar distance_sqr{0};
 };
 
-// Sine of the angle below which closest_points_segment_segment treats two segments as parallel.
-// The distance of the parallel pairs exceeds the true minimum by at most this sine times the
-// shorter segment's length.
+/// Sine of the angle below which `closest_points_segment_segment` treats two segments as
+/// parallel. The distance of the parallel pairs exceeds the true minimum by at most this sine
+/// times the shorter segment's length.
 inline constexpr scalar segment_parallel_tolerance = scalar(1e-3);
 
-// Closest points between the segments [a0, a1] and [b0, b1]. Degenerate segments (points) are
-// handled. When they are parallel (see segment_parallel_tolerance) and their projections on
-// A's line overlap by more than a rounding error, two pairs are returned (see above).
+/// Closest points between the segments [a0, a1] and [b0, b1] (for example two capsules' axes).
+/// Degenerate segments (points) are handled. When they are parallel (see
+/// `segment_parallel_tolerance`) and their projections on A's line overlap by more than a
+/// rounding error, two pairs are returned (see `segment_closest_points`).
+/// @param a0 Start of segment A.
+/// @param a1 End of segment A.
+/// @param b0 Start of segment B.
+/// @param b1 End of segment B.
+/// @param parallel_tolerance Sine of the angle below which the segments count as parallel.
+/// @return One or two pairs of closest points and the smallest squared distance.
 segment_closest_points
 closest_points_segment_segment(const vector3 &a0, const vector3 &a1, const vector3 &b0, const vector3 &b1,
                                scalar parallel_tolerance = segment_parallel_tolerance) noexcept;
 
-// Support point of the segment [p0, p1] in direction `dir` (p0 on ties).
+/// Support point of the segment [p0, p1] in direction `dir`: the end farthest along it (p0 on
+/// ties).
+/// @param p0 Start of the segment.
+/// @param p1 End of the segment.
+/// @param dir The direction, any length.
+/// @return `p0` or `p1`.
 inline vector3 support_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &dir) noexcept {
     return dot(p1 - p0, dir) > 0 ? p1 : p0;
 }
 
-// Clips the parametric interval [t0, t1] of the line p + dir * t to the half-space
-// dot(normal, x) <= constant. Returns false when nothing is left.
+/// Clips the parametric interval [t0, t1] of the line p + dir t to the half-space
+/// dot(normal, x) <= constant.
+/// @param p A point of the line.
+/// @param dir Direction of the line.
+/// @param normal Normal of the half-space's boundary, pointing out of the half-space.
+/// @param constant Offset of the boundary along `normal` (distance from the origin for a unit
+/// normal).
+/// @param t0 Start of the interval; raised in place when clipped.
+/// @param t1 End of the interval; lowered in place when clipped.
+/// @return False when nothing is left (t0 > t1, or a line parallel to the boundary outside it).
 bool clip_line_interval(const vector3 &p, const vector3 &dir, const vector3 &normal, scalar constant,
                         scalar &t0, scalar &t1) noexcept;
 
-// Clips the segment [p0, p1] in place to the half-space dot(normal, x) <= constant. Returns
-// false (leaving p0, p1 unspecified) when nothing is left.
+/// Clips the segment [p0, p1] in place to the half-space dot(normal, x) <= constant.
+/// @param p0 Start of the segment; moved onto the boundary when outside.
+/// @param p1 End of the segment; moved onto the boundary when outside.
+/// @param normal Normal of the boundary, pointing out of the half-space.
+/// @param constant Offset of the boundary along `normal`.
+/// @return False (leaving p0, p1 unspecified) when nothing is left.
 bool clip_segment_half_space(vector3 &p0, vector3 &p1, const vector3 &normal, scalar constant) noexcept;
 
 // Planes: the points x with dot(normal, x) == constant; `normal` is unit length.
 
+/// Signed distance from `p` to the plane dot(normal, x) == constant.
+/// @param normal Unit normal of the plane.
+/// @param constant Distance of the plane from the origin along `normal`.
+/// @param p The query point.
+/// @return Positive on the side `normal` points to, negative behind.
 constexpr scalar distance_point_plane(const vector3 &normal, scalar constant, const vector3 &p) noexcept {
     return dot(normal, p) - constant;
 }
 
+/// Orthogonal projection of `p` onto the plane dot(normal, x) == constant.
+/// @param normal Unit normal of the plane.
+/// @param constant Distance of the plane from the origin along `normal`.
+/// @param p The point to project.
+/// @return The closest point of the plane to `p`.
 constexpr vector3 project_point_plane(const vector3 &normal, scalar constant, const vector3 &p) noexcept {
     return p - normal * distance_point_plane(normal, constant, p);
 }
 
 // Boxes: axis aligned, centred at the origin, given by their half extents (a box's object space).
 
-// Closest point of the solid box to p (p itself when inside).
+/// Closest point of the solid box to `p` (`p` itself when inside).
+/// @param half_extents Half the box's size along each axis, m.
+/// @param p The query point, in the box's space.
+/// @return The closest point, `p` clamped to the box.
 constexpr vector3 closest_point_box(const vector3 &half_extents, const vector3 &p) noexcept {
     return {std::clamp(p.x, -half_extents.x, half_extents.x),
             std::clamp(p.y, -half_extents.y, half_extents.y),
             std::clamp(p.z, -half_extents.z, half_extents.z)};
 }
 
-// Whether p lies in the box grown by `tolerance` on every side.
+/// Whether `p` lies in the box grown by `tolerance` on every side (boundary included).
+/// @param half_extents Half the box's size along each axis.
+/// @param p The query point, in the box's space.
+/// @param tolerance Margin added to each side; negative shrinks the box.
+/// @return True when inside or on the grown box.
 constexpr bool point_in_box(const vector3 &half_extents, const vector3 &p, scalar tolerance = 0) noexcept {
     return p.x <= half_extents.x + tolerance && p.x >= -half_extents.x - tolerance &&
            p.y <= half_extents.y + tolerance && p.y >= -half_extents.y - tolerance &&
            p.z <= half_extents.z + tolerance && p.z >= -half_extents.z - tolerance;
 }
 
-// Vertex of the box farthest along `dir` (the positive vertex on ties).
+/// Vertex of the box farthest along `dir` (the positive vertex on ties).
+/// @param half_extents Half the box's size along each axis.
+/// @param dir The direction, in the box's space, any length.
+/// @return The support vertex.
 constexpr vector3 support_point_box(const vector3 &half_extents, const vector3 &dir) noexcept {
     return {dir.x < 0 ? -half_extents.x : half_extents.x, dir.y < 0 ? -half_extents.y : half_extents.y,
             dir.z < 0 ? -half_extents.z : half_extents.z};
 }
 
-// Half length of the box's projection on `axis` (box space; unit length for a distance).
+/// Half length of the box's projection on `axis`, as separating-axis tests need.
+/// @param half_extents Half the box's size along each axis.
+/// @param axis The axis in the box's space; unit length for a distance.
+/// @return The projection radius.
 inline scalar box_projection_radius(const vector3 &half_extents, const vector3 &axis) noexcept {
     return half_extents.x * std::abs(axis.x) + half_extents.y * std::abs(axis.y) +
            half_extents.z * std::abs(axis.z);
 }
 
-// Closest point of the box surface to a point inside it: the projection on the nearest face.
-// Returns that face's axis (0, 1, 2); `sign` receives +1 or -1 for the face's side and `depth`
-// the distance from p to the face (>= 0 inside). Ties go to the lower axis.
+/// The face of the box nearest to a point inside it; the point's projection on that face is
+/// the closest point of the box surface. Ties go to the lower axis.
+/// @param half_extents Half the box's size along each axis.
+/// @param p The query point, in the box's space.
+/// @param sign Receives +1 or -1 for the face's side along the axis.
+/// @param depth Receives the distance from `p` to the face (>= 0 inside).
+/// @return The face's axis: 0, 1 or 2.
 int nearest_box_face(const vector3 &half_extents, const vector3 &p, scalar &sign, scalar &depth) noexcept;
 
-// Closest points between the segment [p0, p1] and the solid box. Returns the squared distance
-// (0 when the segment touches or crosses the box); `t` receives the parameter of the point on
-// the segment, `on_segment` and `on_box` the two points. Exact: the squared distance is a
-// convex piecewise quadratic in t whose pieces are minimised in closed form.
+/// Closest points between the segment [p0, p1] and the solid box. Exact: the squared distance
+/// is a convex piecewise quadratic in t whose pieces are minimised in closed form.
+/// @param half_extents Half the box's size along each axis.
+/// @param p0 Start of the segment, in the box's space.
+/// @param p1 End of the segment, in the box's space.
+/// @param t Receives the parameter of the point on the segment, in [0, 1].
+/// @param on_segment Receives the closest point on the segment.
+/// @param on_box Receives the closest point of the box to it.
+/// @return The squared distance (0 when the segment touches or crosses the box).
 scalar closest_points_segment_box(const vector3 &half_extents, const vector3 &p0, const vector3 &p1,
                                   scalar &t, vector3 &on_segment, vector3 &on_box) noexcept;
 
 // Discs and circles (a cylinder's caps and rims).
 
-// Closest point to p on the solid disc of `radius` centred at `center` with unit `normal`.
+/// Closest point to `p` on the solid disc of `radius` centred at `center` with unit `normal`
+/// (for example a cylinder's cap).
+/// @param center Centre of the disc.
+/// @param normal Unit normal of the disc's plane.
+/// @param radius Radius of the disc, m.
+/// @param p The query point.
+/// @return The closest point of the disc.
 vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar radius,
                            const vector3 &p) noexcept;
 
-// Closest point to p on the circle of `radius` centred at `center` with unit `normal`. When p is
-// on the axis (every point is closest) the point along plane_space(normal)'s first vector.
+/// Closest point to `p` on the circle of `radius` centred at `center` with unit `normal`
+/// (for example a cylinder's rim).
+/// @param center Centre of the circle.
+/// @param normal Unit normal of the circle's plane.
+/// @param radius Radius of the circle, m.
+/// @param p The query point.
+/// @return The closest point of the circle; when `p` is on the axis (every point is closest),
+/// the point along the first vector of `plane_space(normal)`.
 vector3 closest_point_circle(const vector3 &center, const vector3 &normal, scalar radius,
                              const vector3 &p) noexcept;
 
@@ -133,30 +225,58 @@ vector3 closest_point_circle(const vector3 &center, const vector3 &normal, scala
 // clip_segment_half_space); clipping follows Sutherland–Hodgman, so convex inputs give convex
 // outputs. A vertex lying exactly on a clipping line is kept once, never duplicated.
 
-// Keeps the part of the convex polygon `in` (n vertices) with dot(normal, p) <= constant and
-// writes it to `out`, which needs room for n + 1 vertices. Returns the number written.
+/// Keeps the part of the convex polygon `in` with dot(normal, p) <= constant.
+/// @param in The polygon's vertices, in order.
+/// @param n Number of vertices of `in`; 0 gives 0.
+/// @param normal Normal of the clipping line, pointing out of the kept side.
+/// @param constant Offset of the clipping line along `normal`.
+/// @param out Receives the clipped polygon; needs room for n + 1 vertices and must not overlap
+/// `in`.
+/// @return The number of vertices written to `out` (0 when nothing is left).
 std::size_t clip_polygon_half_plane(const vector2 *in, std::size_t n, const vector2 &normal, scalar constant,
                                     vector2 *out) noexcept;
 
-// 3D counterpart: keeps the part with dot(normal, p) <= constant; `out` needs n + 1 vertices.
+/// Keeps the part of the convex planar polygon `in` with dot(normal, p) <= constant: the 3D
+/// counterpart of `clip_polygon_half_plane`.
+/// @param in The polygon's vertices, in order.
+/// @param n Number of vertices of `in`.
+/// @param normal Normal of the clipping plane, pointing out of the kept side.
+/// @param constant Offset of the clipping plane along `normal`.
+/// @param out Receives the clipped polygon; needs room for n + 1 vertices.
+/// @return The number of vertices written to `out`.
 std::size_t clip_polygon_half_space(const vector3 *in, std::size_t n, const vector3 &normal, scalar constant,
                                     vector3 *out) noexcept;
 
-// Intersection of the polygon `subject` (n vertices) with the convex polygon `clip` (m
-// vertices, counter-clockwise). `out` and `scratch` each need room for n + m vertices. Returns
-// the number of vertices written to `out`.
+/// Intersection of the polygon `subject` with the convex polygon `clip`, for example two contact
+/// faces.
+/// @param subject The polygon to clip.
+/// @param n Number of vertices of `subject`.
+/// @param clip The convex clipping polygon, counter-clockwise.
+/// @param m Number of vertices of `clip`; 0 copies `subject` unchanged.
+/// @param out Receives the intersection; needs room for n + m vertices.
+/// @param scratch Working space; needs room for n + m vertices.
+/// @return The number of vertices written to `out`.
 std::size_t clip_polygon_convex(const vector2 *subject, std::size_t n, const vector2 *clip, std::size_t m,
                                 vector2 *out, vector2 *scratch) noexcept;
 
-// Whether p lies in the convex counter-clockwise polygon grown by `tolerance`.
+/// Whether `p` lies in the convex counter-clockwise polygon grown by `tolerance`.
+/// @param polygon The vertices, counter-clockwise.
+/// @param n Number of vertices; 0 gives false.
+/// @param p The query point.
+/// @param tolerance Distance by which each edge is pushed outwards.
+/// @return True when inside or on the grown polygon.
 bool point_in_convex_polygon(const vector2 *polygon, std::size_t n, const vector2 &p,
                              scalar tolerance = 0) noexcept;
 
-// Signed area of a polygon: positive when counter-clockwise.
+/// Signed area of a polygon (shoelace formula).
+/// @param polygon The vertices, in order.
+/// @param n Number of vertices.
+/// @return The area, positive when counter-clockwise, negative when clockwise.
 scalar polygon_signed_area(const vector2 *polygon, std::size_t n) noexcept;
 
-// Area of the quadrilateral with vertices p0..p3 taken in the order (of the three possible)
-// that gives the largest area; for four points in convex position, the area of their hull.
+/// Area of the quadrilateral with vertices p0..p3 taken in the order (of the three possible)
+/// that gives the largest area; for four points in convex position, the area of their hull.
+/// @return The area, in the square of the points' unit.
 inline scalar quadrilateral_area(const vector3 &p0, const vector3 &p1, const vector3 &p2,
                                  const vector3 &p3) noexcept {
     // Area of a quad is half the cross product of its diagonals.

@@ -40,12 +40,20 @@ struct parallel_for_context {
 
 } // namespace detail
 
-// Calls fn(i) for every i in [first, last), spread over the scheduler's threads in ranges of at
-// least `grain` indices; returns when every call has returned. Work no larger than one range runs
-// in the calling thread, without the scheduler. Calls may run in any order and at once: fn must
-// write only what index i owns, and the caller merges in a fixed order so that results do not
-// depend on the thread count. If any call throws, the remaining ranges are skipped and the first
-// exception is rethrown here. Throws std::invalid_argument if first > last or grain is 0.
+/// Calls fn(i) for every i in [first, last), spread over the scheduler's threads in ranges of
+/// at least `grain` indices; returns when every call has returned.
+///
+/// Work no larger than one range, or a scheduler of concurrency 1, runs in the calling thread,
+/// without the scheduler. Calls may run in any order and at once: fn must write only what index
+/// i owns, and the caller merges in a fixed order so that results do not depend on the thread
+/// count. If any call throws, the remaining ranges are skipped and the first exception is
+/// rethrown here.
+/// @param scheduler The scheduler whose threads run the calls.
+/// @param first First index.
+/// @param last One past the last index.
+/// @param grain Smallest number of indices per range, at least 1.
+/// @param fn Callable taking an `Index`.
+/// @throws std::invalid_argument If first > last or grain is 0.
 template<typename Index, typename Fn>
 void parallel_for(task_scheduler &scheduler, Index first, Index last, std::size_t grain, Fn &&fn) {
     if (grain == 0) throw std::invalid_argument("parallel_for: grain must be at least 1, not 0");
@@ -65,8 +73,15 @@ void parallel_for(task_scheduler &scheduler, Index first, Index last, std::size_
     if (context.error) std::rethrow_exception(context.error);
 }
 
-// As above with an optional scheduler: without one (null), every call runs in the calling
-// thread, in index order.
+/// `parallel_for` with an optional scheduler: without one (null), every call runs in the
+/// calling thread, in index order.
+/// @param scheduler The scheduler, or null.
+/// @param first First index.
+/// @param last One past the last index.
+/// @param grain Smallest number of indices per range, at least 1.
+/// @param fn Callable taking an `Index`.
+/// @throws std::invalid_argument With a scheduler, if first > last or grain is 0 (without one,
+/// nothing is checked and such a range runs no call).
 template<typename Index, typename Fn>
 void parallel_for(task_scheduler *scheduler, Index first, Index last, std::size_t grain, Fn &&fn) {
     if (scheduler) {
