@@ -7,220 +7,325 @@
 namespace edyn {
 
 /// Closest points between a sphere (`a`) and a sphere (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a sphere (`a`) and a plane (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a sphere (`a`) and a box (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a sphere (`a`) and a capsule (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a sphere (`a`) and a cylinder (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 
 /// Closest points between a plane (`a`) and a sphere (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const plane_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a plane (`a`) and a box (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const plane_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a plane (`a`) and a capsule (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const plane_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a plane (`a`) and a cylinder (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const plane_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 
 /// Closest points between a box (`a`) and a box (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
 /// Closest points between a box (`a`) and a sphere (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a plane (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a capsule (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a cylinder (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 
 /// Closest points between a capsule (`a`) and a capsule (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a sphere (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a plane (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a box (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a cylinder (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 
 /// Closest points between a cylinder (`a`) and a cylinder (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a sphere (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a plane (`b`).
 ///
 /// The plane ignores its own position and orientation in `ctx`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a box (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a capsule (`b`).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 
 /// Closest points between a polyhedron (`a`) and a polyhedron (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a sphere (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a plane (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a box (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a capsule (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a cylinder (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a sphere (`a`) and a polyhedron (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a plane (`a`) and a polyhedron (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const plane_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a polyhedron (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a polyhedron (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a polyhedron (`b`).
 ///
 /// Found by SAT over face normals and edge pairs; featureA and featureB are not reported.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 
@@ -229,8 +334,11 @@ void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a sphere (`b`).
@@ -238,8 +346,11 @@ void collide(const compound_shape &a, const compound_shape &b, const collision_c
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a plane (`b`).
@@ -247,8 +358,11 @@ void collide(const compound_shape &a, const sphere_shape &b, const collision_con
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a box (`b`).
@@ -256,8 +370,11 @@ void collide(const compound_shape &a, const plane_shape &b, const collision_cont
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a capsule (`b`).
@@ -265,8 +382,11 @@ void collide(const compound_shape &a, const box_shape &b, const collision_contex
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a cylinder (`b`).
@@ -274,8 +394,11 @@ void collide(const compound_shape &a, const capsule_shape &b, const collision_co
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a polyhedron (`b`).
@@ -283,8 +406,11 @@ void collide(const compound_shape &a, const cylinder_shape &b, const collision_c
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a sphere (`a`) and a compound (`b`).
@@ -292,8 +418,11 @@ void collide(const compound_shape &a, const polyhedron_shape &b, const collision
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a plane (`a`) and a compound (`b`).
@@ -301,8 +430,11 @@ void collide(const sphere_shape &a, const compound_shape &b, const collision_con
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const plane_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a compound (`b`).
@@ -310,8 +442,11 @@ void collide(const plane_shape &a, const compound_shape &b, const collision_cont
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a compound (`b`).
@@ -319,8 +454,11 @@ void collide(const box_shape &a, const compound_shape &b, const collision_contex
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a compound (`b`).
@@ -328,8 +466,11 @@ void collide(const capsule_shape &a, const compound_shape &b, const collision_co
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a compound (`b`).
@@ -337,8 +478,11 @@ void collide(const cylinder_shape &a, const compound_shape &b, const collision_c
 /// Tested child by child (through the compound's tree when it has many children); features carry the child
 /// index in `part`, and where the child's own pair reports no feature, the compound's feature is
 /// `{std::monostate, 0, part}`.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 
@@ -347,8 +491,11 @@ void collide(const polyhedron_shape &a, const compound_shape &b, const collision
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a triangle mesh (`b`).
@@ -356,8 +503,11 @@ void collide(const sphere_shape &a, const mesh_shape &b, const collision_context
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a triangle mesh (`b`).
@@ -365,8 +515,11 @@ void collide(const capsule_shape &a, const mesh_shape &b, const collision_contex
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a triangle mesh (`b`).
@@ -374,16 +527,22 @@ void collide(const cylinder_shape &a, const mesh_shape &b, const collision_conte
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const mesh_shape &b, const collision_context &ctx, collision_result &result);
 /// Closest points between a polyhedron (`a`) and a triangle mesh (`b`).
 ///
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a triangle mesh (`b`).
@@ -391,8 +550,11 @@ void collide(const polyhedron_shape &a, const mesh_shape &b, const collision_con
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a sphere (`b`).
@@ -400,8 +562,11 @@ void collide(const compound_shape &a, const mesh_shape &b, const collision_conte
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a capsule (`b`).
@@ -409,8 +574,11 @@ void collide(const mesh_shape &a, const sphere_shape &b, const collision_context
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const mesh_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a cylinder (`b`).
@@ -418,8 +586,11 @@ void collide(const mesh_shape &a, const capsule_shape &b, const collision_contex
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const mesh_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a box (`b`).
@@ -427,16 +598,22 @@ void collide(const mesh_shape &a, const cylinder_shape &b, const collision_conte
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const mesh_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a polyhedron (`b`).
 ///
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const mesh_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a compound (`b`).
@@ -444,8 +621,11 @@ void collide(const mesh_shape &a, const polyhedron_shape &b, const collision_con
 /// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
 /// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
 /// transform (unlike a plane).
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const mesh_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 
@@ -453,96 +633,132 @@ void collide(const mesh_shape &a, const compound_shape &b, const collision_conte
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const sphere_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a capsule (`a`) and a paged triangle mesh (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const capsule_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a paged triangle mesh (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const cylinder_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a box (`a`) and a paged triangle mesh (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const box_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a paged triangle mesh (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const polyhedron_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a compound (`a`) and a paged triangle mesh (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const compound_shape &a, const paged_mesh_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a sphere (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const paged_mesh_shape &a, const sphere_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a capsule (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const paged_mesh_shape &a, const capsule_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a cylinder (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const paged_mesh_shape &a, const cylinder_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a box (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const paged_mesh_shape &a, const box_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a polyhedron (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const paged_mesh_shape &a, const polyhedron_shape &b, const collision_context &ctx,
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a compound (`b`).
 ///
 /// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
 /// feature's `part` numbers the triangle across pages.
-/// @copydetails collide(const shapes_variant_t &, const shapes_variant_t &, const collision_context &,
-/// collision_result &)
+/// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
+/// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
+/// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
+/// @param result Receives the points within the threshold, appended (the caller clears it);
+///        conventions as for the shapes_variant_t overload.
 void collide(const paged_mesh_shape &a, const compound_shape &b, const collision_context &ctx,
              collision_result &result);
 

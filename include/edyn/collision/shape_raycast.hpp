@@ -100,40 +100,100 @@ struct shape_raycast_result {
 
 /// Ray against a plane; the plane ignores ctx.pos and ctx.orn and its solid lies behind the
 /// normal.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const plane_shape &shape, const raycast_context &ctx);
 /// Ray against a sphere; the info is std::monostate.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const sphere_shape &shape, const raycast_context &ctx);
 /// Ray against a box; the info is a box_raycast_info.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const box_shape &shape, const raycast_context &ctx);
 /// Ray against a cylinder; the info is a cylinder_raycast_info.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const cylinder_shape &shape, const raycast_context &ctx);
 /// Ray against a capsule; the info is a capsule_raycast_info.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const capsule_shape &shape, const raycast_context &ctx);
 /// Ray against a polyhedron; the info is a polyhedron_raycast_info.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const polyhedron_shape &shape, const raycast_context &ctx);
 /// Ray against a compound; the info is a compound_raycast_info naming the child hit first (the
 /// lowest child index on equal fractions).
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const compound_shape &shape, const raycast_context &ctx);
 /// Ray against any shape a compound can hold, as the overload for its type.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const compound_child_shape_t &shape, const raycast_context &ctx);
 /// Ray against a triangle mesh; the info is a mesh_raycast_info.
 ///
 /// Meshes are surfaces: a ray hits a triangle from either side, with the normal facing the ray's
 /// start, the first triangle along the ray (the lowest index on equal fractions).
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const mesh_shape &shape, const raycast_context &ctx);
 /// Ray against a paged triangle mesh; the info is a paged_mesh_raycast_info.
 ///
 /// Only the pages that are loaded are hit; otherwise as against a mesh_shape.
-/// @copydetails shape_raycast(const Variant &, const raycast_context &)
+///
+/// First intersection of the segment [ctx.p0, ctx.p1] with the solid shape at (ctx.pos,
+/// ctx.orn); a ray starting inside hits at fraction 0. No call allocates memory. Rules as for
+/// the shapes_variant_t overload.
+/// @param shape The shape, in its object space.
+/// @param ctx The shape's transform and the ray's end points, in world space (m).
+/// @return The hit, or a result whose hit() is false.
 shape_raycast_result shape_raycast(const paged_mesh_shape &shape, const raycast_context &ctx);
 
 /// First intersection of the segment [ctx.p0, ctx.p1] with a solid shape at (ctx.pos, ctx.orn),

@@ -50,40 +50,70 @@ matrix3x3 moment_of_inertia_solid_capsule(scalar mass, scalar radius, scalar hal
 /// Volume of a plane (m³).
 ///
 /// Infinite, as for every static-only shape.
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const plane_shape &shape);
 /// Volume of a sphere (m³).
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const sphere_shape &shape);
 /// Volume of a box (m³).
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const box_shape &shape);
 /// Volume of a cylinder (m³).
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const cylinder_shape &shape);
 /// Volume of a capsule (m³).
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const capsule_shape &shape);
 /// Volume of a polyhedron (m³).
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const polyhedron_shape &shape);
 /// Volume of a compound (m³).
 ///
 /// The sum of its children's volumes; overlapping children count their common volume twice.
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const compound_shape &shape);
 /// Volume of any shape a compound can hold (m³).
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const compound_child_shape_t &shape);
 /// Volume of a triangle mesh (m³).
 ///
 /// Infinite, as for every static-only shape.
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const mesh_shape &shape);
 /// Volume of a paged triangle mesh (m³).
 ///
 /// Infinite, as for every static-only shape.
-/// @copydetails shape_volume(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The volume (m³).
 scalar shape_volume(const paged_mesh_shape &shape);
 
 /// Volume of a solid shape of uniform density, whatever its type.
@@ -99,43 +129,73 @@ scalar shape_volume(const Variant &shape) {
 /// Centre of volume of a plane, in its object space.
 ///
 /// The origin: static-only shapes have no centre of volume.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const plane_shape &shape);
 /// Centre of volume of a sphere, in its object space.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const sphere_shape &shape);
 /// Centre of volume of a box, in its object space.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const box_shape &shape);
 /// Centre of volume of a cylinder, in its object space.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const cylinder_shape &shape);
 /// Centre of volume of a capsule, in its object space.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const capsule_shape &shape);
 /// Centre of volume of a polyhedron, in its object space.
 ///
 /// Exact, over a tetrahedral decomposition of its faces; not necessarily the origin.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const polyhedron_shape &shape);
 /// Centre of volume of a compound, in its object space.
 ///
 /// The volume-weighted mean of its children's centroids (in the compound's object space). Precondition: at
 /// least one child.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const compound_shape &shape);
 /// Centre of volume of any shape a compound can hold, in its object space.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const compound_child_shape_t &shape);
 /// Centre of volume of a triangle mesh, in its object space.
 ///
 /// The origin: static-only shapes have no centre of volume.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const mesh_shape &shape);
 /// Centre of volume of a paged triangle mesh, in its object space.
 ///
 /// The origin: static-only shapes have no centre of volume.
-/// @copydetails shape_centroid(const Variant &)
+///
+/// The shape is assumed valid (see validate_shape()); nothing is checked.
+/// @param shape The shape.
+/// @return The centroid in object space (m).
 vector3 shape_centroid(const paged_mesh_shape &shape);
 
 /// Centre of volume of a shape in its object space, whatever its type: the origin for the
@@ -150,30 +210,79 @@ vector3 shape_centroid(const Variant &shape) {
 }
 
 /// Inertia tensor of a sphere of uniform density about its centroid.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const sphere_shape &shape, scalar mass);
 /// Inertia tensor of a box of uniform density about its centroid.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const box_shape &shape, scalar mass);
 /// Inertia tensor of a cylinder of uniform density about its centroid.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const cylinder_shape &shape, scalar mass);
 /// Inertia tensor of a capsule of uniform density about its centroid.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const capsule_shape &shape, scalar mass);
 /// Inertia tensor of a polyhedron of uniform density about its centroid.
 ///
 /// Summed exactly over a tetrahedral decomposition of the faces.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const polyhedron_shape &shape, scalar mass);
 /// Inertia tensor of a compound of uniform density about its centroid.
 ///
 /// Each child gets a share of the mass proportional to its volume (overlapping children count their common
 /// volume twice); the tensor is about the compound's centroid.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const compound_shape &shape, scalar mass);
 /// Inertia tensor of any shape a compound can hold of uniform density about its centroid.
-/// @copydetails moment_of_inertia(const Variant &, scalar)
+///
+/// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
+/// validate_shape()).
+/// @param shape The shape.
+/// @param mass Its mass (kg).
+/// @return The tensor (kg·m²).
+/// @throws std::invalid_argument Naming moment_of_inertia, when `mass` is not positive and
+///         finite.
 matrix3x3 moment_of_inertia(const compound_child_shape_t &shape, scalar mass);
 
 /// Inertia tensor of a solid shape of uniform density about its centroid (shape_centroid()), in

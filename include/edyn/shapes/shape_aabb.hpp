@@ -13,40 +13,80 @@ inline constexpr scalar plane_aabb_half_size = scalar(1e15);
 /// World-space AABB of a plane.
 ///
 /// Ignores `pos` and `orn`; the box it gets is described below.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const plane_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a sphere.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const sphere_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a box.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const box_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a cylinder.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const cylinder_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a capsule.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const capsule_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a polyhedron.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const polyhedron_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a compound.
 ///
 /// The union of its children's tight AABBs.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const compound_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of any shape a compound can hold.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const compound_child_shape_t &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a triangle mesh.
 ///
 /// The mesh's bounds in its object space, placed at (pos, orn): tight when orn is the identity.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const mesh_shape &shape, const vector3 &pos, const quaternion &orn);
 /// World-space AABB of a paged triangle mesh.
 ///
 /// The bounds of all pages in the mesh's space, placed at (pos, orn), as for a triangle mesh.
-/// @copydetails shape_aabb(const Variant &, const vector3 &, const quaternion &)
+///
+/// @param shape The shape.
+/// @param pos Position of the shape's origin in world space (m).
+/// @param orn Orientation of the shape (unit quaternion, x y z w).
+/// @return The box in world space (m).
 AABB shape_aabb(const paged_mesh_shape &shape, const vector3 &pos, const quaternion &orn);
 
 /// World-space AABB of a shape at position `pos` and orientation `orn`, whatever its type.

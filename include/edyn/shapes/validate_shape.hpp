@@ -6,34 +6,64 @@
 namespace edyn {
 
 /// Checks a plane given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const plane_shape &shape);
 /// Checks a sphere given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const sphere_shape &shape);
 /// Checks a box given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const box_shape &shape);
 /// Checks a cylinder given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const cylinder_shape &shape);
 /// Checks a capsule given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const capsule_shape &shape);
 /// Checks a polyhedron given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const polyhedron_shape &shape);
 /// Checks a compound given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const compound_shape &shape);
 /// Checks any shape a compound can hold given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const compound_child_shape_t &shape);
 /// Checks a triangle mesh shape given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const mesh_shape &shape);
 /// Checks a paged triangle mesh shape given by the user.
-/// @copydetails validate_shape(const Variant &)
+///
+/// Rules as listed for the shapes_variant_t overload.
+/// @param shape The shape to check.
+/// @throws std::invalid_argument Naming the shape, the field and the value.
 void validate_shape(const paged_mesh_shape &shape);
 
 /// Checks a shape given by the user, whatever its type; make_rigidbody(),
