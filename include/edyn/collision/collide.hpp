@@ -331,9 +331,9 @@ void collide(const cylinder_shape &a, const polyhedron_shape &b, const collision
 
 /// Closest points between a compound (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -343,9 +343,9 @@ void collide(const compound_shape &a, const compound_shape &b, const collision_c
              collision_result &result);
 /// Closest points between a compound (`a`) and a sphere (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -355,9 +355,9 @@ void collide(const compound_shape &a, const sphere_shape &b, const collision_con
              collision_result &result);
 /// Closest points between a compound (`a`) and a plane (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -367,9 +367,9 @@ void collide(const compound_shape &a, const plane_shape &b, const collision_cont
              collision_result &result);
 /// Closest points between a compound (`a`) and a box (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -379,9 +379,9 @@ void collide(const compound_shape &a, const box_shape &b, const collision_contex
              collision_result &result);
 /// Closest points between a compound (`a`) and a capsule (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -391,9 +391,9 @@ void collide(const compound_shape &a, const capsule_shape &b, const collision_co
              collision_result &result);
 /// Closest points between a compound (`a`) and a cylinder (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -403,9 +403,9 @@ void collide(const compound_shape &a, const cylinder_shape &b, const collision_c
              collision_result &result);
 /// Closest points between a compound (`a`) and a polyhedron (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -415,9 +415,9 @@ void collide(const compound_shape &a, const polyhedron_shape &b, const collision
              collision_result &result);
 /// Closest points between a sphere (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -427,9 +427,9 @@ void collide(const sphere_shape &a, const compound_shape &b, const collision_con
              collision_result &result);
 /// Closest points between a plane (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -439,9 +439,9 @@ void collide(const plane_shape &a, const compound_shape &b, const collision_cont
              collision_result &result);
 /// Closest points between a box (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -451,9 +451,9 @@ void collide(const box_shape &a, const compound_shape &b, const collision_contex
              collision_result &result);
 /// Closest points between a capsule (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -463,9 +463,9 @@ void collide(const capsule_shape &a, const compound_shape &b, const collision_co
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -475,9 +475,9 @@ void collide(const cylinder_shape &a, const compound_shape &b, const collision_c
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a compound (`b`).
 ///
-/// Tested child by child (through the compound's tree when it has many children); features carry the child
-/// index in `part`, and where the child's own pair reports no feature, the compound's feature is
-/// `{std::monostate, 0, part}`.
+/// Tested child by child (through the compound's tree when it has many children); features carry
+/// the child index in `part`, and where the child's own pair reports no feature, the compound's
+/// feature is `{std::monostate, 0, part}`.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -488,9 +488,9 @@ void collide(const polyhedron_shape &a, const compound_shape &b, const collision
 
 /// Closest points between a sphere (`a`) and a triangle mesh (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -500,9 +500,9 @@ void collide(const sphere_shape &a, const mesh_shape &b, const collision_context
              collision_result &result);
 /// Closest points between a capsule (`a`) and a triangle mesh (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -512,9 +512,9 @@ void collide(const capsule_shape &a, const mesh_shape &b, const collision_contex
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a triangle mesh (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -524,9 +524,9 @@ void collide(const cylinder_shape &a, const mesh_shape &b, const collision_conte
              collision_result &result);
 /// Closest points between a box (`a`) and a triangle mesh (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -535,9 +535,9 @@ void collide(const cylinder_shape &a, const mesh_shape &b, const collision_conte
 void collide(const box_shape &a, const mesh_shape &b, const collision_context &ctx, collision_result &result);
 /// Closest points between a polyhedron (`a`) and a triangle mesh (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -547,9 +547,9 @@ void collide(const polyhedron_shape &a, const mesh_shape &b, const collision_con
              collision_result &result);
 /// Closest points between a compound (`a`) and a triangle mesh (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -559,9 +559,9 @@ void collide(const compound_shape &a, const mesh_shape &b, const collision_conte
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a sphere (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -571,9 +571,9 @@ void collide(const mesh_shape &a, const sphere_shape &b, const collision_context
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a capsule (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -583,9 +583,9 @@ void collide(const mesh_shape &a, const capsule_shape &b, const collision_contex
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a cylinder (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -595,9 +595,9 @@ void collide(const mesh_shape &a, const cylinder_shape &b, const collision_conte
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a box (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -606,9 +606,9 @@ void collide(const mesh_shape &a, const cylinder_shape &b, const collision_conte
 void collide(const mesh_shape &a, const box_shape &b, const collision_context &ctx, collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a polyhedron (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -618,9 +618,9 @@ void collide(const mesh_shape &a, const polyhedron_shape &b, const collision_con
              collision_result &result);
 /// Closest points between a triangle mesh (`a`) and a compound (`b`).
 ///
-/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see triangle_mesh);
-/// features on the mesh are triangle features whose `part` is the triangle index. The mesh follows its body's
-/// transform (unlike a plane).
+/// Against the mesh's one-sided triangles, whose inactive internal edges do not catch (see
+/// triangle_mesh); features on the mesh are triangle features whose `part` is the triangle index.
+/// The mesh follows its body's transform (unlike a plane).
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -631,8 +631,8 @@ void collide(const mesh_shape &a, const compound_shape &b, const collision_conte
 
 /// Closest points between a sphere (`a`) and a paged triangle mesh (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -642,8 +642,8 @@ void collide(const sphere_shape &a, const paged_mesh_shape &b, const collision_c
              collision_result &result);
 /// Closest points between a capsule (`a`) and a paged triangle mesh (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -653,8 +653,8 @@ void collide(const capsule_shape &a, const paged_mesh_shape &b, const collision_
              collision_result &result);
 /// Closest points between a cylinder (`a`) and a paged triangle mesh (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -664,8 +664,8 @@ void collide(const cylinder_shape &a, const paged_mesh_shape &b, const collision
              collision_result &result);
 /// Closest points between a box (`a`) and a paged triangle mesh (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -675,8 +675,8 @@ void collide(const box_shape &a, const paged_mesh_shape &b, const collision_cont
              collision_result &result);
 /// Closest points between a polyhedron (`a`) and a paged triangle mesh (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -686,8 +686,8 @@ void collide(const polyhedron_shape &a, const paged_mesh_shape &b, const collisi
              collision_result &result);
 /// Closest points between a compound (`a`) and a paged triangle mesh (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -697,8 +697,8 @@ void collide(const compound_shape &a, const paged_mesh_shape &b, const collision
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a sphere (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -708,8 +708,8 @@ void collide(const paged_mesh_shape &a, const sphere_shape &b, const collision_c
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a capsule (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -719,8 +719,8 @@ void collide(const paged_mesh_shape &a, const capsule_shape &b, const collision_
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a cylinder (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -730,8 +730,8 @@ void collide(const paged_mesh_shape &a, const cylinder_shape &b, const collision
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a box (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -741,8 +741,8 @@ void collide(const paged_mesh_shape &a, const box_shape &b, const collision_cont
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a polyhedron (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).
@@ -752,8 +752,8 @@ void collide(const paged_mesh_shape &a, const polyhedron_shape &b, const collisi
              collision_result &result);
 /// Closest points between a paged triangle mesh (`a`) and a compound (`b`).
 ///
-/// As against a triangle mesh, but only against the pages that are loaded (see paged_triangle_mesh); the mesh
-/// feature's `part` numbers the triangle across pages.
+/// As against a triangle mesh, but only against the pages that are loaded (see
+/// paged_triangle_mesh); the mesh feature's `part` numbers the triangle across pages.
 /// @param a Shape A, at `ctx.posA` and `ctx.ornA`.
 /// @param b Shape B, at `ctx.posB` and `ctx.ornB`.
 /// @param ctx The shapes' transforms (m, unit quaternions) and the distance threshold (m).

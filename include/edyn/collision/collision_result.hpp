@@ -15,10 +15,10 @@ namespace edyn {
 /// Positions are those of the shapes' origins in world space (m), orientations are unit
 /// quaternions (x y z w). Planes ignore their own position and orientation.
 struct collision_context {
-    vector3 posA{vector3_zero};           ///< Position of shape A in world space (m); zero by default.
-    quaternion ornA{quaternion_identity}; ///< Orientation of shape A; identity by default.
-    vector3 posB{vector3_zero};           ///< Position of shape B in world space (m); zero by default.
-    quaternion ornB{quaternion_identity}; ///< Orientation of shape B; identity by default.
+    vector3 posA{vector3_zero};           ///< Position of shape A in world space (m), zero default.
+    quaternion ornA{quaternion_identity}; ///< Orientation of shape A, identity default.
+    vector3 posB{vector3_zero};           ///< Position of shape B in world space (m), zero default.
+    quaternion ornB{quaternion_identity}; ///< Orientation of shape B, identity default.
     /// Points whose signed distance exceeds this are not reported (m); 0.02 by default.
     scalar threshold{scalar(0.02)};
 };
@@ -57,10 +57,10 @@ struct collision_result {
 
     /// Adds a point, keeping at most `max_contacts`.
     ///
-    /// A point whose pivot on A or on B lies very near an existing point's (within 1 mm)
-    /// is merged with it: the deeper of the two is kept. When the result is full, a point is replaced so that
-    /// the deepest point is kept and the area spanned by the set grows (nothing changes when no replacement
-    /// grows it).
+    /// A point whose pivot on A or on B lies very near an existing point's (within 1 mm) is merged
+    /// with it: the deeper of the two is kept. When the result is full, a point is replaced so that
+    /// the deepest point is kept and the area spanned by the set grows (nothing changes when no
+    /// replacement grows it).
     /// @param p The point to add.
     void add_point(const collision_point &p);
 

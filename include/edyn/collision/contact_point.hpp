@@ -39,8 +39,8 @@ struct contact_point {
     /// Normal impulse applied by the restitution solver in the last step (N·s).
     ///
     /// Kept apart from `normal_impulse` because mixing them would let the constraint solver
-    /// undo part of the propagated shock (see the manual's "Restitution"); zero when the restitution solver
-    /// is off (no restitution iterations).
+    /// undo part of the propagated shock (see the manual's "Restitution"); zero when the
+    /// restitution solver is off (no restitution iterations).
     scalar normal_restitution_impulse{0};
     /// Friction impulses of the constraint solver over the last step along the two tangents
     /// given by `plane_space(normal)` (N·s).

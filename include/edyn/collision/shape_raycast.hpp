@@ -39,8 +39,10 @@ struct cylinder_raycast_info {
 /// A hemisphere: capsule_feature::hemisphere, hemisphere_index 0 at +half_length, 1 at
 /// -half_length. The cylindrical side: capsule_feature::side, hemisphere_index 0.
 struct capsule_raycast_info {
-    capsule_feature feature;      ///< capsule_feature::hemisphere or capsule_feature::side.
-    std::size_t hemisphere_index; ///< The hemisphere (0 at +half_length, 1 at -half_length); 0 for the side.
+    /// capsule_feature::hemisphere or capsule_feature::side.
+    capsule_feature feature;
+    /// The hemisphere (0 at +half_length, 1 at -half_length); 0 for the side.
+    std::size_t hemisphere_index;
 };
 
 /// Which face of a polyhedron_shape a ray hit.

@@ -11,9 +11,10 @@ namespace edyn {
 /// Features: capsule_feature::hemisphere (index 0 at +half_length, 1 at -half_length) and
 /// capsule_feature::side.
 struct capsule_shape {
-    scalar radius;      ///< Radius of the swept sphere (m); positive and finite.
-    scalar half_length; ///< Half the length of the inner segment (m), without the hemispheres; positive and
-                        ///< finite.
+    /// Radius of the swept sphere (m); positive and finite.
+    scalar radius;
+    /// Half the length of the inner segment, without the hemispheres (m); positive and finite.
+    scalar half_length;
     coordinate_axis axis{coordinate_axis::x}; ///< Main axis in object space; x by default.
 };
 

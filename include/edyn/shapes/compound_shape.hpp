@@ -33,9 +33,12 @@ using compound_child_shape_t =
 struct compound_shape {
     /// One convex piece of the compound, as add_shape() stored it.
     struct child {
-        compound_child_shape_t shape; ///< The child's shape, in its own object space.
-        vector3 position;             ///< Position of the child's origin in the compound's object space (m).
-        quaternion orientation;       ///< Orientation of the child in the compound's object space (unit).
+        /// The child's shape, in its own object space.
+        compound_child_shape_t shape;
+        /// Position of the child's origin in the compound's object space (m).
+        vector3 position;
+        /// Orientation of the child in the compound's object space (unit quaternion).
+        quaternion orientation;
         /// Bounds of the child in the compound's object space.
         AABB aabb;
     };

@@ -168,8 +168,8 @@ vector3 shape_centroid(const capsule_shape &shape);
 vector3 shape_centroid(const polyhedron_shape &shape);
 /// Centre of volume of a compound, in its object space.
 ///
-/// The volume-weighted mean of its children's centroids (in the compound's object space). Precondition: at
-/// least one child.
+/// The volume-weighted mean of its children's centroids (in the compound's object space).
+/// Precondition: at least one child.
 ///
 /// The shape is assumed valid (see validate_shape()); nothing is checked.
 /// @param shape The shape.
@@ -263,8 +263,8 @@ matrix3x3 moment_of_inertia(const capsule_shape &shape, scalar mass);
 matrix3x3 moment_of_inertia(const polyhedron_shape &shape, scalar mass);
 /// Inertia tensor of a compound of uniform density about its centroid.
 ///
-/// Each child gets a share of the mass proportional to its volume (overlapping children count their common
-/// volume twice); the tensor is about the compound's centroid.
+/// Each child gets a share of the mass proportional to its volume (overlapping children count their
+/// common volume twice); the tensor is about the compound's centroid.
 ///
 /// The tensor is in the axes of the shape's object space; the shape is assumed valid (see
 /// validate_shape()).

@@ -11,8 +11,10 @@ namespace edyn {
 /// in world space), has no volume or inertia, and collides with every shape but planes and
 /// meshes. E.g. `plane_shape{{0, 1, 0}, 0}` is a ground at y = 0 facing up.
 struct plane_shape {
-    vector3 normal;  ///< Unit normal pointing out of the solid, in world space; not normalised for you.
-    scalar constant; ///< Signed distance of the plane from the world origin along `normal` (m).
+    /// Unit normal pointing out of the solid, in world space; it is not normalised for you.
+    vector3 normal;
+    /// Signed distance of the plane from the world origin along `normal` (m).
+    scalar constant;
 };
 
 } // namespace edyn

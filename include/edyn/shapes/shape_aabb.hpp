@@ -91,9 +91,10 @@ AABB shape_aabb(const paged_mesh_shape &shape, const vector3 &pos, const quatern
 
 /// World-space AABB of a shape at position `pos` and orientation `orn`, whatever its type.
 ///
-/// Tight for every shape but meshes: boxes and polyhedra bound their rotated vertices; cylinders use, per
-/// world axis i, |a_i| half_length + radius sqrt(1 - a_i^2) with a the world-space main axis; capsules |a_i|
-/// half_length + radius; compounds are the union of their children's tight AABBs.
+/// Tight for every shape but meshes: boxes and polyhedra bound their rotated vertices; cylinders
+/// use, per world axis i, |a_i| half_length + radius sqrt(1 - a_i^2) with a the world-space main
+/// axis; capsules |a_i| half_length + radius; compounds are the union of their children's tight
+/// AABBs.
 ///
 /// A plane ignores pos and orn (as planes do everywhere) and gets the cube of half size
 /// plane_aabb_half_size around the origin, cut at the plane where its normal is exactly a
