@@ -12,63 +12,101 @@
 
 namespace edyn {
 
-// Finds the pairs of bodies whose fattened AABBs overlap and keeps one manifold entity (with a
-// contact_manifold component) per pair. Static proxies live in their own tree and never pair
-// with each other. Every pair found is offered to the registry's should_collide function
-// (get_should_collide) once, when it starts overlapping.
-//
-// Ordering is reproducible: proxies are visited in the order of their insertion (a removal moves
-// the last proxy into the hole), new manifolds are created sorted by their bodies' entity values,
-// and nothing depends on hash-table or pointer order. A manifold's body[0] is the body with the
-// lower entity value.
+/// Finds the pairs of bodies whose fattened AABBs overlap and keeps one manifold entity (with a
+/// contact_manifold component) per pair.
+///
+/// Each world owns one and runs update() as the first phase of every step; programs normally
+/// reach it only through raycasts and queries. Static proxies live in their own tree and never
+/// pair with each other. Every pair found is offered to the registry's should_collide function
+/// (get_should_collide()) once, when it starts overlapping.
+///
+/// Ordering is reproducible: proxies are visited in the order of their insertion (a removal moves
+/// the last proxy into the hole), new manifolds are created sorted by their bodies' entity values,
+/// and nothing depends on hash-table or pointer order. A manifold's body[0] is the body with the
+/// lower entity value.
 class broadphase {
 public:
+    /// Creates an empty broadphase.
+    /// @param margin Growth of every side of a proxy's AABB (m), as dynamic_tree's margin.
+    /// @throws std::invalid_argument When `margin` is negative or not finite.
     explicit broadphase(scalar margin = dynamic_tree::default_margin);
 
-    // Adds a proxy for `e` with its current AABB. Static proxies are never moved by update().
-    // Pairs for it are looked for in the next update(). Throws std::invalid_argument when `e`
-    // is null or already has a proxy, or when the AABB is inverted or not finite.
+    /// Adds a proxy for `e` with its current AABB.
+    ///
+    /// Static proxies are never moved by update(). Pairs for it are looked for in the next
+    /// update().
+    /// @param e The body.
+    /// @param aabb Its world-space AABB (m).
+    /// @param is_static Whether the body never moves (it then never pairs with other static
+    ///        bodies).
+    /// @throws std::invalid_argument When `e` is null or already has a proxy (or reuses the index
+    ///         of an entity whose proxy was not removed), or when the AABB is inverted or not
+    ///         finite.
     void insert(entity e, const AABB &aabb, bool is_static);
 
-    // Removes the proxy of `e` and destroys the manifold entities of its pairs. Throws
-    // std::invalid_argument when `e` has no proxy. Not to be called from within update() (e.g.
-    // from a contact_manifold construction listener).
+    /// Removes the proxy of `e` and destroys the manifold entities of its pairs.
+    ///
+    /// Not to be called from within update() (e.g. from a contact_manifold construction
+    /// listener).
+    /// @param registry The registry holding the manifold entities.
+    /// @param e The body.
+    /// @throws std::invalid_argument When `e` has no proxy.
     void remove(registry &registry, entity e);
 
+    /// Whether `e` has a proxy.
+    /// @param e The entity to look for.
     bool contains(entity e) const noexcept;
 
-    // The fattened AABB pairs are found with. Throws std::invalid_argument when `e` has no
-    // proxy.
+    /// The fattened AABB pairs are found with.
+    /// @param e The body.
+    /// @return Its fat AABB in world space (m), valid until the broadphase changes.
+    /// @throws std::invalid_argument When `e` has no proxy.
     const AABB &get_fat_aabb(entity e) const;
 
-    // Asks again whether the pairs of `e` should collide (after its collision_filter or
-    // collision_exclusion changed): destroys its manifolds that the filter now rejects and
-    // looks for new pairs in the next update(). Throws std::invalid_argument when `e` has no
-    // proxy.
+    /// Asks again whether the pairs of `e` should collide, after its collision_filter or
+    /// collision_exclusion changed.
+    ///
+    /// Destroys its manifolds that the filter now rejects and looks for new pairs in the next
+    /// update(). Not to be called from within update().
+    /// @param registry The registry holding the bodies and manifolds.
+    /// @param e The body.
+    /// @throws std::invalid_argument When `e` has no proxy.
     void refilter(registry &registry, entity e);
 
-    // Moves every dynamic proxy to the AABB component of its entity, destroys the manifolds
-    // whose bodies' fat AABBs no longer overlap and creates manifolds for new overlapping pairs
-    // that should collide.
+    /// Moves every dynamic proxy to the AABB component of its entity, destroys the manifolds
+    /// whose bodies' fat AABBs no longer overlap and creates manifolds for new overlapping pairs
+    /// that should collide.
+    /// @param registry The registry holding the bodies' AABB components; manifold entities are
+    ///        created and destroyed in it.
     void update(registry &registry);
 
-    // The manifold entity of the pair, or null.
+    /// The manifold entity of a pair of bodies, in either order.
+    /// @param first One body.
+    /// @param second The other body.
+    /// @return The manifold entity, or null when the bodies have none.
     entity get_manifold(entity first, entity second) const noexcept;
+    /// Number of manifolds (overlapping pairs that should collide).
     std::size_t num_manifolds() const noexcept { return records.size(); }
+    /// Number of proxies, dynamic and static.
     std::size_t num_proxies() const noexcept { return dynamic_proxies.size() + static_proxies.size(); }
 
-    // Calls fn(entity) for each body whose fat AABB intersects `aabb`, dynamic ones first.
-    // fn may return bool: false stops the query.
+    /// Calls `fn(entity)` for each body whose fat AABB intersects `aabb`, dynamic ones first.
+    /// @param aabb The query box in world space (m).
+    /// @param fn Callable taking an entity; it may return bool: false stops the query.
     template<typename Fn>
     void query(const AABB &aabb, Fn &&fn) const;
 
-    // Calls fn(entity) for each body whose fat AABB the segment p0-p1 touches. fn may return a
-    // scalar: the new maximum fraction of the segment (as dynamic_tree::raycast), shared by
-    // both trees.
+    /// Calls `fn(entity)` for each body whose fat AABB the segment p0-p1 touches.
+    /// @param p0 Start of the segment in world space (m).
+    /// @param p1 End of the segment in world space (m).
+    /// @param fn Callable taking an entity. It may return a scalar: the new maximum fraction of
+    ///        the segment (as dynamic_tree::raycast), shared by both trees.
     template<typename Fn>
     void raycast(const vector3 &p0, const vector3 &p1, Fn &&fn) const;
 
+    /// The tree of the dynamic (and kinematic) bodies' proxies.
     const dynamic_tree &get_dynamic_tree() const noexcept { return trees[0]; }
+    /// The tree of the static bodies' proxies.
     const dynamic_tree &get_static_tree() const noexcept { return trees[1]; }
 
 private:

@@ -9,43 +9,64 @@
 
 namespace edyn {
 
-// Inputs of collide(): both shapes' transforms and the distance beyond which no point is
-// reported.
+/// Inputs of collide(): both shapes' transforms and the distance beyond which no point is
+/// reported.
+///
+/// Positions are those of the shapes' origins in world space (m), orientations are unit
+/// quaternions (x y z w). Planes ignore their own position and orientation.
 struct collision_context {
-    vector3 posA{vector3_zero};
-    quaternion ornA{quaternion_identity};
-    vector3 posB{vector3_zero};
-    quaternion ornB{quaternion_identity};
+    vector3 posA{vector3_zero};           ///< Position of shape A in world space (m), zero default.
+    quaternion ornA{quaternion_identity}; ///< Orientation of shape A, identity default.
+    vector3 posB{vector3_zero};           ///< Position of shape B in world space (m), zero default.
+    quaternion ornB{quaternion_identity}; ///< Orientation of shape B, identity default.
+    /// Points whose signed distance exceeds this are not reported (m); 0.02 by default.
     scalar threshold{scalar(0.02)};
 };
 
-// Closest points of two shapes. A manifold holds at most `max_contacts` points; when more are
-// found, the ones spanning the largest area are kept.
+/// Closest points of two shapes, as computed by collide().
+///
+/// Holds at most `max_contacts` points; when more are found, the ones spanning the largest area
+/// are kept. The caller clears it (a default-constructed result is empty) before calling
+/// collide(), which appends.
 struct collision_result {
+    /// Most points a result holds.
     static constexpr std::size_t max_contacts = 4;
 
+    /// One closest point between the two shapes.
     struct collision_point {
-        // Closest point on each shape, in that shape's object space.
+        /// Closest point on shape A, in A's object space (m).
         vector3 pivotA;
+        /// Closest point on shape B, in B's object space (m).
         vector3 pivotB;
-        // World-space unit normal pointing from B towards A: moving A along `normal` by
-        // -distance separates the shapes.
+        /// World-space unit normal pointing from B towards A: moving A along `normal` by
+        /// -distance separates the shapes.
         vector3 normal;
-        // Signed distance along `normal`; negative when the shapes overlap.
+        /// Signed distance along `normal` (m); negative when the shapes overlap.
         scalar distance;
+        /// Closest feature of shape A, when the routine for this pair of shapes provides it
+        /// (not for spheres, planes or polyhedra).
         std::optional<collision_feature> featureA;
+        /// Closest feature of shape B, when provided (as `featureA`).
         std::optional<collision_feature> featureB;
     };
 
+    /// Number of valid entries at the front of `point` (0 by default).
     std::size_t num_points{0};
+    /// The points; only the first `num_points` are meaningful.
     std::array<collision_point, max_contacts> point;
 
-    // Adds a point, keeping at most max_contacts; when full, replaces a point so that the
-    // deepest point is kept and the area spanned by the set grows. Defined in collision/.
+    /// Adds a point, keeping at most `max_contacts`.
+    ///
+    /// A point whose pivot on A or on B lies very near an existing point's (within 1 mm) is merged
+    /// with it: the deeper of the two is kept. When the result is full, a point is replaced so that
+    /// the deepest point is kept and the area spanned by the set grows (nothing changes when no
+    /// replacement grows it).
+    /// @param p The point to add.
     void add_point(const collision_point &p);
 
-    // Exchanges the roles of A and B in every point (pivots, features, normal sign), for pairs
-    // computed as (B, A) by a shared routine.
+    /// Exchanges the roles of A and B in every point (pivots, features, normal sign).
+    ///
+    /// Used for pairs computed as (B, A) by a shared routine.
     void swap();
 };
 

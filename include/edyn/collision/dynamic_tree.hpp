@@ -53,87 +53,127 @@ bool segment_intersects_aabb(const AABB &aabb, const vector3 &p0, const vector3 
 
 } // namespace detail
 
-// Dynamic bounding volume hierarchy over fattened AABBs. Leaves carry an entity payload; nodes
-// live in one contiguous vector with a free list (no allocation per node), and ids are indices
-// into it, stable for a leaf's whole life. Insertion picks the sibling by the surface-area
-// heuristic, and every node on the path up is improved by a surface-area-reducing rotation,
-// which also keeps the height O(log n) for sorted insertion orders (see rotate()).
-//
-// A leaf stores its AABB grown by `margin` on every side (and stretched along the predicted
-// displacement, see move()), so that small motions need no tree update. Queries test the fat
-// AABBs: they may report leaves whose tight AABB does not touch the query box.
+/// Dynamic bounding volume hierarchy over fattened AABBs, the structure behind the broadphase.
+///
+/// Leaves carry an entity payload; nodes live in one contiguous vector with a free list (no
+/// allocation per node), and ids are indices into it, stable for a leaf's whole life. Insertion
+/// picks the sibling by the surface-area heuristic, and every node on the path up is improved by
+/// a surface-area-reducing rotation, which also keeps the height O(log n) for sorted insertion
+/// orders.
+///
+/// A leaf stores its AABB grown by `margin` on every side (and stretched along the predicted
+/// displacement, see move()), so that small motions need no tree update. Queries test the fat
+/// AABBs: they may report leaves whose tight AABB does not touch the query box. Not
+/// thread-safe: const queries may run concurrently, changes may not.
 class dynamic_tree {
 public:
+    /// Identifier of a node: its index in the node array.
     using node_id = std::int32_t;
+    /// The id of no node.
     static constexpr node_id null_node = -1;
-    // Growth of every side of a leaf's AABB, in metres.
+    /// Default growth of every side of a leaf's AABB, in metres.
     static constexpr scalar default_margin = scalar(0.1);
-    // A leaf's AABB is also stretched by this many times the displacement given to move(),
-    // so that a body at constant velocity is reinserted about every other step at most.
+    /// A leaf's AABB is also stretched by this many times the displacement given to move(),
+    /// so that a body at constant velocity is reinserted about every other step at most.
     static constexpr scalar displacement_multiplier = scalar(2);
 
-    // Throws std::invalid_argument when margin is negative or not finite.
+    /// Creates an empty tree.
+    /// @param margin Growth of every side of a leaf's AABB (m).
+    /// @throws std::invalid_argument When `margin` is negative or not finite.
     explicit dynamic_tree(scalar margin = default_margin);
 
-    // Inserts a leaf for `aabb` (stored fattened) and returns its id.
+    /// Inserts a leaf for `aabb` (stored fattened by the margin).
+    /// @param aabb The tight AABB (m); must not be inverted (checked in debug builds only).
+    /// @param payload The entity the leaf stands for.
+    /// @return The new leaf's id.
     node_id create(const AABB &aabb, entity payload);
+    /// Removes a leaf; its id may be reused by a later create().
+    /// @param id A leaf's id (checked in debug builds only).
     void destroy(node_id id);
 
-    // Updates a leaf whose tight AABB is now `aabb`, moving by about `displacement` per step.
-    // The leaf is reinserted only when `aabb` leaves its fat AABB or the fat AABB became much
-    // larger than needed; returns whether it was reinserted (its fat AABB changed).
+    /// Updates a leaf whose tight AABB is now `aabb`, moving by about `displacement` per step.
+    ///
+    /// The leaf is reinserted only when `aabb` leaves its fat AABB or the fat AABB became much
+    /// larger than needed.
+    /// @param id A leaf's id.
+    /// @param aabb The leaf's new tight AABB (m).
+    /// @param displacement Expected motion per step (m), which stretches the fat AABB.
+    /// @return Whether the leaf was reinserted (its fat AABB changed).
     bool move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero);
 
-    // Calls fn(node_id) for each leaf whose fat AABB intersects `aabb`. fn may return bool:
-    // false stops the query.
+    /// Calls `fn(node_id)` for each leaf whose fat AABB intersects `aabb`.
+    /// @param aabb The query box (m); touching counts.
+    /// @param fn Callable taking a node_id; it may return bool: false stops the query.
     template<typename Fn>
     void query(const AABB &aabb, Fn &&fn) const;
 
-    // Calls fn(node_id) for each leaf whose fat AABB is touched by the segment p0-p1, closest
-    // subtrees not guaranteed first. fn may return a scalar: the new maximum fraction of the
-    // segment to consider (e.g. the fraction of a hit on the exact shape); values at or above
-    // the current maximum leave it unchanged and zero or less stops the query.
+    /// Calls `fn(node_id)` for each leaf whose fat AABB is touched by the segment p0-p1, closest
+    /// subtrees not guaranteed first.
+    /// @param p0 Start of the segment (m).
+    /// @param p1 End of the segment (m).
+    /// @param fn Callable taking a node_id. It may return a scalar: the new maximum fraction of
+    ///        the segment to consider (e.g. the fraction of a hit on the exact shape); values at
+    ///        or above the current maximum leave it unchanged and zero or less stops the query.
     template<typename Fn>
     void raycast(const vector3 &p0, const vector3 &p1, Fn &&fn) const;
 
-    // As raycast, with fn returning the new maximum fraction, starting from and leaving in
-    // `max_fraction` the fraction the segment is searched up to (0 when fn stopped it); lets
-    // several trees share one shrinking segment.
+    /// As raycast(), with the maximum fraction kept by the caller, so that several trees can
+    /// share one shrinking segment.
+    /// @param p0 Start of the segment (m).
+    /// @param p1 End of the segment (m).
+    /// @param max_fraction In: the fraction of the segment to search up to. Out: the fraction
+    ///        left (0 when `fn` stopped the query).
+    /// @param fn Callable taking a node_id and returning the new maximum fraction.
     template<typename Fn>
     void raycast_bounded(const vector3 &p0, const vector3 &p1, scalar &max_fraction, Fn &&fn) const;
 
-    // Calls fn(node_id a, node_id b) once for each pair of distinct leaves of this tree whose
-    // fat AABBs intersect, in an order that depends only on the tree's structure.
+    /// Calls `fn(node_id a, node_id b)` once for each pair of distinct leaves of this tree whose
+    /// fat AABBs intersect, in an order that depends only on the tree's structure.
+    /// @param fn Callable taking two node ids.
     template<typename Fn>
     void query_pairs(Fn &&fn) const;
 
-    // Calls fn(node_id this_leaf, node_id other_leaf) for each pair of a leaf of this tree and
-    // a leaf of `other` whose fat AABBs intersect.
+    /// Calls `fn(node_id this_leaf, node_id other_leaf)` for each pair of a leaf of this tree and
+    /// a leaf of `other` whose fat AABBs intersect.
+    /// @param other The other tree.
+    /// @param fn Callable taking a node id of this tree and one of `other`.
     template<typename Fn>
     void query_pairs(const dynamic_tree &other, Fn &&fn) const;
 
+    /// The fattened AABB stored for a leaf.
+    /// @param id A leaf's id (checked in debug builds only).
+    /// @return The fat AABB (m).
     const AABB &get_fat_aabb(node_id id) const noexcept {
         EDYN_ASSERT(is_leaf_id(id), "dynamic_tree: not a leaf");
         return nodes[id].aabb;
     }
 
+    /// The entity a leaf stands for.
+    /// @param id A leaf's id (checked in debug builds only).
+    /// @return The payload given to create().
     entity get_payload(node_id id) const noexcept {
         EDYN_ASSERT(is_leaf_id(id), "dynamic_tree: not a leaf");
         return nodes[id].payload;
     }
 
-    // Height of the root (0 for a single leaf, -1 when empty).
+    /// Height of the root (0 for a single leaf, -1 when empty).
     int height() const noexcept { return root == null_node ? -1 : nodes[root].height; }
+    /// Number of leaves.
     std::size_t size() const noexcept { return leaf_count; }
-    // Every node id, leaf or not, is below this bound.
+    /// Upper bound of the node ids: every node id, leaf or not, is below it.
     std::size_t capacity() const noexcept { return nodes.size(); }
+    /// Whether the tree has no leaves.
     bool empty() const noexcept { return leaf_count == 0; }
+    /// Growth of every side of a leaf's AABB (m), as given to the constructor.
     scalar margin() const noexcept { return fat_margin; }
+    /// Removes every node; all ids become invalid.
     void clear() noexcept;
 
-    // Checks the whole structure: parent links, heights, every internal AABB containing its
-    // children's, leaf count and free list. Returns an empty string when valid, otherwise a
-    // description of the first problem found. Linear time; meant for tests.
+    /// Checks the whole structure: parent links, heights, every internal AABB containing its
+    /// children's, leaf count and free list.
+    ///
+    /// Linear time; meant for tests.
+    /// @return An empty string when valid, otherwise a description of the first problem found.
     std::string validate() const;
 
 private:

@@ -7,13 +7,19 @@
 
 namespace edyn {
 
-// Map from a 64-bit pair key to a 32-bit index, in one flat array (open addressing, linear
-// probing). Unlike a node-based hash map it allocates only when it grows past its capacity, so
-// that pairs found and lost every step in a world that no longer grows cost no allocation.
-// Erasing shifts the following entries of the probe run back, so no tombstones pile up.
+/// Map from a 64-bit pair key to a 32-bit index, in one flat array (open addressing, linear
+/// probing).
+///
+/// Unlike a node-based hash map it allocates only when it grows past its capacity, so
+/// that pairs found and lost every step in a world that no longer grows cost no allocation.
+/// Erasing shifts the following entries of the probe run back, so no tombstones pile up. Used
+/// by the broadphase; not thread-safe.
 class pair_map {
 public:
-    // The value stored for key, or null.
+    /// The value stored for `key`, or null when absent.
+    /// @param key The key to look up.
+    /// @return Pointer to the stored value, valid until the next insertion or erasure; null when
+    ///         `key` is absent.
     [[nodiscard]] std::uint32_t *find(std::uint64_t key) noexcept {
         if (slots.empty()) return nullptr;
         for (auto i = home(key);; i = next(i)) {
@@ -22,12 +28,19 @@ public:
             if (slot.key == key) return &slot.value;
         }
     }
+    /// The value stored for `key`, or null when absent (read-only).
+    /// @param key The key to look up.
+    /// @return Pointer to the stored value, or null.
     [[nodiscard]] const std::uint32_t *find(std::uint64_t key) const noexcept {
         return const_cast<pair_map *>(this)->find(key);
     }
+    /// Whether `key` is present.
+    /// @param key The key to look up.
     [[nodiscard]] bool contains(std::uint64_t key) const noexcept { return find(key) != nullptr; }
 
-    // Sets the value of key, adding it if absent.
+    /// Sets the value of `key`, adding it if absent; may allocate when the table grows.
+    /// @param key The key.
+    /// @param value The value to store for it.
     void insert_or_assign(std::uint64_t key, std::uint32_t value) {
         if (auto *existing = find(key)) {
             *existing = value;
@@ -42,7 +55,9 @@ public:
         ++count;
     }
 
-    // Removes key; returns whether it was there.
+    /// Removes `key`.
+    /// @param key The key to remove.
+    /// @return Whether it was there.
     bool erase(std::uint64_t key) noexcept {
         if (slots.empty()) return false;
         auto i = home(key);
@@ -66,12 +81,14 @@ public:
         return true;
     }
 
+    /// Removes every entry, keeping the allocated capacity.
     void clear() noexcept {
         for (auto &slot : slots)
             slot.used = false;
         count = 0;
     }
 
+    /// Number of entries.
     [[nodiscard]] std::size_t size() const noexcept { return count; }
 
 private:

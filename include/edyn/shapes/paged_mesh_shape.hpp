@@ -6,9 +6,10 @@
 
 namespace edyn {
 
-// A paged triangle mesh (see paged_triangle_mesh) for static and kinematic bodies: large
-// terrain whose pages load on demand. Otherwise as mesh_shape.
+/// A paged triangle mesh shape (see paged_triangle_mesh) for static and kinematic bodies: large
+/// terrain whose pages load on demand. Otherwise as mesh_shape.
 struct paged_mesh_shape {
+    /// The shared paged mesh, usually made by create_paged_triangle_mesh(); must not be null.
     std::shared_ptr<paged_triangle_mesh> trimesh;
 };
 

@@ -16,80 +16,116 @@
 
 namespace edyn {
 
-// The triangles of one page of a paged_triangle_mesh, in the mesh's space.
+/// The triangles of one page of a paged_triangle_mesh, in the mesh's space: the arrays a page
+/// loader keeps or stores for a page.
 struct triangle_mesh_page {
-    std::vector<vector3> vertices;
-    std::vector<std::uint32_t> indices;
-    // Empty, or one per vertex.
+    std::vector<vector3> vertices;      ///< Vertex positions (m).
+    std::vector<std::uint32_t> indices; ///< Three indices into `vertices` per triangle.
+    /// Per-vertex friction coefficients: empty, or one per vertex.
     std::vector<scalar> friction;
+    /// Per-vertex restitution coefficients in [0, 1]: empty, or one per vertex.
     std::vector<scalar> restitution;
-    // Each triangle's active edges (bit i: edge i), as the whole mesh has them.
+    /// Each triangle's active edges (bit i: edge i), as the whole mesh has them.
     std::vector<std::uint8_t> edge_flags;
 };
 
-// Where the pages of a paged_triangle_mesh come from. load() is called on the mesh's loading
-// thread, one page at a time, and may block (on a file, a network); it returns an initialized
-// triangle_mesh, or null when the page cannot be had (the page then stays empty: nothing
-// collides with it, and it is asked for again the next time a body needs it).
+/// Where the pages of a paged_triangle_mesh come from; derive from it to load pages from your
+/// own storage.
+///
+/// load() is called on the mesh's loading thread, one page at a time, and may block (on a file,
+/// a network). make_memory_page_loader() and make_file_page_loader() give ready-made loaders.
 class triangle_mesh_page_loader {
 public:
     virtual ~triangle_mesh_page_loader() = default;
+    /// Loads one page; called on the mesh's background loading thread, never concurrently with
+    /// itself.
+    /// @param page Index of the page.
+    /// @return An initialized triangle_mesh holding the page's triangles, in the same order and
+    ///         count as given to paged_triangle_mesh, or null when the page cannot be had (an
+    ///         exception counts as null). The page then stays empty: nothing collides with it,
+    ///         and it is asked for again the next time a body needs it.
     virtual std::shared_ptr<triangle_mesh> load(std::size_t page) = 0;
 };
 
-// Keeps every page's arrays in memory and builds a page's triangle_mesh (normals, tree) only
-// while it is loaded.
+/// Makes a page loader that keeps every page's arrays in memory and builds a page's
+/// triangle_mesh (normals, tree) only while it is loaded.
+/// @param pages The pages, indexed by page number.
+/// @return The loader, to give to paged_triangle_mesh.
 std::unique_ptr<triangle_mesh_page_loader> make_memory_page_loader(std::vector<triangle_mesh_page> pages);
 
-// Writes every page to its own file in `directory` (which must exist), named
-// page_<index>.edynpage, and reads a page from its file when it is loaded. Throws
-// std::runtime_error when a file cannot be written.
+/// Makes a page loader that writes every page to its own file in `directory` now, named
+/// page_<index>.edynpage, and reads a page from its file when it is loaded.
+/// @param pages The pages, indexed by page number.
+/// @param directory An existing directory.
+/// @return The loader, to give to paged_triangle_mesh.
+/// @throws std::runtime_error When a file cannot be written.
 std::unique_ptr<triangle_mesh_page_loader> make_file_page_loader(const std::vector<triangle_mesh_page> &pages,
                                                                  const std::string &directory);
 
-// A triangle mesh too large to keep in memory whole (a large terrain), split into pages of
-// at most a given number of triangles under a tree of their bounds. The simulation loads the
-// pages that bodies near (their bounds grown by the distance they travel in `lookahead_time`)
-// on a background thread, and unloads those no body has neared for `unload_delay` steps. A
-// body over a page whose load has not finished waits for it: the step completes the load
-// before the body's collision, so no body falls through a page that was late.
-//
-// Triangles are numbered across pages: page p holds triangles first_triangle(p) onwards.
-// Collision features carry that number in `part`. A paged mesh belongs to one world (its
-// loading state is the world's); its triangles behave as triangle_mesh's, edges between pages
-// included.
+/// A triangle mesh too large to keep in memory whole (a large terrain), split into pages of
+/// at most a given number of triangles under a tree of their bounds.
+///
+/// The simulation loads the
+/// pages that bodies near (their bounds grown by the distance they travel in `lookahead_time`)
+/// on a background thread, and unloads those no body has neared for `unload_delay` steps. A
+/// body over a page whose load has not finished waits for it: the step completes the load
+/// before the body's collision, so no body falls through a page that was late.
+///
+/// Triangles are numbered across pages: page p holds triangles first_triangle(p) onwards.
+/// Collision features carry that number in `part`. A paged mesh belongs to one world (its
+/// loading state is the world's); its triangles behave as triangle_mesh's, edges between pages
+/// included. Make one with create_paged_triangle_mesh() and give it to a body as a
+/// paged_mesh_shape.
 class paged_triangle_mesh {
 public:
-    // Seconds of travel ahead of a body whose pages are loaded in advance.
+    /// Seconds of travel ahead of a body whose pages are loaded in advance (s); 0.5 by default.
     scalar lookahead_time{scalar(0.5)};
-    // Steps a page stays loaded once no body needs it.
+    /// Steps a page stays loaded once no body needs it; 60 by default.
     std::uint32_t unload_delay{60};
 
-    // Pages with the given bounds and triangle counts, from `loader`. Prefer
-    // create_paged_triangle_mesh. Throws std::invalid_argument for no pages, mismatched counts
-    // or a null loader.
+    /// Pages with the given bounds and triangle counts, from `loader`. Prefer
+    /// create_paged_triangle_mesh(), which computes all three.
+    /// @param page_aabbs Bounds of each page in the mesh's space (m).
+    /// @param page_triangles Number of triangles of each page.
+    /// @param loader Where the pages come from.
+    /// @throws std::invalid_argument For no pages, mismatched counts or a null loader.
     paged_triangle_mesh(std::vector<AABB> page_aabbs, std::vector<std::size_t> page_triangles,
                         std::unique_ptr<triangle_mesh_page_loader> loader);
+    /// Stops the loading thread, waiting for the page being loaded, if any.
     ~paged_triangle_mesh();
     paged_triangle_mesh(const paged_triangle_mesh &) = delete;
     paged_triangle_mesh &operator=(const paged_triangle_mesh &) = delete;
 
+    /// Number of pages.
     std::size_t num_pages() const noexcept { return pages.size(); }
+    /// Number of triangles of all pages together.
     std::size_t num_triangles() const noexcept { return first_triangles.back(); }
+    /// Number, across pages, of the page's first triangle.
+    /// @param page Index of the page (not checked).
     std::size_t first_triangle(std::size_t page) const noexcept { return first_triangles[page]; }
-    // The page holding triangle `triangle` (numbered across pages).
+    /// The page holding triangle `triangle` (numbered across pages).
     std::size_t page_of_triangle(std::size_t triangle) const noexcept;
+    /// Bounds of all pages, in the mesh's space.
     const AABB &get_aabb() const noexcept { return tree.root_aabb(); }
+    /// Bounds of one page, in the mesh's space.
+    /// @param page Index of the page (not checked).
     const AABB &get_page_aabb(std::size_t page) const noexcept { return pages[page].aabb; }
 
+    /// Whether the page's mesh is in memory. Read on the thread that steps the world.
+    /// @param page Index of the page (not checked).
     bool is_page_loaded(std::size_t page) const noexcept { return pages[page].mesh != nullptr; }
-    // The page's mesh while it is loaded, else null.
+    /// The page's mesh while it is loaded, else null.
+    /// @param page Index of the page (not checked).
     const triangle_mesh *get_page(std::size_t page) const noexcept { return pages[page].mesh.get(); }
+    /// Number of pages whose mesh is in memory.
     std::size_t num_loaded_pages() const noexcept;
+    /// Number of triangles in the pages whose mesh is in memory.
     std::size_t num_loaded_triangles() const noexcept;
 
-    // Calls func(page_index, const triangle_mesh &) for every loaded page whose bounds
-    // overlap `aabb` (mesh space), in a fixed order.
+    /// Calls `func(page_index, const triangle_mesh &)` for every loaded page whose bounds
+    /// overlap `aabb`, in a fixed order.
+    /// @param aabb The query box in the mesh's space (m).
+    /// @param func Callable taking a `std::size_t` page index and the page's mesh.
     template<typename Func>
     void visit_loaded_pages(const AABB &aabb, Func &&func) const {
         tree.visit([&](const AABB &node) { return intersect(node, aabb); },
@@ -98,17 +134,23 @@ public:
                    });
     }
 
-    // The simulation's side, called by the step on the thread that steps the world.
-
-    // Starts loading, in the background, the pages that overlap `region` (mesh space), and
-    // marks them in use at `step`.
+    /// Starts loading, in the background, the pages that overlap `region`, and marks them in use
+    /// at `step`.
+    ///
+    /// This and the three functions below are the simulation's side, called by the step on the
+    /// thread that steps the world.
+    /// @param region The region in the mesh's space (m).
+    /// @param step Number of the current step.
     void request(const AABB &region, std::uint64_t step);
-    // Loads now the pages that overlap `region` and are not loaded, waiting for those being
-    // loaded; marks them in use at `step`.
+    /// Loads now the pages that overlap `region` and are not loaded, waiting for those being
+    /// loaded; marks them in use at `step`. A page whose load fails stays empty for this step.
+    /// @param region The region in the mesh's space (m).
+    /// @param step Number of the current step.
     void require(const AABB &region, std::uint64_t step);
-    // Takes the pages whose background load finished.
+    /// Takes in the pages whose background load finished, making them visible to queries.
     void collect();
-    // Unloads the pages not in use since `step - unload_delay`.
+    /// Unloads the pages not in use since `step - unload_delay`.
+    /// @param step Number of the current step.
     void unload_unused(std::uint64_t step);
 
 private:
@@ -137,14 +179,23 @@ private:
     std::thread thread; // Started with the first load.
 };
 
-// Splits a mesh into pages of at most `max_triangles_per_page` triangles, by median splits of
-// the triangles' centres along the widest axis, and makes a paged mesh of them. Edges keep the
-// activity they have in the whole mesh. With `colors` (one per vertex, as
-// load_tri_mesh_from_obj gives them), red becomes each vertex's friction and green its
-// restitution. With a `directory`, pages are written there and read back when loaded
-// (make_file_page_loader); otherwise they stay in memory (make_memory_page_loader). Throws
-// std::invalid_argument for a page size of 0, colours of the wrong count, or a mesh that
-// triangle_mesh::initialize() refuses (the message names it).
+/// Splits a mesh into pages and makes a paged mesh of them, ready for a paged_mesh_shape.
+///
+/// Pages hold at most `max_triangles_per_page` triangles, found by median splits of the
+/// triangles' centres along the widest axis. Edges keep the activity they have in the whole
+/// mesh. With a `directory`, pages are written there and read back when loaded
+/// (make_file_page_loader()); otherwise they stay in memory (make_memory_page_loader()).
+/// @param vertices Vertex positions in the mesh's space (m).
+/// @param indices Three indices into `vertices` per triangle, counter-clockwise seen from the
+///        front.
+/// @param max_triangles_per_page Most triangles of a page; positive.
+/// @param colors Optional, one per vertex (as load_tri_mesh_from_obj() gives them): red becomes
+///        each vertex's friction and green its restitution.
+/// @param directory Optional existing directory to keep the pages in, as files.
+/// @return The paged mesh, shared.
+/// @throws std::invalid_argument For a page size of 0, colours of the wrong count, or a mesh that
+///         triangle_mesh::initialize() refuses (the message names it).
+/// @throws std::runtime_error When a page file cannot be written.
 std::shared_ptr<paged_triangle_mesh> create_paged_triangle_mesh(const std::vector<vector3> &vertices,
                                                                 const std::vector<std::uint32_t> &indices,
                                                                 std::size_t max_triangles_per_page,

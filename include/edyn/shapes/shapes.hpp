@@ -18,11 +18,12 @@
 
 namespace edyn {
 
-// Every shape a rigid body can have.
+/// Every shape a rigid body can have, e.g. for `rigidbody_def::shape` or rigidbody_set_shape().
 using shapes_variant_t = std::variant<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
                                       polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
-// The same types as a tuple, to iterate over at compile time (e.g. one registry view per shape).
+/// The same types as shapes_variant_t, in the same order, as a tuple, to iterate over at compile
+/// time (e.g. one registry view per shape).
 using shapes_tuple_t = std::tuple<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
                                   polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
@@ -44,25 +45,29 @@ struct variant_index<T, std::variant<Ts...>> {
 };
 } // namespace detail
 
-// Index of a shape type in shapes_variant_t, e.g. to store which component a body's shape is:
-// shapes_variant_t(shape).index() == get_shape_index<decltype(shape)>().
+/// Index of a shape type in shapes_variant_t, e.g. to store which component a body's shape is:
+/// `shapes_variant_t(shape).index() == get_shape_index<decltype(shape)>()`.
+/// @tparam Shape One of the shape types; any other type fails to compile.
 template<typename Shape>
 constexpr std::size_t get_shape_index() noexcept {
     return detail::variant_index<Shape, shapes_variant_t>::value;
 }
 
+/// Number of shape types in shapes_variant_t.
 inline constexpr std::size_t num_shapes = std::variant_size_v<shapes_variant_t>;
 
-// Shapes that only static (and, for meshes, kinematic) bodies may have: no volume or inertia,
-// and no collision between two of them.
+/// Whether `Shape` is one that only static (and, for meshes, kinematic) bodies may have: planes
+/// and meshes, with no volume or inertia, and no collision between two of them.
 template<typename Shape>
 inline constexpr bool is_static_only_shape_v =
     std::is_same_v<Shape, plane_shape> || std::is_same_v<Shape, mesh_shape> ||
     std::is_same_v<Shape, paged_mesh_shape>;
 
-// Matches shapes_variant_t only. Functions overloaded for every shape take the variant through
-// this constraint rather than by conversion, so that a shape type lacking its own overload is a
-// compile error instead of a conversion to the variant and an endless recursion.
+/// Matches shapes_variant_t only.
+///
+/// Functions overloaded for every shape take the variant through this constraint rather than by
+/// conversion, so that a shape type lacking its own overload is a compile error instead of a
+/// conversion to the variant and an endless recursion.
 template<typename T>
 concept shapes_variant = std::same_as<T, shapes_variant_t>;
 

@@ -5,8 +5,11 @@
 
 namespace edyn {
 
+/// Sphere centred at the origin of its object space, a shape for rigid bodies of any kind.
+///
+/// It has no features: collision points and raycasts report none (std::monostate).
 struct sphere_shape {
-    scalar radius;
+    scalar radius; ///< Radius (m); positive and finite (see validate_shape()).
 };
 
 } // namespace edyn
