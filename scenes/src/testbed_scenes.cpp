@@ -67,8 +67,10 @@ door_scene make_hinge_door(registry &registry, const vector3 &origin) {
     def.mass = 20;
     def.shape = box_shape{door_half};
     def.position = origin + vector3{scalar(0.6), scalar(1.05), 0};
-    // Pushed open: it swings to its limit, bounces, and the spring closes it again.
+    // Pushed open, turning about the hinge: it swings to its limit, bounces, and the spring
+    // closes it again.
     def.angvel = {0, 4, 0};
+    def.linvel = {0, 0, -scalar(2.4)};
     scene.door = make_rigidbody(registry, def);
     scene.hinge =
         make_constraint<hinge_constraint>(registry, scene.post, scene.door, [&](hinge_constraint &c) {

@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <chrono>
+#include <cstdio>
 #include <imgui.h>
 
 namespace testbed {
@@ -224,6 +225,7 @@ void app::draw_frame(int width, int height, bool ui) {
         add_cross(*gfx, probe.point, 0.15f, 0.1f, 1, 1);
         add_line(*gfx, probe.point, probe.point + probe.normal, 1, 0.2f, 1);
     }
+    stats.draw_lists_ms = ms_since(start);
     gfx->draw();
     stats.draw_calls = gfx->draw_calls();
     if (with_ui) {
@@ -237,9 +239,11 @@ void app::draw_frame(int width, int height, bool ui) {
     stats.draw_ms = ms_since(start);
 }
 
-void app::run() {
+void app::run(unsigned max_frames) {
     auto last = clock_type::now();
-    while (!glfwWindowShouldClose(window)) {
+    unsigned frames = 0, steps = 0;
+    double physics = 0, draw = 0, lists = 0, total = 0;
+    while (!glfwWindowShouldClose(window) && (max_frames == 0 || frames < max_frames)) {
         auto frame_start = clock_type::now();
         double frame_dt = std::chrono::duration<double>(frame_start - last).count();
         last = frame_start;
@@ -265,7 +269,18 @@ void app::run() {
         draw_frame(fw, fh, ctl.show_panel);
         glfwSwapBuffers(window);
         stats.frame_ms = ms_since(frame_start);
+        ++frames;
+        steps += stats.steps;
+        physics += stats.physics_ms;
+        draw += stats.draw_ms;
+        lists += stats.draw_lists_ms;
+        total += stats.frame_ms;
     }
+    if (frames == 0) return;
+    std::printf("%s: %u frames, %.1f ms a frame (%.0f fps): physics %.1f ms (%u steps, %.2f ms a step), "
+                "drawing %.1f ms (%.1f ms of it building lists, %d draw calls), %zu bodies\n",
+                current->name.c_str(), frames, total / frames, 1000 * frames / total, physics / frames, steps,
+                steps ? physics / steps : 0.0, draw / frames, lists / frames, stats.draw_calls, stats.bodies);
 }
 
 bool app::screenshot(unsigned steps, const std::string &path) {

@@ -23,6 +23,7 @@ namespace testbed {
 struct frame_stats {
     double physics_ms{0};           // inside edyn::update (or the single step)
     double draw_ms{0};              // building the draw lists, drawing and waiting for the GPU
+    double draw_lists_ms{0};        // of which building the instance lists on the CPU
     double frame_ms{0};             // the whole frame, swap included
     unsigned steps{0};              // fixed steps run in the last frame
     double ms_per_step{0};          // physics_ms / steps, of the last frame that stepped
@@ -50,8 +51,9 @@ public:
     app &operator=(const app &) = delete;
 
     void load(const sample &s);
-    // The interactive loop, until the window closes.
-    void run();
+    // The interactive loop, until the window closes or, when max_frames is not 0, for that many
+    // frames; then prints where the time went on average.
+    void run(unsigned max_frames = 0);
     // Runs `steps` fixed steps in sequential mode, draws one frame and writes it to `path`.
     bool screenshot(unsigned steps, const std::string &path);
 

@@ -23,6 +23,8 @@ constexpr std::array<colour, 8> palette{{
 } // namespace
 
 colour body_colour(const edyn::registry &registry, edyn::entity body, bool grey_sleeping) {
+    if (auto *tint = registry.try_get<body_tint>(body); tint && registry.all_of<edyn::static_tag>(body))
+        return {tint->r, tint->g, tint->b};
     if (registry.all_of<edyn::static_tag>(body)) return {0.55f, 0.52f, 0.48f};
     if (grey_sleeping && registry.all_of<edyn::sleeping_tag>(body)) return {0.62f, 0.62f, 0.62f};
     colour c;

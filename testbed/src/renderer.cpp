@@ -1,5 +1,6 @@
 #include "renderer.hpp"
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -45,8 +46,10 @@ void main() {
     float diffuse = max(dot(n, light), 0.0);
     vec3 c = v_colour;
     if (u_checker == 1) {
+        // Squares of a metre, fading out where they would shimmer (smaller than a pixel).
         float k = mod(floor(v_world.x) + floor(v_world.z), 2.0);
-        c *= 0.93 + 0.07 * k;
+        float fade = clamp(1.5 - 2.0 * max(fwidth(v_world.x), fwidth(v_world.z)), 0.0, 1.0);
+        c *= mix(0.965, 0.93 + 0.07 * k, fade);
     }
     out_colour = vec4(c * (0.4 + 0.6 * diffuse), 1.0);
 }
@@ -146,6 +149,7 @@ renderer::~renderer() {
     for (auto &m : meshes) {
         glDeleteVertexArrays(1, &m.vao);
         glDeleteBuffers(1, &m.vbo);
+        glDeleteBuffers(1, &m.ibo);
     }
     for (auto &[key, m] : trimeshes) {
         glDeleteVertexArrays(1, &m.vao);
@@ -159,12 +163,25 @@ renderer::~renderer() {
     glDeleteProgram(line_program);
 }
 
-renderer::gpu_mesh renderer::upload(const std::vector<mesh_vertex> &vertices) {
+renderer::gpu_mesh renderer::upload(const std::vector<mesh_vertex> &triangles) {
+    // Shared vertices are shaded once: a software renderer spends most of a pile's frame there.
+    std::vector<mesh_vertex> vertices;
+    std::vector<unsigned> indices;
+    std::map<std::array<float, 6>, unsigned> seen;
+    for (auto &v : triangles) {
+        auto [it, added] = seen.try_emplace({v.px, v.py, v.pz, v.nx, v.ny, v.nz}, unsigned(vertices.size()));
+        if (added) vertices.push_back(v);
+        indices.push_back(it->second);
+    }
     gpu_mesh m;
-    m.vertex_count = int(vertices.size());
+    m.index_count = int(indices.size());
     glGenVertexArrays(1, &m.vao);
     glGenBuffers(1, &m.vbo);
+    glGenBuffers(1, &m.ibo);
     glBindVertexArray(m.vao);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(),
+                 GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(mesh_vertex)), vertices.data(),
                  GL_STATIC_DRAW);
@@ -215,7 +232,7 @@ void renderer::draw_lit(unsigned vao, int count, int instance_count, bool checke
     if (instance_count < 0) {
         glDrawArrays(GL_TRIANGLES, 0, count);
     } else {
-        glDrawArraysInstanced(GL_TRIANGLES, 0, count, instance_count);
+        glDrawElementsInstanced(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr, instance_count);
     }
     ++last_draw_calls;
 }
@@ -232,7 +249,7 @@ void renderer::draw() {
         glBindBuffer(GL_ARRAY_BUFFER, instance_vbo);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(instance)), list.data(),
                      GL_STREAM_DRAW);
-        draw_lit(meshes[k].vao, meshes[k].vertex_count, int(list.size()), k == std::size_t(mesh_kind::plane));
+        draw_lit(meshes[k].vao, meshes[k].index_count, int(list.size()), k == std::size_t(mesh_kind::plane));
     }
     const instance identity{{0, 0, 0}, {0, 0, 0, 1}, {1, 1, 1}, {1, 1, 1}};
     if (!polyhedra.empty()) {

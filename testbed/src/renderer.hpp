@@ -61,8 +61,8 @@ public:
 
 private:
     struct gpu_mesh {
-        unsigned vao{0}, vbo{0};
-        int vertex_count{0};
+        unsigned vao{0}, vbo{0}, ibo{0};
+        int index_count{0};
     };
     struct gpu_trimesh {
         unsigned vao{0}, vbo{0};

@@ -121,7 +121,7 @@ std::vector<sample> make_samples() {
                      return sample_state{};
                  }});
     s.push_back({"door", "Joints", "A hinged door with limits and a spring that closes it.",
-                 make_camera({0.5f, 1, 0}, 6, 0.6f, 0.4f),
+                 make_camera({0.4f, 1, 0}, 5, 0.9f, 0.35f),
                  with_ground([](auto &r) { sc::make_hinge_door(r); })});
     s.push_back({"slider", "Joints", "Generic-constraint sliders: bouncing on limits, sprung, with friction.",
                  make_camera({0, 1, 1.2f}, 8, 0.3f, 0.5f),

@@ -17,9 +17,9 @@ struct mesh_vertex {
 // Half extents 1.
 std::vector<mesh_vertex> make_box_mesh();
 // Radius 1.
-std::vector<mesh_vertex> make_sphere_mesh(int rings = 12, int segments = 20);
+std::vector<mesh_vertex> make_sphere_mesh(int rings = 8, int segments = 14);
 // Radius 1, from x = -1 to 1, with caps.
-std::vector<mesh_vertex> make_cylinder_mesh(int segments = 20);
+std::vector<mesh_vertex> make_cylinder_mesh(int segments = 16);
 // The square from -1 to 1 in x and z, facing +y.
 std::vector<mesh_vertex> make_quad_mesh();
 // Every face fanned into triangles, flat normals.

@@ -64,7 +64,8 @@ void stats_view(app &a) {
     if (a.settings.mode == edyn::execution_mode::asynchronous) {
         ImGui::TextDisabled("(asynchronous: the steps run on the worker thread)");
     }
-    ImGui::Text("Step %.2f ms, %d draw calls", st.ms_per_step, st.draw_calls);
+    ImGui::Text("Step %.2f ms; drawing: lists %.2f ms, %d draw calls", st.ms_per_step, st.draw_lists_ms,
+                st.draw_calls);
     ImGui::Text("Bodies %zu, manifolds %zu, contact points %zu", st.bodies, st.manifolds, st.contact_points);
     ImGui::Text("Islands %zu, sleeping %zu", st.islands, st.sleeping_islands);
     std::vector<float> history(st.step_history.begin(), st.step_history.end());
