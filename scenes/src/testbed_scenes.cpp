@@ -69,8 +69,8 @@ door_scene make_hinge_door(registry &registry, const vector3 &origin) {
     def.position = origin + vector3{scalar(0.6), scalar(1.05), 0};
     // Pushed open, turning about the hinge: it swings to its limit, bounces, and the spring
     // closes it again.
-    def.angvel = {0, 4, 0};
-    def.linvel = {0, 0, -scalar(2.4)};
+    def.angvel = {0, 6, 0};
+    def.linvel = {0, 0, -scalar(3.6)};
     scene.door = make_rigidbody(registry, def);
     scene.hinge =
         make_constraint<hinge_constraint>(registry, scene.post, scene.door, [&](hinge_constraint &c) {
@@ -81,7 +81,7 @@ door_scene make_hinge_door(registry &registry, const vector3 &origin) {
             c.angle_max = to_radians(100);
             c.limit_restitution = scalar(0.3);
             c.stiffness = 10;
-            c.damping = scalar(1.5);
+            c.damping = 4;
         });
     exclude_collision(registry, scene.post, scene.door);
     return scene;
@@ -188,7 +188,7 @@ void drive_vehicle(registry &registry, const vehicle_scene &vehicle, scalar thro
     }
     if (throttle == 0) return;
     // Drive: a torque about each rear wheel's axle, applied as a couple of opposite impulses.
-    const scalar torque = 900;
+    const scalar torque = 600;
     for (unsigned i = 2; i < 4; ++i) {
         auto wheel = vehicle.wheels[i];
         auto &orn = registry.get<orientation>(wheel);

@@ -284,16 +284,30 @@ void app::run(unsigned max_frames) {
 }
 
 bool app::screenshot(unsigned steps, const std::string &path) {
-    run_steps(*registry, state, steps);
+    stats.physics_ms = 0;
+    run_steps(*registry, state, steps, [&](double ms) {
+        stats.physics_ms += ms;
+        stats.step_history.push_back(float(ms));
+        if (stats.step_history.size() > history_length) stats.step_history.pop_front();
+    });
+    // The panel shows a frame of 60 Hz: one step, of the average time.
+    stats.ms_per_step = steps ? stats.physics_ms / steps : 0;
+    stats.physics_ms = stats.ms_per_step;
+    stats.steps = steps ? 1 : 0;
     gather_stats();
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
-    if (with_ui) {
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
+    // ImGui sizes a new window in its first frame and shows it from the second; the third shows
+    // the drawing time of a frame after the first (whose time includes compiling shaders).
+    for (int frame = 0; frame < (with_ui ? 3 : 1); ++frame) {
+        if (with_ui) {
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+        }
+        draw_frame(w, h, with_ui);
+        stats.frame_ms = stats.physics_ms + stats.draw_ms;
     }
-    draw_frame(w, h, with_ui);
     return write_screenshot(path, w, h);
 }
 

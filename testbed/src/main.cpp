@@ -15,6 +15,7 @@ struct options {
     std::string scene{"pyramid"};
     unsigned steps{0};
     unsigned frames{0};
+    std::string mode{"sequential"};
     std::string screenshot;
     int width{0}, height{0};
     bool ui{false};
@@ -86,6 +87,8 @@ int main(int argc, char **argv) {
     cli.add_option("--width", opt.width, "window or image width in pixels")->check(CLI::Range(64, 8192));
     cli.add_option("--height", opt.height, "window or image height in pixels")->check(CLI::Range(64, 8192));
     cli.add_option("--frames", opt.frames, "in a window: quit after this many frames and print the timings");
+    cli.add_option("--mode", opt.mode, "in a window: execution mode to start in")
+        ->check(CLI::IsMember({"sequential", "multithreaded", "asynchronous"}));
     cli.add_flag("--ui", opt.ui, "with --screenshot: draw the panel too");
     cli.add_flag("--list", opt.list, "print the samples and exit");
     try {
@@ -117,6 +120,10 @@ int main(int argc, char **argv) {
     int status = 0;
     try {
         testbed::app app(window, !off_screen || opt.ui);
+        // Screenshots are always sequential: deterministic, so that the check can re-run them.
+        if (!off_screen && opt.mode == "multithreaded")
+            app.settings.mode = edyn::execution_mode::sequential_multithreaded;
+        if (!off_screen && opt.mode == "asynchronous") app.settings.mode = edyn::execution_mode::asynchronous;
         app.load(*sample);
         if (off_screen) {
             status = app.screenshot(opt.steps, opt.screenshot) ? 0 : 1;

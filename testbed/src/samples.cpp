@@ -1,4 +1,5 @@
 #include "samples.hpp"
+#include <chrono>
 #include <edyn_scenes/scenes.hpp>
 
 namespace testbed {
@@ -97,7 +98,7 @@ std::vector<sample> make_samples() {
                      return sample_state{};
                  }});
     s.push_back({"pile", "Piles", "1,024 boxes, spheres, capsules, cylinders and rocks dropped in a heap.",
-                 make_camera({0, 3, 0}, 45, 0.6f, 0.5f),
+                 make_camera({0, 2, 0}, 36, 0.6f, 0.45f),
                  with_ground([](auto &r) { sc::make_pile(r, 1024); })});
     s.push_back({"shapes", "Piles", "One body of every shape, compounds included.",
                  make_camera({0, 1, 1.5f}, 12, 0.2f, 0.35f),
@@ -140,11 +141,16 @@ std::vector<sample> make_samples() {
 
 } // namespace
 
-void run_steps(edyn::registry &registry, sample_state &state, unsigned steps) {
+void run_steps(edyn::registry &registry, sample_state &state, unsigned steps,
+               const std::function<void(double)> &after_step) {
     auto dt = float(edyn::get_fixed_dt(registry));
     for (unsigned i = 0; i < steps; ++i) {
         if (state.on_frame) state.on_frame(registry, {}, dt);
+        auto start = std::chrono::steady_clock::now();
         edyn::step_simulation(registry);
+        if (after_step)
+            after_step(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
 }
 

@@ -41,7 +41,9 @@ std::string sample_names();
 
 // Runs `steps` fixed steps one by one, calling the sample's frame hook with no input before
 // each: how screenshots and their check advance a sample, identically.
-void run_steps(edyn::registry &registry, sample_state &state, unsigned steps);
+// `after_step`, when given, gets each step's time in milliseconds.
+void run_steps(edyn::registry &registry, sample_state &state, unsigned steps,
+               const std::function<void(double)> &after_step = {});
 
 // Marks a body to be drawn in a colour of its own instead of the palette (billiard balls).
 struct body_tint {

@@ -60,22 +60,23 @@ void stats_view(app &a) {
     auto &st = a.stats;
     double fps = st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0;
     ImGui::Text("Frame %.1f ms (%.0f fps)", st.frame_ms, fps);
-    ImGui::Text("Physics %.2f ms (%u steps), drawing %.2f ms", st.physics_ms, st.steps, st.draw_ms);
+    ImGui::Text("Physics %.2f ms (%u steps, %.2f ms each)", st.physics_ms, st.steps, st.ms_per_step);
+    ImGui::Text("Drawing %.2f ms (lists %.2f ms, %d calls)", st.draw_ms, st.draw_lists_ms, st.draw_calls);
     if (a.settings.mode == edyn::execution_mode::asynchronous) {
         ImGui::TextDisabled("(asynchronous: the steps run on the worker thread)");
     }
-    ImGui::Text("Step %.2f ms; drawing: lists %.2f ms, %d draw calls", st.ms_per_step, st.draw_lists_ms,
-                st.draw_calls);
-    ImGui::Text("Bodies %zu, manifolds %zu, contact points %zu", st.bodies, st.manifolds, st.contact_points);
-    ImGui::Text("Islands %zu, sleeping %zu", st.islands, st.sleeping_islands);
+    ImGui::Text("Bodies %zu, manifolds %zu", st.bodies, st.manifolds);
+    ImGui::Text("Contact points %zu, islands %zu (%zu asleep)", st.contact_points, st.islands,
+                st.sleeping_islands);
     std::vector<float> history(st.step_history.begin(), st.step_history.end());
     float top = 1;
     for (auto v : history)
         top = std::max(top, v);
     char label[32];
     std::snprintf(label, sizeof label, "max %.1f ms", double(top));
-    ImGui::PlotLines("##ms", history.data(), int(history.size()), 0, label, 0, top * 1.1f, ImVec2(-1, 70));
-    ImGui::TextDisabled("ms per step, last %zu frames", history.size());
+    ImGui::PlotLines("##ms", history.data(), int(history.size()), 0, label, 0, top * 1.1f,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 60));
+    ImGui::TextDisabled("ms per step, last %zu steps", history.size());
 }
 
 void draw_options(app &a) {
@@ -104,13 +105,12 @@ void draw_options(app &a) {
 
 void draw_panel(app &a) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("edyn testbed (Tab hides)");
     if (auto *s = a.current_sample()) {
         ImGui::TextWrapped("%s: %s", s->name.c_str(), s->description.c_str());
         if (!a.current_state().help.empty()) ImGui::TextWrapped("%s", a.current_state().help.c_str());
     }
-    if (ImGui::CollapsingHeader("Samples", ImGuiTreeNodeFlags_DefaultOpen)) sample_list(a);
     if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) time_controls(a);
     if (ImGui::CollapsingHeader("Performance", ImGuiTreeNodeFlags_DefaultOpen)) stats_view(a);
     if (ImGui::CollapsingHeader("Settings")) settings_controls(a);
@@ -120,6 +120,14 @@ void draw_panel(app &a) {
                            "Wheel: zoom. B: shoot a ball. P pause, S step, R reset, M slow motion, "
                            "Tab panel, Esc quit.");
     }
+    ImGui::End();
+
+    // The samples in a window of their own at the right edge.
+    auto &io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
+    ImGui::SetNextWindowSize(ImVec2(180, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Samples");
+    sample_list(a);
     ImGui::End();
 }
 
