@@ -19,6 +19,7 @@ struct options {
     std::string screenshot;
     int width{0}, height{0};
     bool ui{false};
+    bool debug{false};
     bool list{false};
 };
 
@@ -90,6 +91,7 @@ int main(int argc, char **argv) {
     cli.add_option("--mode", opt.mode, "in a window: execution mode to start in")
         ->check(CLI::IsMember({"sequential", "multithreaded", "asynchronous"}));
     cli.add_flag("--ui", opt.ui, "with --screenshot: draw the panel too");
+    cli.add_flag("--debug", opt.debug, "start with contacts, normals, AABBs and islands drawn");
     cli.add_flag("--list", opt.list, "print the samples and exit");
     try {
         cli.parse(argc, argv);
@@ -124,6 +126,7 @@ int main(int argc, char **argv) {
         if (!off_screen && opt.mode == "multithreaded")
             app.settings.mode = edyn::execution_mode::sequential_multithreaded;
         if (!off_screen && opt.mode == "asynchronous") app.settings.mode = edyn::execution_mode::asynchronous;
+        if (opt.debug) app.ctl.debug = {true, true, true, true, true};
         app.load(*sample);
         if (off_screen) {
             status = app.screenshot(opt.steps, opt.screenshot) ? 0 : 1;
