@@ -51,14 +51,41 @@ bool sight_hits(const edyn::registry &registry, const testbed::orbit_camera &cam
 
 } // namespace
 
+// Every sample builds and runs `steps` steps with its bodies' positions finite and none fallen
+// far through the floor.
+int check_all_samples(unsigned steps) {
+    int failures = 0;
+    for (auto &s : testbed::all_samples()) {
+        testbed::sample_state state;
+        auto registry = testbed::make_world(s, {}, state);
+        testbed::run_steps(*registry, state, steps);
+        unsigned bodies = 0, bad = 0;
+        for (auto body : registry->view<edyn::dynamic_tag>()) {
+            auto &p = registry->get<edyn::position>(body);
+            ++bodies;
+            bad += !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.y > -5);
+        }
+        std::printf("%-16s %5u bodies, %u out of place after %u steps\n", s.name.c_str(), bodies, bad, steps);
+        failures += bodies == 0 || bad > 0;
+    }
+    return failures == 0 ? 0 : 1;
+}
+
 int main(int argc, char **argv) {
     std::string scene, path;
     unsigned steps = 0;
+    bool all = false;
     CLI::App cli{"edyn-testbed-check: a testbed screenshot against the physics"};
-    cli.add_option("--scene", scene, "the sample of the screenshot")->required();
+    cli.add_option("--scene", scene, "the sample of the screenshot");
     cli.add_option("--steps", steps, "the steps it was taken after")->required();
-    cli.add_option("--image", path, "the PNG file")->required();
+    cli.add_option("--image", path, "the PNG file");
+    cli.add_flag("--all-samples", all, "no picture: run every sample for --steps and check its bodies");
     CLI11_PARSE(cli, argc, argv);
+    if (all) return check_all_samples(steps);
+    if (scene.empty() || path.empty()) {
+        std::fprintf(stderr, "--scene and --image are needed (or --all-samples)\n");
+        return 2;
+    }
 
     auto *sample = testbed::find_sample(scene);
     if (!sample) {

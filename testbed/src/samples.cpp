@@ -24,12 +24,14 @@ std::function<sample_state(edyn::registry &)> with_ground(Fn fn) {
     };
 }
 
-// A billiard ball hit by anything flashes: listeners of contact_started get the manifold.
+// A billiard ball hit by another flashes: listeners of contact_started get the manifold.
 void flash_on_contact(edyn::registry &registry, edyn::entity manifold_entity) {
+    // Ball on ball only: every ball starts in contact with the cloth.
     auto &manifold = registry.get<edyn::contact_manifold>(manifold_entity);
-    for (auto body : manifold.body) {
-        if (auto *flash = registry.try_get<body_flash>(body)) flash->time_left = 0.3f;
-    }
+    if (!registry.all_of<body_flash>(manifold.body[0]) || !registry.all_of<body_flash>(manifold.body[1]))
+        return;
+    for (auto body : manifold.body)
+        registry.get<body_flash>(body).time_left = 0.3f;
 }
 
 sample_state build_billiards(edyn::registry &registry) {
