@@ -23,12 +23,14 @@ cmake --build build-release -j "$(nproc)" --target edyn-demo
 # No display: pictures instead of a window, where the testbed and an X server are available.
 if command -v xvfb-run >/dev/null && cmake --build build-release -j "$(nproc)" --target edyn-testbed >/dev/null; then
   mkdir -p build-release/demo
+  echo "demo.sh: no display, so the testbed draws its pictures off-screen:"
   for scene in pyramid ragdolls; do
-    xvfb-run -a "$testbed" --scene "$scene" --steps 90 --screenshot "build-release/demo/$scene.png" >/dev/null
+    if xvfb-run -a "$testbed" --scene "$scene" --steps 90 --screenshot "build-release/demo/$scene.png" >/dev/null; then
+      echo "  $root/build-release/demo/$scene.png"
+    else
+      echo "  $scene: xvfb-run or the testbed failed, no picture" >&2
+    fi
   done
-  echo "demo.sh: no display, so the testbed drew its pictures off-screen:"
-  echo "  $root/build-release/demo/pyramid.png"
-  echo "  $root/build-release/demo/ragdolls.png"
   echo "  (run scripts/demo.sh on a desktop to open edyn-testbed)"
 else
   echo "demo.sh: no display and no xvfb-run or testbed build: no screenshots written"
