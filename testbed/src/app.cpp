@@ -265,6 +265,11 @@ void app::run(unsigned max_frames) {
         glfwGetFramebufferSize(window, &fw, &fh);
         if (w > 0 && h > 0) handle_mouse(w, h);
         step_physics(frame_dt);
+        if (state.follow != edyn::null && registry->valid(state.follow)) {
+            // Ease towards the followed body so that the view does not shake with it.
+            edyn::vector3 at = registry->get<edyn::present_position>(state.follow);
+            camera.target += (at - camera.target) * edyn::scalar(std::min(1.0, frame_dt * 4));
+        }
         gather_stats();
         draw_frame(fw, fh, ctl.show_panel);
         glfwSwapBuffers(window);

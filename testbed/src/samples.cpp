@@ -76,6 +76,7 @@ sample_state build_vehicle(edyn::registry &registry) {
         edyn::scenes::drive_vehicle(reg, vehicle, input.throttle, input.steering, dt);
     };
     state.help = "Drive with the arrow keys (up/down: throttle, left/right: steer).";
+    state.follow = vehicle.chassis;
     return state;
 }
 

@@ -23,6 +23,8 @@ struct sample_input {
 struct sample_state {
     std::function<void(edyn::registry &, const sample_input &, float dt)> on_frame;
     std::string help; // shown in the panel, e.g. the vehicle's keys
+    // A body the camera's target follows (the vehicle), or null.
+    edyn::entity follow{edyn::null};
 };
 
 struct sample {
