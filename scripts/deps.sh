@@ -14,6 +14,7 @@ packages=(
   libtinyobjloader-dev
   clang libclang-rt-14-dev
   doxygen
+  libglfw3-dev libimgui-dev libstb-dev libgl-dev xvfb xauth libgl1-mesa-dri
 )
 
 missing=()

@@ -17,7 +17,7 @@ ctest_args=()
 # Sanitizer builds cover the library and its tests; the benchmarks (with Bullet) and the demo
 # are built and smoke-tested by the normal build, which keeps CI within its time limit; so is the
 # API reference (docs.reference).
-sanitized=(-DEDYN_BUILD_BENCH=OFF -DEDYN_BUILD_EXAMPLES=OFF -DEDYN_BUILD_DOCS=OFF)
+sanitized=(-DEDYN_BUILD_BENCH=OFF -DEDYN_BUILD_EXAMPLES=OFF -DEDYN_BUILD_DOCS=OFF -DEDYN_BUILD_TESTBED=OFF)
 werror=${CI:+ON}
 for arg in "$@"; do
   case "$arg" in

@@ -1,6 +1,7 @@
 #ifndef EDYN_SCENES_SCENES_HPP
 #define EDYN_SCENES_SCENES_HPP
 
+#include <array>
 #include <cstdint>
 #include <edyn/edyn.hpp>
 #include <functional>
@@ -157,6 +158,58 @@ bridge_scene make_bridge(registry &registry, unsigned planks, scalar plank_lengt
 std::vector<ragdoll_entities> make_ragdoll_pile(registry &registry, unsigned count, unsigned columns = 2,
                                                 scalar height = scalar(0.5),
                                                 const vector3 &origin = vector3_zero);
+
+// Billiards on a static table 4 m by 2 m (its top at y = 0.8) with rails of restitution 0.8:
+// fifteen balls of radius 0.1 m racked in a triangle and a cue ball rolling into them at
+// `cue_speed` along +x. Ball on ball restitution is 0.95.
+struct billiards_scene {
+    entity table{null};
+    std::vector<entity> rails;
+    std::vector<entity> balls; // the rack, then the cue ball
+    entity cue_ball{null};
+};
+billiards_scene make_billiards(registry &registry, scalar cue_speed = 4);
+
+// A door (1 m by 2 m, 20 kg) on a hinge about y to a static post at `origin`, pushed open: its
+// hinge has limits at +/-100 degrees with restitution 0.3 and a damped spring towards closed.
+struct door_scene {
+    entity post{null};
+    entity door{null};
+    entity hinge{null};
+};
+door_scene make_hinge_door(registry &registry, const vector3 &origin = vector3_zero);
+
+// Three blocks on static rails along x, each held by a generic constraint free along x within
+// +/-1.5 m and locked otherwise, launched at 4 m/s: the first bounces between the limits, the
+// second is pulled back by a spring, the third is slowed by friction. Rails 1.2 m apart along z.
+struct slider_scene {
+    std::vector<entity> rails;
+    std::vector<entity> blocks;
+    std::vector<entity> joints;
+};
+slider_scene make_sliders(registry &registry, const vector3 &origin = vector3_zero);
+
+// A car: a 600 kg box chassis, four wheels (cylinders of radius 0.4 about x) hinged to hubs, and
+// each hub held to the chassis by a generic constraint free only up and down (the suspension: a
+// damped spring within +/-0.2 m); the front hubs also turn about y, towards the rest angle that
+// drive_vehicle sets. Index 0 and 1 are the front wheels (towards -z), 0 and 2 on the left (-x).
+struct vehicle_scene {
+    entity chassis{null};
+    std::array<entity, 4> hubs{};
+    std::array<entity, 4> wheels{};
+    std::array<entity, 4> suspension{};
+    std::array<entity, 4> axles{};
+};
+vehicle_scene make_vehicle(registry &registry, const vector3 &origin = vector3_zero);
+// Steering in [-1, 1] (positive turns left) and throttle in [-1, 1] (positive drives towards -z,
+// as a torque on the rear wheels over `dt` seconds). Call before each step or update.
+void drive_vehicle(registry &registry, const vehicle_scene &vehicle, scalar throttle, scalar steering,
+                   scalar dt);
+
+// One body of each convex shape (box, sphere, capsule, cylinder, polyhedron) in a row along x,
+// and three compounds behind them (a dumbbell, a table, an L of boxes and a capsule), dropped
+// from 2 m above `origin`. Returns them in that order.
+std::vector<entity> make_shape_gallery(registry &registry, const vector3 &origin = vector3_zero);
 
 } // namespace edyn::scenes
 
