@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -115,6 +116,20 @@ TEST(parallel_for, rejects_a_zero_grain_and_a_reversed_interval) {
     } catch (const std::invalid_argument &e) {
         EXPECT_NE(std::string(e.what()).find("parallel_for"), std::string::npos) << e.what();
     }
+}
+
+TEST(parallel_for, without_a_scheduler_rejects_a_zero_grain_and_a_reversed_interval) {
+    auto *none = static_cast<task_scheduler *>(nullptr);
+    int calls = 0;
+    auto count = [&](int) { ++calls; };
+    EXPECT_THROW(parallel_for(none, 0, 10, 0, count), std::invalid_argument);
+    try {
+        parallel_for(none, 10, 3, 1, count);
+        ADD_FAILURE() << "no exception for first > last without a scheduler";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("parallel_for"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(calls, 0);
 }
 
 namespace {
