@@ -1,7 +1,9 @@
 // make_constraint: bodies and fields are validated before anything is created.
 #include <edyn/edyn.hpp>
 #include <gtest/gtest.h>
+#include <limits>
 #include <string>
+#include <utility>
 
 using namespace edyn;
 
@@ -140,4 +142,26 @@ TEST_F(make_constraint_test, constraints_made_before_attach_join_islands) {
     EXPECT_EQ(r.get<island_resident>(x).island_entity, r.get<island_resident>(y).island_entity);
     EXPECT_TRUE(r.all_of<island_resident>(c));
     detach(r);
+}
+
+TEST_F(make_constraint_test, cvjoint_refuses_a_twist_locked_at_infinity) {
+    const auto inf = std::numeric_limits<scalar>::infinity();
+    for (auto limit : {inf, -inf}) {
+        expect_rejected(
+            [&] {
+                make_constraint<cvjoint_constraint>(reg, a, b, [&](cvjoint_constraint &c) {
+                    c.twist_min = limit;
+                    c.twist_max = limit;
+                });
+            },
+            {"make_constraint<cvjoint_constraint>", "twist_min", "finite", limit > 0 ? "inf" : "-inf"});
+    }
+    // Apart, infinite limits are simply not enforced: free, or limited on one side only.
+    for (auto [lo, hi] : {std::pair{-inf, inf}, std::pair{-inf, scalar(0.5)}, std::pair{scalar(-0.5), inf}}) {
+        auto e = make_constraint<cvjoint_constraint>(reg, a, b, [&](cvjoint_constraint &c) {
+            c.twist_min = lo;
+            c.twist_max = hi;
+        });
+        EXPECT_TRUE(reg.all_of<cvjoint_constraint>(e)) << "limits " << lo << ", " << hi;
+    }
 }
