@@ -165,3 +165,22 @@ TEST_F(make_constraint_test, cvjoint_refuses_a_twist_locked_at_infinity) {
         EXPECT_TRUE(reg.all_of<cvjoint_constraint>(e)) << "limits " << lo << ", " << hi;
     }
 }
+
+TEST_F(make_constraint_test, gravity_refuses_bodies_that_are_not_dynamic) {
+    rigidbody_def def;
+    def.shape = sphere_shape{scalar(0.5)};
+    def.position = {0, 5, 0};
+    def.kind = rigidbody_kind::rb_static;
+    auto ground = make_rigidbody(reg, def);
+    def.position = {0, -5, 0};
+    def.kind = rigidbody_kind::rb_kinematic;
+    auto mover = make_rigidbody(reg, def);
+    expect_rejected([&] { make_constraint<gravity_constraint>(reg, ground, a); },
+                    {"make_constraint<gravity_constraint>", "body[0]", "dynamic"});
+    expect_rejected([&] { make_constraint<gravity_constraint>(reg, a, mover); },
+                    {"make_constraint<gravity_constraint>", "body[1]", "dynamic"});
+    auto e = make_constraint<gravity_constraint>(reg, a, b);
+    EXPECT_TRUE(reg.all_of<gravity_constraint>(e));
+    // Other constraints still accept static bodies.
+    EXPECT_NO_THROW(make_constraint<point_constraint>(reg, ground, a));
+}
