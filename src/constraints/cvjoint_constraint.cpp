@@ -26,6 +26,13 @@ void validate_constraint(const cvjoint_constraint &c) {
                                "must not exceed twist_max, got " + std::to_string(c.twist_min) + " > " +
                                    std::to_string(c.twist_max));
     }
+    // Equal limits lock the twist at that angle, which must then be finite; apart, an infinite
+    // limit is simply not enforced (the pair -inf, +inf leaves the twist free).
+    if (c.twist_min == c.twist_max && !std::isfinite(c.twist_min)) {
+        throw_constraint_error(type, "twist_min",
+                               "must be finite when equal to twist_max (a locked twist), got " +
+                                   std::to_string(c.twist_min));
+    }
     check_constraint_unit_interval(type, "twist_restitution", c.twist_restitution);
     check_constraint_non_negative(type, "twist_friction_torque", c.twist_friction_torque);
     check_constraint_non_negative(type, "twist_damping", c.twist_damping);

@@ -15,7 +15,7 @@ std::string describe(entity e) {
 } // namespace
 
 void validate_constraint_bodies(const registry &registry, const char *type, entity body0, entity body1,
-                                bool allow_external) {
+                                bool allow_external, bool require_dynamic) {
     const entity bodies[2]{body0, body1};
     const char *fields[2]{"body[0]", "body[1]"};
     for (int i = 0; i < 2; ++i) {
@@ -28,6 +28,12 @@ void validate_constraint_bodies(const registry &registry, const char *type, enti
             throw_constraint_error(type, fields[i],
                                    std::string("must be a rigid body") +
                                        (allow_external ? " or an external entity" : "") + ", got " +
+                                       describe(bodies[i]));
+        }
+        if (require_dynamic && !registry.all_of<dynamic_tag>(bodies[i])) {
+            throw_constraint_error(type, fields[i],
+                                   "must be a dynamic rigid body (both bodies must be dynamic: static and "
+                                   "kinematic bodies have no finite mass to attract with), got " +
                                        describe(bodies[i]));
         }
     }

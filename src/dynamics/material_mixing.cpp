@@ -31,14 +31,7 @@ void insert_material_mixing(registry &registry, material_id_type id0, material_i
     };
     if (id0 == invalid_material_id || id1 == invalid_material_id)
         fail("material ids must not be invalid_material_id");
-    if (!(mixed.friction >= 0) || !std::isfinite(mixed.friction))
-        fail("friction must be in [0, inf), got " + std::to_string(mixed.friction));
-    if (!(mixed.restitution >= 0 && mixed.restitution <= 1))
-        fail("restitution must be in [0, 1], got " + std::to_string(mixed.restitution));
-    if (!(mixed.roll_friction >= 0))
-        fail("roll_friction must be non-negative, got " + std::to_string(mixed.roll_friction));
-    if (!(mixed.spin_friction >= 0))
-        fail("spin_friction must be non-negative, got " + std::to_string(mixed.spin_friction));
+    validate_material("insert_material_mixing", "mixed", mixed);
     if (id0 > id1) std::swap(id0, id1);
     registry.ctx().emplace<material_mix_table>().pairs[{id0, id1}] = mixed;
 }

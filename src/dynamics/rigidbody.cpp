@@ -50,19 +50,6 @@ void check_orientation(const char *function, const quaternion &q) {
     }
 }
 
-void check_material(const char *function, const material &m) {
-    if (!(m.friction >= 0) || !std::isfinite(m.friction))
-        fail(function, "material.friction", "must be in [0, inf), got " + str(m.friction));
-    if (!(m.restitution >= 0 && m.restitution <= 1))
-        fail(function, "material.restitution", "must be in [0, 1], got " + str(m.restitution));
-    if (!(m.roll_friction >= 0) || !std::isfinite(m.roll_friction))
-        fail(function, "material.roll_friction", "must be in [0, inf), got " + str(m.roll_friction));
-    if (!(m.spin_friction >= 0) || !std::isfinite(m.spin_friction))
-        fail(function, "material.spin_friction", "must be in [0, inf), got " + str(m.spin_friction));
-    if (!(m.stiffness > 0)) fail(function, "material.stiffness", "must be positive, got " + str(m.stiffness));
-    if (!(m.damping >= 0)) fail(function, "material.damping", "must be non-negative, got " + str(m.damping));
-}
-
 void check_mass(const char *function, scalar mass) {
     if (!(mass > 0) || !std::isfinite(mass))
         fail(function, "mass", "must be positive and finite for a dynamic body, got " + str(mass));
@@ -219,7 +206,7 @@ void validate_rigidbody_def(const rigidbody_def &def) {
     check_finite(fn, "angvel", def.angvel);
     if (def.gravity) check_gravity(fn, *def.gravity);
     if (def.center_of_mass) check_finite(fn, "center_of_mass", *def.center_of_mass);
-    if (def.material) check_material(fn, *def.material);
+    if (def.material) validate_material(fn, "material", *def.material);
     if (def.restitution) {
         if (!def.material) fail(fn, "restitution", "is set on a sensor, which has no material");
         if (!(*def.restitution >= 0 && *def.restitution <= 1))

@@ -66,7 +66,8 @@ void client_link_asset(registry &registry, entity asset_entity) {
     for (auto &[index, remote] : asset.members) {
         auto it = ref.entities.find(index);
         ctx.unlinked_members.erase(remote);
-        if (it == ref.entities.end() || !registry.valid(it->second)) continue;
+        // A null member (from the server's bytes) maps nothing.
+        if (remote == null || it == ref.entities.end() || !registry.valid(it->second)) continue;
         auto local = it->second;
         if (auto previous = ctx.local_to_remote.find(local); previous != null)
             ctx.remote_to_local.erase(previous);

@@ -78,6 +78,8 @@ server_context &get_server(registry &registry, const char *function) {
     return *ctx;
 }
 
+bool valid_snapshot_rate(double rate) noexcept { return rate > 0 && std::isfinite(rate); }
+
 remote_client &get_client(registry &registry, entity client, const char *function) {
     auto *rc = registry.valid(client) ? registry.try_get<remote_client>(client) : nullptr;
     if (!rc || !registry.all_of<server_client_state>(client))
@@ -470,11 +472,21 @@ entity server_make_client(registry &registry) {
 }
 
 void server_set_client_round_trip_time(registry &registry, entity client, double rtt) {
+    get_server(registry, "server_set_client_round_trip_time");
     auto &rc = get_client(registry, client, "server_set_client_round_trip_time");
     if (!(rtt >= 0) || !std::isfinite(rtt))
         throw std::invalid_argument("server_set_client_round_trip_time: rtt must be finite and >= 0, got " +
                                     std::to_string(rtt));
     rc.round_trip_time = rtt;
+}
+
+void server_set_client_snapshot_rate(registry &registry, entity client, double rate) {
+    get_server(registry, "server_set_client_snapshot_rate");
+    auto &rc = get_client(registry, client, "server_set_client_snapshot_rate");
+    if (!valid_snapshot_rate(rate))
+        throw std::invalid_argument("server_set_client_snapshot_rate: rate must be finite and > 0, got " +
+                                    std::to_string(rate));
+    rc.snapshot_rate = rate;
 }
 
 void server_receive_packet(registry &registry, entity client, const packet::edyn_packet &packet) {
@@ -514,6 +526,14 @@ void server_receive_packet(registry &registry, entity client, const packet::edyn
 
 void update_network_server(registry &registry) {
     auto &ctx = get_server(registry, "update_network_server");
+    // The program may write remote_client::snapshot_rate directly: a NaN would stop the client's
+    // snapshots, a rate <= 0 send one per 1000 s. Refused before anything is done.
+    for (auto [client, rc] : registry.view<remote_client>().each()) {
+        if (!valid_snapshot_rate(rc.snapshot_rate))
+            throw std::invalid_argument("update_network_server: remote_client::snapshot_rate of entity " +
+                                        std::to_string(to_index(client)) + " must be finite and > 0, got " +
+                                        std::to_string(rc.snapshot_rate));
+    }
     auto &types = registry.ctx().get<network_registry>();
     auto now = get_simulation_time(registry);
     types.now = now;

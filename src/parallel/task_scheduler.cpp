@@ -1,7 +1,9 @@
 #include "edyn/parallel/task_scheduler.hpp"
 #include "thread_pool.hpp"
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
+#include <string>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -73,6 +75,11 @@ struct task_scheduler::arena {
 #endif
 
 task_scheduler::task_scheduler(unsigned num_threads) {
+    // oneTBB takes an int: a larger count would wrap to a negative one.
+    if (num_threads > unsigned(std::numeric_limits<int>::max()))
+        throw std::invalid_argument("task_scheduler: num_threads must be at most " +
+                                    std::to_string(std::numeric_limits<int>::max()) + ", got " +
+                                    std::to_string(num_threads));
     auto threads = num_threads == 0 ? tbb::info::default_concurrency() : int(num_threads);
     default_arena = std::make_unique<arena>(threads);
     hooks = default_arena->hooks();

@@ -68,6 +68,13 @@ matrix3x3 inertia_from_second_moment(const matrix3x3 &second) {
     return matrix3x3_identity * trace(second) - second;
 }
 
+// A dimension (radius, half length, half extent) of a primitive solid.
+void validate_dimension(scalar value, const char *function, const char *name) {
+    if (!detail::positive_finite(value)) {
+        detail::throw_invalid_argument(function, ": ", name, " must be positive and finite, got ", value);
+    }
+}
+
 } // namespace
 
 void validate_mass(scalar mass, const char *function) {
@@ -78,12 +85,16 @@ void validate_mass(scalar mass, const char *function) {
 
 matrix3x3 moment_of_inertia_solid_sphere(scalar mass, scalar radius) {
     validate_mass(mass, "moment_of_inertia_solid_sphere");
+    validate_dimension(radius, "moment_of_inertia_solid_sphere", "radius");
     auto s = scalar(0.4) * mass * radius * radius;
     return diagonal_matrix({s, s, s});
 }
 
 matrix3x3 moment_of_inertia_solid_box(scalar mass, const vector3 &half_extents) {
     validate_mass(mass, "moment_of_inertia_solid_box");
+    validate_dimension(half_extents.x, "moment_of_inertia_solid_box", "half_extents.x");
+    validate_dimension(half_extents.y, "moment_of_inertia_solid_box", "half_extents.y");
+    validate_dimension(half_extents.z, "moment_of_inertia_solid_box", "half_extents.z");
     // m/12 (b^2 + c^2) with full sides b = 2 h_y, c = 2 h_z.
     auto sq = half_extents * half_extents;
     return diagonal_matrix(vector3{sq.y + sq.z, sq.x + sq.z, sq.x + sq.y} * (mass / 3));
@@ -92,6 +103,8 @@ matrix3x3 moment_of_inertia_solid_box(scalar mass, const vector3 &half_extents) 
 matrix3x3 moment_of_inertia_solid_cylinder(scalar mass, scalar radius, scalar half_length,
                                            coordinate_axis axis) {
     validate_mass(mass, "moment_of_inertia_solid_cylinder");
+    validate_dimension(radius, "moment_of_inertia_solid_cylinder", "radius");
+    validate_dimension(half_length, "moment_of_inertia_solid_cylinder", "half_length");
     auto r2 = radius * radius;
     auto h2 = half_length * half_length;
     return axial_inertia(axis, mass * r2 / 2, mass * (3 * r2 + 4 * h2) / 12);
@@ -100,6 +113,8 @@ matrix3x3 moment_of_inertia_solid_cylinder(scalar mass, scalar radius, scalar ha
 matrix3x3 moment_of_inertia_solid_capsule(scalar mass, scalar radius, scalar half_length,
                                           coordinate_axis axis) {
     validate_mass(mass, "moment_of_inertia_solid_capsule");
+    validate_dimension(radius, "moment_of_inertia_solid_capsule", "radius");
+    validate_dimension(half_length, "moment_of_inertia_solid_capsule", "half_length");
     auto r = radius, h = half_length;
     auto cylinder_volume = pi * r * r * 2 * h;
     auto sphere_volume = scalar(4) / 3 * pi * r * r * r;
@@ -222,6 +237,13 @@ matrix3x3 moment_of_inertia(const compound_child_shape_t &s, scalar mass) {
 }
 
 matrix3x3 shift_moment_of_inertia(const matrix3x3 &inertia, scalar mass, const vector3 &offset) {
+    if (!(mass >= 0) || !std::isfinite(mass)) {
+        detail::throw_invalid_argument("shift_moment_of_inertia: mass must be finite and not negative, got ",
+                                       mass);
+    }
+    if (!isfinite(offset)) {
+        detail::throw_invalid_argument("shift_moment_of_inertia: offset must be finite, got ", offset);
+    }
     return inertia + (matrix3x3_identity * length_sqr(offset) - outer(offset, offset)) * mass;
 }
 

@@ -9,7 +9,16 @@ namespace edyn {
 
 using detail::throw_invalid_argument;
 
+void triangle_mesh::check_not_initialized(const char *function) const {
+    if (is_initialized) {
+        throw_invalid_argument("triangle_mesh::", function,
+                               ": the mesh is initialized, and read-only: it may be shared by shapes "
+                               "and threads (fill a new mesh instead)");
+    }
+}
+
 void triangle_mesh::append_vertices(const std::vector<vector3> &values) {
+    check_not_initialized("insert_vertices");
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!isfinite(values[i])) {
             throw_invalid_argument("triangle_mesh::insert_vertices: vertex ", vertices.size() + i,
@@ -29,6 +38,7 @@ void triangle_mesh::append_index_checked(std::vector<std::uint64_t> &values, lon
 }
 
 void triangle_mesh::append_indices(const std::vector<std::uint64_t> &values) {
+    check_not_initialized("insert_indices");
     for (auto v : values)
         indices.push_back(static_cast<std::uint32_t>(v));
     is_initialized = false;
@@ -36,6 +46,7 @@ void triangle_mesh::append_indices(const std::vector<std::uint64_t> &values) {
 
 void triangle_mesh::append_coefficients(const std::vector<scalar> &values, std::vector<scalar> &target,
                                         const char *function, scalar max) {
+    check_not_initialized(function);
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!std::isfinite(values[i]) || values[i] < 0 || values[i] > max) {
             throw_invalid_argument("triangle_mesh::", function, ": coefficient ", target.size() + i,

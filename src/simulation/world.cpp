@@ -35,6 +35,15 @@ world_state &world(registry &registry) {
     return *w;
 }
 
+// For the getters: unlike world(), names the function that was called.
+const world_state &attached_world(const registry &registry, const char *function) {
+    auto *w = registry.ctx().find<world_state>();
+    if (!w)
+        throw std::invalid_argument(std::string(function) +
+                                    ": the registry is not attached (call edyn::attach first)");
+    return *w;
+}
+
 settings &mutable_settings(registry &registry) {
     world(registry);
     return registry.ctx().get<settings>();
@@ -222,7 +231,7 @@ void wake_up_entity(registry &registry, entity e) {
 }
 
 void set_paused(registry &registry, bool paused) { world(registry).paused = paused; }
-bool is_paused(const registry &registry) { return registry.ctx().get<world_state>().paused; }
+bool is_paused(const registry &registry) { return attached_world(registry, "is_paused").paused; }
 
 void set_fixed_dt(registry &registry, scalar dt) {
     if (!(dt >= min_fixed_dt && dt <= max_fixed_dt))
@@ -316,10 +325,10 @@ const settings &get_settings(const registry &registry) {
 }
 
 double get_simulation_time(const registry &registry) {
-    return registry.ctx().get<world_state>().simulation_time;
+    return attached_world(registry, "get_simulation_time").simulation_time;
 }
 std::uint64_t get_step_count(const registry &registry) {
-    return registry.ctx().get<world_state>().step_count;
+    return attached_world(registry, "get_step_count").step_count;
 }
 
 } // namespace edyn

@@ -26,7 +26,8 @@ struct cvjoint_constraint {
     /// twist axis, the second measures the twist. Default: identity (the x axes).
     matrix3x3 frame[2]{matrix3x3_identity, matrix3x3_identity};
     /// Twist limits (radians), twist_min <= twist_max. Equal limits lock the twist (the
-    /// default), infinite ones leave it free.
+    /// default) and must then be finite; an infinite limit is not enforced, so that
+    /// (-inf, +inf) leaves the twist free.
     /// The lower limit; default 0.
     scalar twist_min{0};
     /// The upper limit, not below `twist_min`; default 0.
@@ -87,7 +88,8 @@ inline constexpr const char *constraint_type_name<cvjoint_constraint> = "cvjoint
 /// Checks the fields a user sets; make_constraint() calls it before creating the constraint.
 /// @param c The constraint to check.
 /// @throws std::invalid_argument When a pivot is not finite; a frame is not orthonormal; a twist
-/// limit is NaN or `twist_min > twist_max`; `twist_restitution` is outside [0, 1];
+/// limit is NaN or `twist_min > twist_max`; both twist limits are the same infinity (+inf or
+/// -inf, which would lock the twist at no angle); `twist_restitution` is outside [0, 1];
 /// `twist_friction_torque`, `twist_damping`, `bend_friction_torque`, `twist_stiffness`,
 /// `twist_bump_stop_angle` or `twist_bump_stop_stiffness` is negative or not finite; or
 /// `twist_rest_angle` is not finite.

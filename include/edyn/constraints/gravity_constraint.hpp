@@ -12,7 +12,8 @@ inline constexpr scalar gravitational_constant = scalar(6.674e-11);
 /// Newtonian attraction G mA mB / r^2 between the centres of mass of the two bodies.
 /// Created with make_constraint(); it has nothing to set but its bodies. The masses are read
 /// from the bodies' `mass` components at the start of every step. Static and kinematic bodies
-/// carry `large_scalar` as their mass, so it is meant for pairs of dynamic bodies.
+/// carry `large_scalar` as their mass, so make_constraint() refuses them: both bodies must be
+/// dynamic.
 struct gravity_constraint {
     entity body[2]{null, null}; ///< The two attracting rigid bodies, set by make_constraint().
 };

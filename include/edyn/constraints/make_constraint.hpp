@@ -8,19 +8,24 @@
 
 namespace edyn {
 
+struct gravity_constraint;
+
 /// Throws std::invalid_argument unless body0 and body1 are two distinct rigid bodies (or, when
 /// `allow_external`, external entities).
 /// make_constraint() calls it before creating anything; external entities are allowed for a
-/// null_constraint only.
+/// null_constraint only, and a gravity_constraint needs two dynamic bodies.
 /// @param registry The registry the bodies live in.
 /// @param type Name of the constraint type, for the message.
 /// @param body0 The first body.
 /// @param body1 The second body.
 /// @param allow_external Whether an entity tagged with `external_tag` may stand for a body.
+/// @param require_dynamic Whether both bodies must be dynamic (static and kinematic bodies carry
+/// `large_scalar` as their mass, which a gravity_constraint cannot multiply).
 /// @throws std::invalid_argument When a body is null or not a valid entity, when it is neither a
-/// rigid body nor (with `allow_external`) an external entity, or when body0 equals body1.
+/// rigid body nor (with `allow_external`) an external entity, when (with `require_dynamic`) it is
+/// not dynamic, or when body0 equals body1.
 void validate_constraint_bodies(const registry &registry, const char *type, entity body0, entity body1,
-                                bool allow_external);
+                                bool allow_external, bool require_dynamic = false);
 
 /// Creates a constraint of type T between body0 and body1 on a new entity and returns it.
 /// `setup` receives the component (bodies already set) to assign pivots, frames, limits and so
@@ -40,13 +45,14 @@ void validate_constraint_bodies(const registry &registry, const char *type, enti
 /// @param setup Called once with the component before it is validated and emplaced.
 /// @return The new constraint entity.
 /// @throws std::invalid_argument When the bodies are not two distinct valid rigid bodies (an
-/// external entity is also accepted for a null_constraint), or when a field set by `setup` is
+/// external entity is also accepted for a null_constraint; a gravity_constraint needs both
+/// dynamic), or when a field set by `setup` is
 /// out of range (see the validate_constraint function of T). Exceptions thrown by `setup`
 /// itself propagate; in every case the registry is left as it was.
 template<typename T, typename Setup>
 entity make_constraint(registry &registry, entity body0, entity body1, Setup &&setup) {
     validate_constraint_bodies(registry, constraint_type_name<T>, body0, body1,
-                               std::is_same_v<T, null_constraint>);
+                               std::is_same_v<T, null_constraint>, std::is_same_v<T, gravity_constraint>);
     T con{};
     con.body[0] = body0;
     con.body[1] = body1;
@@ -68,7 +74,8 @@ entity make_constraint(registry &registry, entity body0, entity body1, Setup &&s
 /// @param body1 The second body (`body[1]` of the constraint).
 /// @return The new constraint entity.
 /// @throws std::invalid_argument When the bodies are not two distinct valid rigid bodies (an
-/// external entity is also accepted for a null_constraint); the registry is left as it was.
+/// external entity is also accepted for a null_constraint; a gravity_constraint needs both
+/// dynamic); the registry is left as it was.
 template<typename T>
 entity make_constraint(registry &registry, entity body0, entity body1) {
     return make_constraint<T>(registry, body0, body1, [](T &) {});

@@ -43,6 +43,17 @@ struct material_base {
     bool operator==(const material_base &) const = default;
 };
 
+/// Checks that a material's values are in the ranges material_base gives; make_rigidbody and
+/// insert_material_mixing call it, so that both accept the same materials.
+/// @param function Name of the calling function, put at the start of the message.
+/// @param name Name of the material argument, put before each field's name ("material" gives
+/// "material.friction").
+/// @param m The material.
+/// @throws std::invalid_argument "<function>: <name>.<field> must be ..., got <value>", when the
+/// friction, roll_friction or spin_friction is negative or not finite, the restitution is
+/// outside [0, 1], the stiffness is not positive, or the damping is negative (NaN fails each).
+void validate_material(const char *function, const char *name, const material_base &m);
+
 /// Numeric id of a material, for pair overrides with insert_material_mixing.
 using material_id_type = std::uint32_t;
 /// The id of a material that has none (the default of material::id).

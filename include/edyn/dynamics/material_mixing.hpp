@@ -81,9 +81,10 @@ struct material_mix_table {
 /// @param id0 One material id (material::id).
 /// @param id1 The other material id.
 /// @param mixed The material to use for contacts between the two.
-/// @throws std::invalid_argument When either id is `invalid_material_id`, or when `mixed` has a
-/// friction that is negative, NaN or infinite, a restitution outside [0, 1], or a negative or
-/// NaN rolling or spinning friction. Its stiffness and damping are not checked.
+/// @throws std::invalid_argument When either id is `invalid_material_id`, or when `mixed` is out
+/// of the ranges make_rigidbody accepts (validate_material): a friction, rolling or spinning
+/// friction that is negative, NaN or infinite, a restitution outside [0, 1], a stiffness that
+/// is not positive or a negative damping. The table is left as it was then.
 void insert_material_mixing(registry &registry, material_id_type id0, material_id_type id1,
                             const material_base &mixed);
 

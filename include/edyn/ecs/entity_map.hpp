@@ -2,6 +2,7 @@
 #define EDYN_ECS_ENTITY_MAP_HPP
 
 #include "edyn/ecs/entity.hpp"
+#include <stdexcept>
 #include <vector>
 
 namespace edyn {
@@ -23,10 +24,14 @@ public:
         return slots[i].target;
     }
     /// Maps `source` to `target`, replacing any entry at the same index (whatever its version).
-    /// @param source An entity of the source registry; not null (not checked: null's index would
-    /// grow the map to 2^20 entries).
+    /// @param source An entity of the source registry; not null.
     /// @param target The entity of the other registry it stands for.
+    /// @throws std::invalid_argument When `source` is null (its index would grow the map to 2^20
+    /// entries); the map is left as it was.
     void insert(entity source, entity target) {
+        if (source == null) {
+            throw std::invalid_argument("entity_map::insert: source must not be null");
+        }
         auto i = to_index(source);
         if (i >= slots.size()) slots.resize(std::size_t(i) + 1);
         slots[i] = {source, target};

@@ -48,6 +48,21 @@ namespace detail {
                                 std::string(type));
 }
 
+// Throws std::invalid_argument when the range holds an entity twice: range functions check
+// the whole range before changing anything.
+template<typename It>
+void check_no_repeats(std::string_view function, It first, It last, std::string_view type) {
+    std::vector<entity> sorted(first, last);
+    std::sort(sorted.begin(), sorted.end());
+    if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end()) {
+        auto message = std::string(function) + ": " + describe(*it) + " appears more than once in the range";
+        if (!type.empty()) {
+            message += " (component " + std::string(type) + ")";
+        }
+        throw std::invalid_argument(message);
+    }
+}
+
 } // namespace detail
 
 /// Entities and their components, EnTT style: the container of a world's whole state.
@@ -198,9 +213,8 @@ public:
     /// Destroys each entity of the range, in order.
     /// @param first Iterator to the first entity.
     /// @param last Iterator past the last entity.
-    /// @throws std::invalid_argument When one of the entities is invalid; none is destroyed
-    /// then. The range must not hold the same entity twice: the second one is invalid by the time
-    /// it is reached, and the call throws with the earlier ones already destroyed.
+    /// @throws std::invalid_argument When one of the entities is invalid, or the range holds the
+    /// same entity twice; none is destroyed then.
     template<typename It>
     void destroy(It first, It last) {
         for (auto it = first; it != last; ++it) {
@@ -208,6 +222,7 @@ public:
                 detail::throw_invalid_entity("registry::destroy", *it, {});
             }
         }
+        detail::check_no_repeats("registry::destroy", first, last, {});
         for (; first != last; ++first) {
             destroy(*first);
         }
@@ -275,8 +290,8 @@ public:
     /// @param first Iterator to the first entity.
     /// @param last Iterator past the last entity.
     /// @param value The component to copy; value-initialised by default.
-    /// @throws std::invalid_argument When an entity is invalid or already has the component;
-    /// nothing is added then. The range must not hold the same entity twice.
+    /// @throws std::invalid_argument When an entity is invalid or already has the component, or
+    /// the range holds the same entity twice; nothing is added then.
     template<typename Type, typename It>
     void insert(It first, It last, const Type &value = {}) {
         auto [pool, signals] = assure<Type>();
@@ -288,6 +303,7 @@ public:
                 detail::throw_has_component("registry::insert", *it, type_name<Type>());
             }
         }
+        detail::check_no_repeats("registry::insert", first, last, type_name<Type>());
         for (; first != last; ++first) {
             construct(pool, signals, *first, value);
         }

@@ -1,6 +1,7 @@
 #ifndef EDYN_MATH_VECTOR2_HPP
 #define EDYN_MATH_VECTOR2_HPP
 
+#include "edyn/config/assert.hpp"
 #include "edyn/math/scalar.hpp"
 #include <cmath>
 
@@ -16,14 +17,20 @@ struct vector2 {
     /// @var y
     /// Second coordinate.
 
-    /// Component by index: 0 gives `x`, anything else `y`.
-    /// @param i 0 or 1.
+    /// Component by index.
+    /// @param i 0 (`x`) or 1 (`y`); checked by `EDYN_ASSERT`.
     /// @return A reference to the component.
-    constexpr scalar &operator[](int i) noexcept { return i == 0 ? x : y; }
-    /// Component by index: 0 gives `x`, anything else `y`.
-    /// @param i 0 or 1.
+    constexpr scalar &operator[](int i) noexcept {
+        EDYN_ASSERT(i >= 0 && i < 2);
+        return i == 0 ? x : y;
+    }
+    /// Component by index.
+    /// @param i 0 (`x`) or 1 (`y`); checked by `EDYN_ASSERT`.
     /// @return The component's value.
-    constexpr scalar operator[](int i) const noexcept { return i == 0 ? x : y; }
+    constexpr scalar operator[](int i) const noexcept {
+        EDYN_ASSERT(i >= 0 && i < 2);
+        return i == 0 ? x : y;
+    }
     /// Exact component-wise equality (no tolerance).
     /// @return True when both components are equal.
     constexpr bool operator==(const vector2 &) const noexcept = default;

@@ -37,7 +37,9 @@ struct remote_client_rejections {
 /// owned_entities; the others are written by the engine. Other application data about the client
 /// goes on the same entity, as the program's own components.
 struct remote_client {
-    /// Registry snapshots sent to the client per second (default 30).
+    /// Registry snapshots sent to the client per second (default 30); finite and > 0. Set it
+    /// with server_set_client_snapshot_rate, which checks it; update_network_server refuses a
+    /// bad value written here directly.
     double snapshot_rate{30};
     /// The region of the world the client is sent, in world space (m; default a 100 m cube
     /// centred at the origin): islands with a body inside it are created in the client, those

@@ -73,7 +73,8 @@ void server_receive_packet(registry &registry, entity client, const packet::edyn
 /// (creating and destroying entities in the clients) and sends snapshots at each client's rate.
 /// @param registry The server's registry.
 /// @throws std::invalid_argument When `registry` is not a network server (init_network_server was
-/// not called).
+/// not called), or when a client's remote_client::snapshot_rate is not positive or not finite
+/// (nothing is done then).
 void update_network_server(registry &registry);
 
 /// Sets a client's round-trip time, as measured by the transport; it sets the client's playout
@@ -81,9 +82,19 @@ void update_network_server(registry &registry);
 /// @param registry The server's registry.
 /// @param client The client's entity (server_make_client).
 /// @param rtt Round-trip time in seconds, finite and >= 0; stored in remote_client::round_trip_time.
-/// @throws std::invalid_argument When `client` is not an entity made by server_make_client (since
-/// the last init_network_server), or when `rtt` is negative or not finite.
+/// @throws std::invalid_argument When `registry` is not a network server, when `client` is not an
+/// entity made by server_make_client (since the last init_network_server), or when `rtt` is
+/// negative or not finite.
 void server_set_client_round_trip_time(registry &registry, entity client, double rtt);
+
+/// Sets how many registry snapshots per second the server sends a client.
+/// @param registry The server's registry.
+/// @param client The client's entity (server_make_client).
+/// @param rate Snapshots per second, finite and > 0; stored in remote_client::snapshot_rate.
+/// @throws std::invalid_argument When `registry` is not a network server, when `client` is not an
+/// entity made by server_make_client (since the last init_network_server), or when `rate` is not
+/// positive or not finite.
+void server_set_client_snapshot_rate(registry &registry, entity client, double rate);
 
 } // namespace edyn
 

@@ -38,6 +38,16 @@ struct parallel_for_context {
     }
 };
 
+// Both overloads of parallel_for refuse the same arguments, with or without a scheduler.
+template<typename Index>
+void validate_parallel_for(Index first, Index last, std::size_t grain) {
+    if (grain == 0) throw std::invalid_argument("parallel_for: grain must be at least 1, not 0");
+    if (last < first) {
+        throw std::invalid_argument("parallel_for: first (" + std::to_string(first) + ") is after last (" +
+                                    std::to_string(last) + ")");
+    }
+}
+
 } // namespace detail
 
 /// Calls fn(i) for every i in [first, last), spread over the scheduler's threads in ranges of
@@ -56,11 +66,7 @@ struct parallel_for_context {
 /// @throws std::invalid_argument If first > last or grain is 0.
 template<typename Index, typename Fn>
 void parallel_for(task_scheduler &scheduler, Index first, Index last, std::size_t grain, Fn &&fn) {
-    if (grain == 0) throw std::invalid_argument("parallel_for: grain must be at least 1, not 0");
-    if (last < first) {
-        throw std::invalid_argument("parallel_for: first (" + std::to_string(first) + ") is after last (" +
-                                    std::to_string(last) + ")");
-    }
+    detail::validate_parallel_for(first, last, grain);
     auto count = static_cast<std::size_t>(last - first);
     if (count <= grain || scheduler.concurrency() == 1) {
         for (auto i = first; i < last; ++i)
@@ -80,13 +86,13 @@ void parallel_for(task_scheduler &scheduler, Index first, Index last, std::size_
 /// @param last One past the last index.
 /// @param grain Smallest number of indices per range, at least 1.
 /// @param fn Callable taking an `Index`.
-/// @throws std::invalid_argument With a scheduler, if first > last or grain is 0 (without one,
-/// nothing is checked and such a range runs no call).
+/// @throws std::invalid_argument If first > last or grain is 0, with a scheduler or without.
 template<typename Index, typename Fn>
 void parallel_for(task_scheduler *scheduler, Index first, Index last, std::size_t grain, Fn &&fn) {
     if (scheduler) {
         parallel_for(*scheduler, first, last, grain, std::forward<Fn>(fn));
     } else {
+        detail::validate_parallel_for(first, last, grain);
         for (auto i = first; i < last; ++i)
             fn(i);
     }

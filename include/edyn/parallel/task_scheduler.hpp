@@ -42,8 +42,10 @@ struct task_hooks {
 class task_scheduler {
 public:
     /// A oneTBB arena of `num_threads` threads, the caller's included.
-    /// @param num_threads Number of threads; 0 means one per hardware thread. Not bounded here
-    /// (`init_config::num_worker_threads` is, at `init_config::max_worker_threads`).
+    /// @param num_threads Number of threads; 0 means one per hardware thread. Bounded here only by
+    /// what oneTBB can take, INT_MAX (`init_config::num_worker_threads` is bounded tighter, at
+    /// `init_config::max_worker_threads`).
+    /// @throws std::invalid_argument If `num_threads` is above INT_MAX.
     explicit task_scheduler(unsigned num_threads = 0);
     /// A scheduler that hands its work to the program's own scheduler.
     /// @param hooks The program's hooks, copied.

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace edyn {
 
@@ -78,9 +79,33 @@ inline constexpr scalar smallest_three_bound = scalar(0.70710678118654752440);
 inline constexpr std::uint32_t smallest_three_bits = 10;
 inline constexpr std::uint32_t smallest_three_max = (std::uint32_t{1} << smallest_three_bits) - 1;
 
+// Not constexpr on purpose: reached while checking a quantum_step at compile time, it makes
+// the build fail with its name in the message.
+inline void quantum_must_be_positive_and_finite() noexcept {}
+
 } // namespace detail
 
-/// Writes or reads a vector rounded to a multiple of `quantum`, compactly.
+/// The step a vector is rounded to by serialize_quantized: a positive, finite constant of the
+/// code, checked when the program is compiled.
+///
+/// It converts implicitly from a constant expression (position_quantum, velocity_quantum,
+/// `scalar(0.01)`), and a zero, negative, infinite or NaN quantum does not compile; neither does
+/// a value known only at run time. So a bad quantum can never silently write zeros into a
+/// stream, and no archive has to throw.
+struct quantum_step {
+    /// The quantum (> 0, finite).
+    scalar value;
+    /// Checks `quantum` at compile time.
+    /// @param quantum The step of the rounding; a constant expression, positive and finite.
+    consteval quantum_step(scalar quantum)
+        : value(quantum) {
+        if (!(quantum > 0 && quantum <= std::numeric_limits<scalar>::max())) {
+            detail::quantum_must_be_positive_and_finite();
+        }
+    }
+};
+
+/// Writes or reads a vector rounded to a multiple of `step`, compactly.
 ///
 /// Each coordinate is written as a zig-zag variable-length integer number of quanta, so that
 /// small values take few bytes: a position coordinate under 8 m takes 2 bytes, under 1 km 3
@@ -90,11 +115,11 @@ inline constexpr std::uint32_t smallest_three_max = (std::uint32_t{1} << smalles
 /// same quantum.
 /// @param archive A memory_output_archive or memory_input_archive.
 /// @param v The vector to write from or read into.
-/// @param quantum The step of the rounding, > 0 (position_quantum, velocity_quantum); checked
-/// only by an assertion in debug builds.
+/// @param step The step of the rounding (position_quantum, velocity_quantum): a constant,
+/// positive and finite, checked at compile time (quantum_step).
 template<typename Archive>
-void serialize_quantized(Archive &archive, vector3 &v, scalar quantum) {
-    EDYN_ASSERT(quantum > 0, "serialize_quantized needs a positive quantum");
+void serialize_quantized(Archive &archive, vector3 &v, quantum_step step) {
+    const auto quantum = step.value;
     auto max_steps = detail::max_quantized_steps(quantum);
 
     if constexpr (Archive::is_output) {

@@ -11,39 +11,39 @@ namespace edyn {
 /// Inertia tensor of a solid sphere of uniform density about its centre: 2/5 m r² on the
 /// diagonal.
 /// @param mass Mass (kg).
-/// @param radius Radius (m); not checked.
+/// @param radius Radius (m), positive and finite.
 /// @return The tensor (kg·m²).
-/// @throws std::invalid_argument Naming moment_of_inertia_solid_sphere, when `mass` is not
-///         positive and finite.
+/// @throws std::invalid_argument Naming moment_of_inertia_solid_sphere, when `mass` or `radius`
+///         is not positive and finite.
 matrix3x3 moment_of_inertia_solid_sphere(scalar mass, scalar radius);
 /// Inertia tensor of a solid box of uniform density about its centre: m/3 (h_y² + h_z²) about
 /// x, and likewise about y and z, from the half extents h.
 /// @param mass Mass (kg).
-/// @param half_extents Half of the box's size along each axis (m); not checked.
+/// @param half_extents Half of the box's size along each axis (m), each positive and finite.
 /// @return The tensor (kg·m²).
-/// @throws std::invalid_argument Naming moment_of_inertia_solid_box, when `mass` is not positive
-///         and finite.
+/// @throws std::invalid_argument Naming moment_of_inertia_solid_box, when `mass` or a half
+///         extent is not positive and finite.
 matrix3x3 moment_of_inertia_solid_box(scalar mass, const vector3 &half_extents);
 /// Inertia tensor of a solid cylinder of uniform density about its centre: m r² / 2 about its
 /// axis, m (3 r² + 4 h²) / 12 across it.
 /// @param mass Mass (kg).
-/// @param radius Radius r (m); not checked.
-/// @param half_length Half length h (m); not checked.
+/// @param radius Radius r (m), positive and finite.
+/// @param half_length Half length h (m), positive and finite.
 /// @param axis The cylinder's main axis.
 /// @return The tensor (kg·m²).
-/// @throws std::invalid_argument Naming moment_of_inertia_solid_cylinder, when `mass` is not
-///         positive and finite.
+/// @throws std::invalid_argument Naming moment_of_inertia_solid_cylinder, when `mass`, `radius`
+///         or `half_length` is not positive and finite.
 matrix3x3 moment_of_inertia_solid_cylinder(scalar mass, scalar radius, scalar half_length,
                                            coordinate_axis axis);
 /// Inertia tensor of a solid capsule of uniform density about its centre: the cylindrical part
 /// plus two exact hemispheres, the mass shared in proportion to their volumes.
 /// @param mass Mass (kg).
-/// @param radius Radius (m); not checked.
-/// @param half_length Half length of the cylindrical part (m); not checked.
+/// @param radius Radius (m), positive and finite.
+/// @param half_length Half length of the cylindrical part (m), positive and finite.
 /// @param axis The capsule's main axis.
 /// @return The tensor (kg·m²).
-/// @throws std::invalid_argument Naming moment_of_inertia_solid_capsule, when `mass` is not
-///         positive and finite.
+/// @throws std::invalid_argument Naming moment_of_inertia_solid_capsule, when `mass`, `radius`
+///         or `half_length` is not positive and finite.
 matrix3x3 moment_of_inertia_solid_capsule(scalar mass, scalar radius, scalar half_length,
                                           coordinate_axis axis);
 
@@ -314,12 +314,14 @@ matrix3x3 moment_of_inertia(const Variant &shape, scalar mass) {
 /// Moves an inertia tensor from the centre of mass to another point by the parallel-axis
 /// theorem: inertia + mass (|offset|² E - offset offsetᵀ).
 ///
-/// Used when the centre of mass is shifted (see set_center_of_mass()). Nothing is checked.
+/// Used when the centre of mass is shifted (see set_center_of_mass()).
 /// @param inertia Inertia tensor about the centre of mass (kg·m²).
-/// @param mass The mass (kg).
+/// @param mass The mass (kg), finite and not negative.
 /// @param offset Position of the new reference point relative to the centre of mass, in the
-///        tensor's axes (m).
+///        tensor's axes (m); finite.
 /// @return The inertia tensor about that point (kg·m²).
+/// @throws std::invalid_argument Naming shift_moment_of_inertia, when `mass` is negative or not
+///         finite, or `offset` is not finite.
 matrix3x3 shift_moment_of_inertia(const matrix3x3 &inertia, scalar mass, const vector3 &offset);
 
 /// Checks a mass given by the user.

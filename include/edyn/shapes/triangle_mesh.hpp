@@ -36,23 +36,25 @@ public:
     /// convex (an angle of about 5 degrees).
     static constexpr scalar active_edge_cosine = scalar(0.996);
 
-    /// Appends vertices; the mesh must be initialized again afterwards.
+    /// Appends vertices, before initialize().
     /// @param first Start of a range of vector3, in the mesh's object space (m).
     /// @param last End of the range.
     /// @throws std::invalid_argument Naming the function and the vertex, when one is not finite;
-    ///         nothing is appended then.
+    ///         naming the function, when the mesh is initialized (read-only, perhaps shared by
+    ///         other threads). Nothing is appended then.
     template<typename It>
     void insert_vertices(It first, It last) {
         std::vector<vector3> values(first, last);
         append_vertices(values);
     }
 
-    /// Appends vertex indices, three per triangle, counter-clockwise seen from the front; the mesh
-    /// must be initialized again afterwards. Whether they are in range is checked by initialize().
+    /// Appends vertex indices, three per triangle, counter-clockwise seen from the front, before
+    /// initialize(). Whether they are in range is checked by initialize().
     /// @param first Start of a range of integers.
     /// @param last End of the range.
     /// @throws std::invalid_argument Naming the function and the index, when a value is negative or
-    ///         not below 2^32 - 1; nothing is appended then.
+    ///         not below 2^32 - 1; naming the function, when the mesh is initialized. Nothing is
+    ///         appended then.
     template<typename It>
     void insert_indices(It first, It last) {
         std::vector<std::uint64_t> values;
@@ -71,7 +73,7 @@ public:
     /// @param first Start of a range of scalars (dimensionless).
     /// @param last End of the range.
     /// @throws std::invalid_argument Naming the function and the value, when one is negative or not
-    ///         finite; nothing is appended then.
+    ///         finite; naming the function, when the mesh is initialized. Nothing is appended then.
     template<typename It>
     void insert_friction_coefficients(It first, It last) {
         std::vector<scalar> values(first, last);
@@ -83,7 +85,8 @@ public:
     /// @param first Start of a range of scalars in [0, 1].
     /// @param last End of the range.
     /// @throws std::invalid_argument Naming the function and the value, when one is negative, not
-    ///         finite or above 1; nothing is appended then.
+    ///         finite or above 1; naming the function, when the mesh is initialized. Nothing is
+    ///         appended then.
     template<typename It>
     void insert_restitution_coefficients(It first, It last) {
         std::vector<scalar> values(first, last);
@@ -214,6 +217,8 @@ private:
 
     void initialize_with(const std::span<const std::uint8_t> *given_flags);
 
+    // Inserting into an initialized mesh is refused: it may be shared across threads.
+    void check_not_initialized(const char *function) const;
     void append_vertices(const std::vector<vector3> &values);
     static void append_index_checked(std::vector<std::uint64_t> &values, long long value);
     void append_indices(const std::vector<std::uint64_t> &values);

@@ -107,9 +107,9 @@ void wake_up_entity(registry &registry, entity entity);
 /// @throws std::invalid_argument When the registry is not attached.
 void set_paused(registry &registry, bool paused);
 /// Whether the simulation is paused (set_paused).
-/// @param registry An attached registry; not checked, other than by assertions in debug
-/// builds.
+/// @param registry An attached registry.
 /// @return True when paused.
+/// @throws std::invalid_argument When the registry is not attached.
 bool is_paused(const registry &registry);
 
 /// Sets the length of a fixed step.
@@ -254,15 +254,15 @@ const settings &get_settings(const registry &registry);
 
 /// Simulated time of the last step, in seconds since attach().
 /// In asynchronous mode, that of the last step whose results the main registry has applied.
-/// @param registry An attached registry; not checked, other than by assertions in debug
-/// builds.
+/// @param registry An attached registry.
 /// @return Seconds of simulated time.
+/// @throws std::invalid_argument When the registry is not attached.
 double get_simulation_time(const registry &registry);
 /// Steps run since attach().
 /// In asynchronous mode, as of the last results the main registry has applied.
-/// @param registry An attached registry; not checked, other than by assertions in debug
-/// builds.
+/// @param registry An attached registry.
 /// @return The number of steps.
+/// @throws std::invalid_argument When the registry is not attached.
 std::uint64_t get_step_count(const registry &registry);
 
 } // namespace edyn

@@ -1,7 +1,9 @@
 // make_constraint: bodies and fields are validated before anything is created.
 #include <edyn/edyn.hpp>
 #include <gtest/gtest.h>
+#include <limits>
 #include <string>
+#include <utility>
 
 using namespace edyn;
 
@@ -140,4 +142,45 @@ TEST_F(make_constraint_test, constraints_made_before_attach_join_islands) {
     EXPECT_EQ(r.get<island_resident>(x).island_entity, r.get<island_resident>(y).island_entity);
     EXPECT_TRUE(r.all_of<island_resident>(c));
     detach(r);
+}
+
+TEST_F(make_constraint_test, cvjoint_refuses_a_twist_locked_at_infinity) {
+    const auto inf = std::numeric_limits<scalar>::infinity();
+    for (auto limit : {inf, -inf}) {
+        expect_rejected(
+            [&] {
+                make_constraint<cvjoint_constraint>(reg, a, b, [&](cvjoint_constraint &c) {
+                    c.twist_min = limit;
+                    c.twist_max = limit;
+                });
+            },
+            {"make_constraint<cvjoint_constraint>", "twist_min", "finite", limit > 0 ? "inf" : "-inf"});
+    }
+    // Apart, infinite limits are simply not enforced: free, or limited on one side only.
+    for (auto [lo, hi] : {std::pair{-inf, inf}, std::pair{-inf, scalar(0.5)}, std::pair{scalar(-0.5), inf}}) {
+        auto e = make_constraint<cvjoint_constraint>(reg, a, b, [&](cvjoint_constraint &c) {
+            c.twist_min = lo;
+            c.twist_max = hi;
+        });
+        EXPECT_TRUE(reg.all_of<cvjoint_constraint>(e)) << "limits " << lo << ", " << hi;
+    }
+}
+
+TEST_F(make_constraint_test, gravity_refuses_bodies_that_are_not_dynamic) {
+    rigidbody_def def;
+    def.shape = sphere_shape{scalar(0.5)};
+    def.position = {0, 5, 0};
+    def.kind = rigidbody_kind::rb_static;
+    auto ground = make_rigidbody(reg, def);
+    def.position = {0, -5, 0};
+    def.kind = rigidbody_kind::rb_kinematic;
+    auto mover = make_rigidbody(reg, def);
+    expect_rejected([&] { make_constraint<gravity_constraint>(reg, ground, a); },
+                    {"make_constraint<gravity_constraint>", "body[0]", "dynamic"});
+    expect_rejected([&] { make_constraint<gravity_constraint>(reg, a, mover); },
+                    {"make_constraint<gravity_constraint>", "body[1]", "dynamic"});
+    auto e = make_constraint<gravity_constraint>(reg, a, b);
+    EXPECT_TRUE(reg.all_of<gravity_constraint>(e));
+    // Other constraints still accept static bodies.
+    EXPECT_NO_THROW(make_constraint<point_constraint>(reg, ground, a));
 }

@@ -3,6 +3,8 @@
 #include <edyn/edyn.hpp>
 #include <gtest/gtest.h>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 using namespace edyn;
 
@@ -126,4 +128,58 @@ TEST(material_mixing, insert_rejects_invalid_ids_and_values_and_keeps_the_table)
     auto a = make_material(1, 1, 2), b = make_material(1, 1, 3);
     EXPECT_EQ(get_mixed_material(reg, a, b), good);
     EXPECT_EQ(reg.ctx().get<material_mix_table>().pairs.size(), 1u);
+}
+
+TEST(material_mixing, insert_checks_what_make_rigidbody_checks) {
+    registry reg;
+    attach(reg);
+    material_base good;
+    insert_material_mixing(reg, 2, 3, good);
+    constexpr auto inf = std::numeric_limits<scalar>::infinity();
+    constexpr auto qnan = std::numeric_limits<scalar>::quiet_NaN();
+    struct bad_case {
+        const char *field;
+        material_base m;
+    };
+    auto with = [](auto change) {
+        material_base m;
+        change(m);
+        return m;
+    };
+    const bad_case cases[]{
+        {"mixed.stiffness", with([](material_base &m) { m.stiffness = 0; })},
+        {"mixed.stiffness", with([&](material_base &m) { m.stiffness = -5; })},
+        {"mixed.stiffness", with([&](material_base &m) { m.stiffness = qnan; })},
+        {"mixed.damping", with([](material_base &m) { m.damping = -1; })},
+        {"mixed.damping", with([&](material_base &m) { m.damping = qnan; })},
+        {"mixed.roll_friction", with([&](material_base &m) { m.roll_friction = inf; })},
+        {"mixed.spin_friction", with([&](material_base &m) { m.spin_friction = inf; })},
+    };
+    for (const auto &c : cases) {
+        try {
+            insert_material_mixing(reg, 2, 3, c.m);
+            ADD_FAILURE() << "expected std::invalid_argument for " << c.field;
+        } catch (const std::invalid_argument &e) {
+            std::string what = e.what();
+            EXPECT_NE(what.find("insert_material_mixing"), std::string::npos) << what;
+            EXPECT_NE(what.find(c.field), std::string::npos) << what << "\nmissing: " << c.field;
+        }
+        // make_rigidbody refuses the same material.
+        rigidbody_def def;
+        def.shape = sphere_shape{scalar(0.5)};
+        material mat;
+        static_cast<material_base &>(mat) = c.m;
+        def.material = mat;
+        EXPECT_THROW(make_rigidbody(reg, def), std::invalid_argument) << c.field;
+    }
+    // The entry made before is unchanged.
+    EXPECT_EQ(*reg.ctx().get<material_mix_table>().find(2, 3), good);
+    // Finite stiffness and damping are accepted.
+    auto soft = with([](material_base &m) {
+        m.stiffness = 1e5;
+        m.damping = 10;
+    });
+    insert_material_mixing(reg, 2, 3, soft);
+    EXPECT_EQ(*reg.ctx().get<material_mix_table>().find(2, 3), soft);
+    detach(reg);
 }

@@ -1,9 +1,11 @@
 #include "ecs_test_support.hpp"
 #include "edyn/ecs/entity.hpp"
+#include "edyn/ecs/entity_map.hpp"
 #include "edyn/ecs/fwd.hpp"
 #include "edyn/ecs/type_info.hpp"
 #include <gtest/gtest.h>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <unordered_set>
@@ -83,6 +85,22 @@ namespace ecs_test::detail_names {
 template<typename T>
 struct wrapper {};
 } // namespace ecs_test::detail_names
+
+TEST(entity_map_test, insert_refuses_a_null_source) {
+    entity_map map;
+    auto source = make_entity(3, 1), target = make_entity(7, 0);
+    map.insert(source, target);
+    try {
+        map.insert(null, target);
+        ADD_FAILURE() << "expected std::invalid_argument for a null source";
+    } catch (const std::invalid_argument &e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find("entity_map::insert"), std::string::npos) << what;
+        EXPECT_NE(what.find("null"), std::string::npos) << what;
+    }
+    EXPECT_EQ(map.find(source), target) << "the map is left as it was";
+    EXPECT_EQ(map.find(null), null);
+}
 
 TEST(type_info_test, type_name_spells_qualified_names) {
     EXPECT_EQ(type_name<ecs_test::position>(), "ecs_test::position");

@@ -435,6 +435,45 @@ TEST(registry_test, insert_emplaces_copies_or_throws_adding_nothing) {
     }
 }
 
+TEST(registry_test, destroy_range_with_a_repeated_entity_destroys_nothing) {
+    registry reg;
+    std::vector<entity> entities;
+    for (int i = 0; i < 4; ++i) {
+        entities.push_back(reg.create());
+    }
+    entities.push_back(entities[1]);
+    try {
+        reg.destroy(entities.begin(), entities.end());
+        ADD_FAILURE() << "expected std::invalid_argument for a repeated entity";
+    } catch (const std::invalid_argument &e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find("registry::destroy"), std::string::npos) << what;
+        EXPECT_NE(what.find("entity 1"), std::string::npos) << what;
+    }
+    EXPECT_EQ(reg.alive(), 4u) << "nothing destroyed when the range repeats an entity";
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_TRUE(reg.valid(entities[std::size_t(i)])) << "entity " << i;
+    }
+}
+
+TEST(registry_test, insert_range_with_a_repeated_entity_adds_nothing) {
+    registry reg;
+    std::vector<entity> entities;
+    for (int i = 0; i < 3; ++i) {
+        entities.push_back(reg.create());
+    }
+    entities.push_back(entities[2]);
+    try {
+        reg.insert(entities.begin(), entities.end(), position{1, 1, 1});
+        ADD_FAILURE() << "expected std::invalid_argument for a repeated entity";
+    } catch (const std::invalid_argument &e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find("registry::insert"), std::string::npos) << what;
+        EXPECT_NE(what.find("entity 2"), std::string::npos) << what;
+    }
+    EXPECT_EQ(reg.storage<position>().size(), 0u) << "nothing inserted when the range repeats an entity";
+}
+
 TEST(registry_test, components_are_destroyed_with_the_registry) {
     const auto before = counted::live;
     {

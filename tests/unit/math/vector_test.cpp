@@ -3,6 +3,7 @@
 #include "edyn/math/vector3.hpp"
 #include <cmath>
 #include <gtest/gtest.h>
+#include <utility>
 
 using namespace edyn;
 
@@ -176,4 +177,16 @@ TEST(math_test, normalize_angle_wraps_into_half_open_range) {
     EXPECT_NEAR(normalize_angle(-half_pi), -half_pi, tol);
     EXPECT_NEAR(normalize_angle(pi2 + 0.5), 0.5, 1e-4);
     EXPECT_NEAR(normalize_angle(-pi2 - 0.5), -0.5, 1e-4);
+}
+
+TEST(vector2_test, index_outside_0_and_1_is_refused_in_debug_builds) {
+    vector2 v{3, 4};
+    EXPECT_EQ(v[0], 3);
+    EXPECT_EQ(v[1], 4);
+#if defined(EDYN_ASSERTIONS) && EDYN_ASSERTIONS
+    EXPECT_DEATH((void)v[2], "i >= 0 && i < 2");
+    EXPECT_DEATH((void)std::as_const(v)[-1], "i >= 0 && i < 2");
+#else
+    GTEST_SKIP() << "EDYN_ASSERT is compiled out in this build";
+#endif
 }

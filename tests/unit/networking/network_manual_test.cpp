@@ -4,6 +4,9 @@
 #include <deque>
 #include <edyn/edyn.hpp>
 #include <gtest/gtest.h>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -150,6 +153,58 @@ TEST(network_manual, settings_and_calls_are_validated) {
     EXPECT_THROW(server_set_client_round_trip_time(server, server.create(), 0.1), std::invalid_argument);
     auto c = server_make_client(server);
     EXPECT_THROW(server_set_client_round_trip_time(server, c, std::nan("")), std::invalid_argument);
+    deinit_network_server(server);
+}
+
+// Runs `fn`, expecting std::invalid_argument whose message contains every fragment.
+template<typename Fn>
+void expect_invalid(Fn fn, std::initializer_list<const char *> fragments) {
+    try {
+        fn();
+        ADD_FAILURE() << "expected std::invalid_argument";
+    } catch (const std::invalid_argument &e) {
+        std::string what = e.what();
+        for (auto *fragment : fragments)
+            EXPECT_NE(what.find(fragment), std::string::npos)
+                << "message: " << what << "\nmissing: " << fragment;
+    }
+}
+
+TEST(network_manual, server_client_settings_need_a_server) {
+    registry plain;
+    attach(plain, init_config{execution_mode::sequential});
+    auto e = plain.create();
+    expect_invalid([&] { server_set_client_round_trip_time(plain, e, 0.1); },
+                   {"server_set_client_round_trip_time", "not a network server"});
+    expect_invalid([&] { server_set_client_snapshot_rate(plain, e, 10); },
+                   {"server_set_client_snapshot_rate", "not a network server"});
+}
+
+TEST(network_manual, server_refuses_a_bad_client_snapshot_rate) {
+    registry server;
+    attach(server, init_config{execution_mode::sequential});
+    init_network_server(server);
+    auto c = server_make_client(server);
+    for (double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+        expect_invalid([&] { server_set_client_snapshot_rate(server, c, bad); },
+                       {"server_set_client_snapshot_rate", "rate", std::to_string(bad).c_str()});
+    }
+    EXPECT_EQ(server.get<remote_client>(c).snapshot_rate, 30) << "a refused rate is not stored";
+    server_set_client_snapshot_rate(server, c, 10);
+    EXPECT_EQ(server.get<remote_client>(c).snapshot_rate, 10);
+    EXPECT_THROW(server_set_client_snapshot_rate(server, server.create(), 10), std::invalid_argument);
+
+    // Written directly, a bad rate is refused by the next update, before anything is sent.
+    server.get<remote_client>(c).snapshot_rate = std::nan("");
+    auto client_name = "entity " + std::to_string(to_index(c));
+    expect_invalid([&] { update_network_server(server); },
+                   {"update_network_server", "snapshot_rate", client_name.c_str(), "nan"});
+    server.get<remote_client>(c).snapshot_rate = 0;
+    EXPECT_THROW(update_network_server(server), std::invalid_argument);
+    EXPECT_EQ(server.get<remote_client>(c).packets_sent, 0u) << "nothing was sent to the client";
+    server.get<remote_client>(c).snapshot_rate = 20;
+    update_network_server(server);
+    EXPECT_GT(server.get<remote_client>(c).packets_sent, 0u);
     deinit_network_server(server);
 }
 

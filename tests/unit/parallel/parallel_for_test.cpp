@@ -4,8 +4,10 @@
 #include <chrono>
 #include <edyn/parallel/parallel_for.hpp>
 #include <gtest/gtest.h>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -115,6 +117,34 @@ TEST(parallel_for, rejects_a_zero_grain_and_a_reversed_interval) {
     } catch (const std::invalid_argument &e) {
         EXPECT_NE(std::string(e.what()).find("parallel_for"), std::string::npos) << e.what();
     }
+}
+
+TEST(parallel_for, without_a_scheduler_rejects_a_zero_grain_and_a_reversed_interval) {
+    auto *none = static_cast<task_scheduler *>(nullptr);
+    int calls = 0;
+    auto count = [&](int) { ++calls; };
+    EXPECT_THROW(parallel_for(none, 0, 10, 0, count), std::invalid_argument);
+    try {
+        parallel_for(none, 10, 3, 1, count);
+        ADD_FAILURE() << "no exception for first > last without a scheduler";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("parallel_for"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(calls, 0);
+}
+
+TEST(task_scheduler, rejects_a_thread_count_oneTBB_cannot_take) {
+    auto too_many = unsigned(std::numeric_limits<int>::max()) + 1u;
+    try {
+        task_scheduler scheduler(too_many);
+        ADD_FAILURE() << "no exception for " << too_many << " threads, concurrency "
+                      << scheduler.concurrency();
+    } catch (const std::invalid_argument &e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find("task_scheduler"), std::string::npos) << what;
+        EXPECT_NE(what.find(std::to_string(too_many)), std::string::npos) << what;
+    }
+    EXPECT_THROW(task_scheduler{std::numeric_limits<unsigned>::max()}, std::invalid_argument);
 }
 
 namespace {

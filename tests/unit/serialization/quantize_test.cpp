@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 using namespace edyn;
@@ -18,14 +19,14 @@ namespace {
 // to first order, with room for the second-order terms.
 constexpr double max_angle_error = 0.005;
 
-std::vector<std::uint8_t> encode(vector3 v, scalar quantum) {
+std::vector<std::uint8_t> encode(vector3 v, quantum_step quantum) {
     std::vector<std::uint8_t> data;
     memory_output_archive archive(data);
     serialize_quantized(archive, v, quantum);
     return data;
 }
 
-vector3 decode(const std::vector<std::uint8_t> &data, scalar quantum, bool *ok = nullptr) {
+vector3 decode(const std::vector<std::uint8_t> &data, quantum_step quantum, bool *ok = nullptr) {
     memory_input_archive archive(data.data(), data.size());
     auto v = vector3{-1, -1, -1};
     serialize_quantized(archive, v, quantum);
@@ -34,7 +35,7 @@ vector3 decode(const std::vector<std::uint8_t> &data, scalar quantum, bool *ok =
     return v;
 }
 
-vector3 round_trip(vector3 v, scalar quantum) {
+vector3 round_trip(vector3 v, quantum_step quantum) {
     bool ok = false;
     auto result = decode(encode(v, quantum), quantum, &ok);
     EXPECT_TRUE(ok);
@@ -77,7 +78,8 @@ quaternion random_rotation(std::mt19937 &rng) {
     return {scalar(c[0] / len), scalar(c[1] / len), scalar(c[2] / len), scalar(c[3] / len)};
 }
 
-void check_round_trip_error(scalar quantum, scalar range, const char *what) {
+void check_round_trip_error(quantum_step step, scalar range, const char *what) {
+    const auto quantum = step.value;
     std::mt19937 rng(1234);
     std::uniform_real_distribution<scalar> uniform(-range, range);
     // Also magnitudes spread over many octaves, where float's own spacing changes.
@@ -88,7 +90,7 @@ void check_round_trip_error(scalar quantum, scalar range, const char *what) {
         for (int j = 0; j < 3; ++j) {
             v[j] = (i & 1) ? uniform(rng) : scalar(std::exp2(exponent(rng))) * (rng() & 1 ? 1 : -1);
         }
-        auto result = round_trip(v, quantum);
+        auto result = round_trip(v, step);
         for (int j = 0; j < 3; ++j) {
             auto error = std::abs(result[j] - v[j]);
             worst = std::max(worst, error);
@@ -149,6 +151,21 @@ TEST(quantize, byte_sizes) {
     EXPECT_EQ(encode({1000, -1000, 1023}, position_quantum).size(), 9u);
     auto far = vector3{max_quantized_coordinate, -max_quantized_coordinate, max_quantized_coordinate};
     EXPECT_EQ(encode(far, position_quantum).size(), 15u);
+}
+
+// serialize_quantized(archive, v, 0) and a quantum known only at run time do not compile: a
+// quantum_step is made from a constant, checked when it is compiled.
+template<typename T>
+concept quantum_from_scalar = std::is_convertible_v<T, quantum_step>;
+
+TEST(quantize, the_quantum_is_a_checked_compile_time_constant) {
+    static_assert(!std::is_default_constructible_v<quantum_step>);
+    static_assert(quantum_from_scalar<scalar>, "constants convert implicitly");
+    constexpr quantum_step position = position_quantum, velocity = velocity_quantum, custom = scalar(0.125);
+    EXPECT_EQ(position.value, position_quantum);
+    EXPECT_EQ(velocity.value, velocity_quantum);
+    EXPECT_EQ(custom.value, scalar(0.125));
+    EXPECT_EQ(round_trip({scalar(0.25), -1, 3}, custom), (vector3{scalar(0.25), -1, 3}));
 }
 
 TEST(quantize, a_value_past_the_bound_fails) {

@@ -186,6 +186,44 @@ TEST(moment_of_inertia_test, invalid_mass_throws) {
               std::numeric_limits<scalar>::infinity());
 }
 
+TEST(moment_of_inertia_test, invalid_dimensions_and_shifts_throw) {
+    auto nan = std::numeric_limits<scalar>::quiet_NaN();
+    auto inf = std::numeric_limits<scalar>::infinity();
+    expect_invalid_argument([] { moment_of_inertia_solid_sphere(1, 0); },
+                            {"moment_of_inertia_solid_sphere", "radius", "got 0"});
+    expect_invalid_argument([&] { moment_of_inertia_solid_sphere(1, nan); }, {"radius", "got nan"});
+    expect_invalid_argument(
+        [] {
+            moment_of_inertia_solid_box(1, {1, -2, 1});
+        },
+        {"moment_of_inertia_solid_box", "half_extents.y", "got -2"});
+    expect_invalid_argument([&] { moment_of_inertia_solid_box(1, {1, 1, inf}); }, {"half_extents.z", "inf"});
+    expect_invalid_argument([] { moment_of_inertia_solid_cylinder(1, -1, 1, coordinate_axis::x); },
+                            {"moment_of_inertia_solid_cylinder", "radius", "got -1"});
+    expect_invalid_argument([] { moment_of_inertia_solid_cylinder(1, 1, 0, coordinate_axis::x); },
+                            {"moment_of_inertia_solid_cylinder", "half_length", "got 0"});
+    expect_invalid_argument([&] { moment_of_inertia_solid_capsule(1, inf, 1, coordinate_axis::y); },
+                            {"moment_of_inertia_solid_capsule", "radius", "inf"});
+    expect_invalid_argument([&] { moment_of_inertia_solid_capsule(1, 1, nan, coordinate_axis::y); },
+                            {"moment_of_inertia_solid_capsule", "half_length", "nan"});
+    auto I = moment_of_inertia_solid_sphere(2, 1);
+    expect_invalid_argument(
+        [&] {
+            shift_moment_of_inertia(I, -1, {1, 0, 0});
+        },
+        {"shift_moment_of_inertia", "mass", "got -1"});
+    expect_invalid_argument([&] { shift_moment_of_inertia(I, nan, {1, 0, 0}); }, {"mass", "nan"});
+    expect_invalid_argument([&] { shift_moment_of_inertia(I, inf, {1, 0, 0}); }, {"mass", "inf"});
+    expect_invalid_argument(
+        [&] {
+            shift_moment_of_inertia(I, 2, {0, nan, 0});
+        },
+        {"shift_moment_of_inertia", "offset", "nan"});
+    // A zero mass or offset moves nothing.
+    expect_matrix_near(shift_moment_of_inertia(I, 0, {1, 2, 3}), I, 0);
+    expect_matrix_near(shift_moment_of_inertia(I, 2, vector3_zero), I, 0);
+}
+
 TEST(moment_of_inertia_test, variant_matches_direct_calls) {
     auto shape = capsule_shape{scalar(0.3), scalar(0.8), coordinate_axis::z};
     EXPECT_EQ(moment_of_inertia(shapes_variant_t{shape}, 2), moment_of_inertia(shape, 2));

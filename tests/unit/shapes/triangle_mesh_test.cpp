@@ -466,18 +466,27 @@ TEST(triangle_mesh_test, initialize_rejects_bad_meshes) {
     expect_initialize_throws(line, {0, 1, 2}, {}, {}, {"1", "zero area"});
 }
 
-TEST(triangle_mesh_test, inserting_after_initialize_requires_initialize_again) {
+TEST(triangle_mesh_test, inserting_after_initialize_is_refused) {
     auto mesh = make_mesh({{0, 0, 0}, {0, 0, 1}, {1, 0, 1}}, {0, 1, 2});
     ASSERT_TRUE(mesh.initialized());
     std::vector<vector3> more{{1, 0, 0}};
-    mesh.insert_vertices(more.begin(), more.end());
-    EXPECT_FALSE(mesh.initialized());
     std::vector<int> idx{0, 2, 3};
-    mesh.insert_indices(idx.begin(), idx.end());
-    mesh.initialize();
-    ASSERT_EQ(mesh.num_triangles(), 2u);
-    EXPECT_EQ(mesh.get_adjacent_triangle(0, 2), 1);
-    EXPECT_FLOAT_EQ(mesh.get_aabb().max.x, 1);
+    std::vector<scalar> coefficients{scalar(0.5)};
+    expect_invalid_argument([&] { mesh.insert_vertices(more.begin(), more.end()); },
+                            {"triangle_mesh::insert_vertices", "initialized"});
+    expect_invalid_argument([&] { mesh.insert_indices(idx.begin(), idx.end()); },
+                            {"triangle_mesh::insert_indices", "initialized"});
+    expect_invalid_argument(
+        [&] { mesh.insert_friction_coefficients(coefficients.begin(), coefficients.end()); },
+        {"triangle_mesh::insert_friction_coefficients", "initialized"});
+    expect_invalid_argument(
+        [&] { mesh.insert_restitution_coefficients(coefficients.begin(), coefficients.end()); },
+        {"triangle_mesh::insert_restitution_coefficients", "initialized"});
+    // The mesh is as it was, still initialized.
+    EXPECT_TRUE(mesh.initialized());
+    EXPECT_EQ(mesh.num_vertices(), 3u);
+    EXPECT_EQ(mesh.num_triangles(), 1u);
+    EXPECT_FALSE(mesh.has_per_vertex_friction());
 }
 
 // static_tree

@@ -333,6 +333,28 @@ namespace edyn {
 namespace {
 
 // The manual's components read and write like the vector or quaternion they hold.
+TEST(world, state_getters_refuse_a_registry_that_is_not_attached) {
+    registry reg;
+    auto expect_refused = [](auto fn, const char *function) {
+        try {
+            fn();
+            ADD_FAILURE() << function << ": expected std::invalid_argument";
+        } catch (const std::invalid_argument &e) {
+            std::string what = e.what();
+            EXPECT_NE(what.find(function), std::string::npos) << what;
+            EXPECT_NE(what.find("not attached"), std::string::npos) << what;
+        }
+    };
+    expect_refused([&] { (void)is_paused(reg); }, "is_paused");
+    expect_refused([&] { (void)get_simulation_time(reg); }, "get_simulation_time");
+    expect_refused([&] { (void)get_step_count(reg); }, "get_step_count");
+    attach(reg);
+    EXPECT_FALSE(is_paused(reg));
+    EXPECT_EQ(get_step_count(reg), 0u);
+    detach(reg);
+    EXPECT_THROW((void)get_step_count(reg), std::invalid_argument);
+}
+
 TEST(components, take_braced_coordinates_and_plain_vectors) {
     registry reg;
     auto e = reg.create();
