@@ -53,8 +53,9 @@ cone_row current_row(const cone_constraint_solver &s, const solver_body &a, cons
     // d theta / d r = (cos theta u - sin theta e0) / |r| with u the radial direction; C = alpha
     // - theta grows along n. The point is B's pivot; A's lever arm reaches the same point, since
     // the cone turns with A.
+    // (sin theta = rho / |r| and cos theta = x / |r|.)
     auto u = (e1 * y + e2 * z) / rho;
-    auto n = (e0 * std::sin(theta) - u * std::cos(theta)) / len;
+    auto n = (e0 * rho - u * x) / (len * len);
     return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), alpha - theta, true};
 }
 

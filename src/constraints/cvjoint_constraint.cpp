@@ -149,6 +149,7 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto pose = current_pose(s.anchor, a, b);
+    update_point_mass(s.anchor, a, b, pose);
     auto cv = current_cv(s, a, b);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     apply_row_impulse(angular_jacobian(-cv.axis), a, b, s.twist_impulse);

@@ -121,6 +121,7 @@ void warm_start(generic_constraint_solver &s, std::span<solver_body> bodies) noe
     auto &b = bodies[s.anchor.body[1]];
     auto rows = current_rows(s, a, b);
     auto pose = current_pose(s.anchor, a, b);
+    if (s.linear_block) update_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.linear_block_impulse, pose.rA, pose.rB);
     apply_angular_impulse(a, b, s.angular_block_impulse);
     for (int i = 0; i < 6; ++i) {
@@ -134,10 +135,11 @@ void solve(generic_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
+    // The rows depend on the bodies' poses only, which solving velocities does not change.
+    auto rows = current_rows(s, a, b);
     // Angular rows first, then linear: the pivots have the final word.
     for (int n = 0; n < 6; ++n) {
         auto i = (n + 3) % 6;
-        auto rows = current_rows(s, a, b);
         auto &j = rows.j[i];
         auto q = rows.q[i];
         auto &d = s.dof[i];

@@ -194,6 +194,7 @@ void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexc
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto pose = current_pose(s.anchor, a, b);
+    update_point_mass(s.anchor, a, b, pose);
     auto hinge = current_hinge(s, a, b);
     auto axis = hinge.frameA.column(0);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);

@@ -24,21 +24,26 @@ void warm_start(point_constraint_solver &s, std::span<solver_body> bodies) noexc
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto pose = current_pose(s.anchor, a, b);
+    update_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     apply_angular_impulse(a, b, s.friction_impulse);
 }
 
 void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body &a, solver_body &b,
                        const constraint_solve_context &ctx) noexcept {
+    // Solved as a block with the inverse of K, the pivots' relative velocity change per unit
+    // impulse (anchor.point_mass, see update_point_mass), so the three directions do not fight.
     auto pose = current_pose(anchor, a, b);
-    // K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB]: the pivots' relative velocity
-    // change per unit impulse. Solved as a block, so the three directions do not fight.
-    auto sA = skew_matrix(pose.rA), sB = skew_matrix(pose.rB);
-    auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) - sA * a.inv_inertia * sA -
-             sB * b.inv_inertia * sB;
-    auto det = determinant(k);
-    if (!(std::abs(det) > scalar(1e-12))) return;
-    auto mass = inverse(k);
+    auto mass = anchor.point_mass;
+    if (length_sqr(pose.d) > large_point_separation_sqr) {
+        // Pivots far apart move far when corrected: the mass is recomputed, not reused.
+        joint_anchor fresh = anchor;
+        update_point_mass(fresh, a, b, pose);
+        if (!fresh.point_mass_valid) return;
+        mass = fresh.point_mass;
+    } else if (!anchor.point_mass_valid) {
+        return;
+    }
 
     scalar mass_scale = 1, impulse_scale = 0;
     vector3 bias = vector3_zero;

@@ -40,6 +40,13 @@ struct joint_anchor {
     /// Pivot B relative to body B's centre of mass, world space (m), at the start of the step.
     vector3 rA{vector3_zero}, rB{vector3_zero};
     vector3 separation{vector3_zero}; ///< Pivot A minus pivot B, world space (m).
+    /// Inverse of the pivots' 3x3 effective mass K (kg) at the pose update_point_mass() last saw.
+    /// K depends only on the bodies' poses and masses, so the velocity passes reuse it until the
+    /// bodies move: it is refreshed at each sub-step's warm start and by the first position pass
+    /// after the sub-step's integration, which the later passes and the relax pass then reuse.
+    matrix3x3 point_mass{matrix3x3_zero};
+    /// Whether `point_mass` holds an inverse: false when K is singular (neither body moves).
+    bool point_mass_valid{false};
 };
 
 /// Current pivots: lever arms from the centres of mass and d = pivot A - pivot B.
@@ -216,8 +223,24 @@ void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &i
 /// @param b Body B's solver state: its `delta_position`, `delta_rotation` and velocities change.
 /// @param fraction Share of the separation removed, in [0, 1].
 /// @param inv_h 1 / h of the sub-step just integrated (1/s).
-void project_point(const joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
-                   scalar inv_h) noexcept;
+/// @param refresh_mass Whether to recompute `anchor.point_mass` for the current pose first (the
+/// first pass after an integration); later passes reuse it, a few corrections out of date,
+/// unless the pivots are more than 1 cm apart (large corrections turn the bodies too much).
+void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction, scalar inv_h,
+                   bool refresh_mass) noexcept;
+
+/// Squared pivot separation (m²) beyond which a joint's reused effective mass is recomputed:
+/// past a centimetre, corrections turn the bodies enough to make it diverge.
+inline constexpr scalar large_point_separation_sqr = scalar(1e-4);
+
+/// Computes `anchor.point_mass`, the inverse of the pivots' effective mass matrix
+/// K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB], for the pose `pose` of the bodies.
+/// @param anchor The joint's pivots; its `point_mass` and `point_mass_valid` are written.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param pose The current pose, from current_pose().
+void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
+                       const joint_pose &pose) noexcept;
 /// The same along the pivots' direction only, to bring them `distance` apart.
 /// Position projection of the distance joint; does nothing when the pivots coincide.
 /// @param anchor The joint's pivots at the start of the step.
