@@ -214,7 +214,11 @@ void update(registry &registry, double time) {
 
 void wait_for_simulation(registry &registry) {
     world(registry);
-    if (auto *async = registry.ctx().find<async_execution>()) async->wait(registry);
+    if (auto *async = registry.ctx().find<async_execution>()) {
+        async->wait(registry);
+        return;
+    }
+    run_pending_replies(registry);
 }
 
 void update(registry &registry) {

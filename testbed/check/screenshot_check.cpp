@@ -5,48 +5,52 @@
 // whose lines of sight miss every body show the sky, and that the picture is not blank.
 #include "body_colour.hpp"
 #include "camera.hpp"
+#include "image.hpp"
+#include "interaction_check.hpp"
 #include "samples.hpp"
 #include "world.hpp"
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <stb_image.h>
 
 namespace {
 
-struct image {
-    int width{0}, height{0};
-    std::unique_ptr<unsigned char, void (*)(void *)> pixels{nullptr, stbi_image_free};
-    testbed::colour at(int x, int y) const {
-        auto *p = pixels.get() + (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3;
-        return {p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f};
-    }
-};
+using testbed::image;
+using testbed::is_background;
+using testbed::lit_match;
 
-// Lit colours are the body's colour times a light factor (the shader's 0.4 to 1.0): the pixel
-// must be close to some such multiple.
-bool lit_match(testbed::colour pixel, testbed::colour base) {
-    float dot_pc = pixel.r * base.r + pixel.g * base.g + pixel.b * base.b;
-    float dot_cc = base.r * base.r + base.g * base.g + base.b * base.b;
-    float k = dot_pc / dot_cc;
-    if (k < 0.3f || k > 1.1f) return false;
-    float worst = std::max(
-        {std::abs(pixel.r - k * base.r), std::abs(pixel.g - k * base.g), std::abs(pixel.b - k * base.b)});
-    return worst < 0.06f;
-}
-
-bool is_background(testbed::colour pixel) {
-    auto bg = testbed::background_colour;
-    return std::abs(pixel.r - bg.r) < 0.015f && std::abs(pixel.g - bg.g) < 0.015f &&
-           std::abs(pixel.b - bg.b) < 0.015f;
-}
-
-// Whether the line of sight through the pixel meets any body.
+// Whether the line of sight through the pixel may meet a drawn body. A paged mesh counts
+// wherever its bounds are: the testbed draws the pages it has seen loaded, which may be more
+// than this run has loaded now.
 bool sight_hits(const edyn::registry &registry, const testbed::orbit_camera &camera, float x, float y, int w,
                 int h) {
     auto r = testbed::pixel_ray(camera, x, y, w, h);
-    return edyn::raycast(registry, r.origin, r.origin + r.direction * edyn::scalar(1000)).hit();
+    auto p1 = r.origin + r.direction * edyn::scalar(1000);
+    if (edyn::raycast(registry, r.origin, p1).hit()) return true;
+    for (auto [e, shape] : registry.view<edyn::paged_mesh_shape>().each()) {
+        (void)e;
+        if (edyn::intersect_segment(shape.trimesh->get_aabb(), r.origin, p1)) return true;
+    }
+    return false;
+}
+
+// Pixels whose line of sight first meets a triangle mesh or a loaded page of a paged mesh: the
+// terrain's colour must be there. Returns {checked, matched}.
+std::pair<unsigned, unsigned> check_terrain(const edyn::registry &registry,
+                                            const testbed::orbit_camera &camera, const image &img) {
+    unsigned checked = 0, matched = 0;
+    for (int y = 8; y < img.height - 8; y += 16) {
+        for (int x = 8; x < img.width - 8; x += 16) {
+            auto r = testbed::pixel_ray(camera, float(x) + 0.5f, float(y) + 0.5f, img.width, img.height);
+            auto hit = edyn::raycast(registry, r.origin, r.origin + r.direction * edyn::scalar(1000));
+            if (!hit.hit() || !registry.any_of<edyn::mesh_shape, edyn::paged_mesh_shape>(hit.entity))
+                continue;
+            ++checked;
+            matched += testbed::lit_matches_around(img, x, y, testbed::terrain_colour) >= 5;
+        }
+    }
+    return {checked, matched};
 }
 
 } // namespace
@@ -80,25 +84,45 @@ int main(int argc, char **argv) {
     cli.add_option("--steps", steps, "the steps it was taken after")->required();
     cli.add_option("--image", path, "the PNG file");
     cli.add_flag("--all-samples", all, "no picture: run every sample for --steps and check its bodies");
+    std::string script, log_path;
+    bool targets = false;
+    int width = 800, height = 450;
+    cli.add_option("--script", script, "the mouse script the testbed played (checks what it did)");
+    cli.add_option("--log", log_path, "with --script: the testbed's output, its \"script:\" lines");
+    cli.add_flag("--print-targets", targets,
+                 "no picture: print the pixels of the highest body and of a lowest one, \"TX TY BX BY\"");
+    cli.add_option("--width", width, "with --print-targets: image width")->check(CLI::Range(64, 8192));
+    cli.add_option("--height", height, "with --print-targets: image height")->check(CLI::Range(64, 8192));
     CLI11_PARSE(cli, argc, argv);
     if (all) return check_all_samples(steps);
-    if (scene.empty() || path.empty()) {
-        std::fprintf(stderr, "--scene and --image are needed (or --all-samples)\n");
-        return 2;
-    }
-
     auto *sample = testbed::find_sample(scene);
     if (!sample) {
         std::fprintf(stderr, "no sample named '%s' (samples: %s)\n", scene.c_str(),
                      testbed::sample_names().c_str());
         return 2;
     }
+    if (targets) return testbed::print_targets(*sample, steps, width, height);
+    if (path.empty()) {
+        std::fprintf(stderr, "--image is needed (or --all-samples, or --print-targets)\n");
+        return 2;
+    }
     image img;
-    int channels = 0;
-    img.pixels.reset(stbi_load(path.c_str(), &img.width, &img.height, &channels, 3));
-    if (!img.pixels) {
+    if (!img.load(path)) {
         std::fprintf(stderr, "cannot read %s\n", path.c_str());
         return 1;
+    }
+
+    if (!script.empty()) {
+        if (log_path.empty()) {
+            std::fprintf(stderr, "--script needs --log\n");
+            return 2;
+        }
+        try {
+            return testbed::check_interaction(*sample, steps, script, log_path, img);
+        } catch (const std::exception &e) {
+            std::fprintf(stderr, "%s\n", e.what());
+            return 1;
+        }
     }
 
     testbed::sample_state state;
@@ -118,10 +142,7 @@ int main(int argc, char **argv) {
         auto hit = edyn::raycast(*registry, eye, centre + dir * edyn::scalar(0.01));
         if (!hit.hit()) continue; // a centre in empty space (a compound's)
         auto expected = testbed::body_colour(*registry, hit.entity, false);
-        int good = 0;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-                good += lit_match(img.at(px + dx, py + dy), expected);
+        int good = testbed::lit_matches_around(img, px, py, expected);
         ++checked;
         if (good >= 5) {
             ++matched;
@@ -150,14 +171,17 @@ int main(int argc, char **argv) {
             sky_matched += is_background(img.at(x, y));
         }
     }
+    auto [terrain_checked, terrain_matched] = check_terrain(*registry, camera, img);
+    if (terrain_checked > 0)
+        std::printf("%u of %u terrain samples in the terrain's colour\n", terrain_matched, terrain_checked);
     double drawn = double(not_background) / (double(img.width) * img.height);
     std::printf("%s after %u steps: %u of %u body centres in their body's colour, %u of %u sky samples "
                 "background, %.1f%% of the image drawn\n",
                 scene.c_str(), steps, matched, checked, sky_matched, sky_checked, 100 * drawn);
     bool ok = checked >= 5 && matched >= checked * 9 / 10 && sky_checked >= 10 &&
-              sky_matched == sky_checked && drawn > 0.05;
+              sky_matched == sky_checked && drawn > 0.05 && terrain_matched >= terrain_checked * 9 / 10;
     std::printf(ok ? "ok\n"
                    : "FAILED (need 5 or more centres checked, 90%% matching, 10 or more sky samples all "
-                     "background, 5%% drawn)\n");
+                     "background, 5%% drawn, 90%% of terrain samples matching)\n");
     return ok ? 0 : 1;
 }

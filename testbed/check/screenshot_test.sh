@@ -6,14 +6,7 @@ set -uo pipefail
 testbed=$1 checker=$2 sample=$3 output=$4
 steps=${STEPS:-45}
 
-if ! command -v xvfb-run >/dev/null; then
-  echo "skipped: xvfb-run is not installed (apt-get install xvfb xauth), so no X server for the testbed"
-  exit 77
-fi
-if ! xvfb-run -a true 2>/dev/null; then
-  echo "skipped: xvfb-run cannot start an X server here"
-  exit 77
-fi
+source "$(dirname "$0")/xvfb_available.sh"
 rm -f "$output"
 xvfb-run -a "$testbed" --scene "$sample" --steps "$steps" --screenshot "$output" || exit 1
 "$checker" --scene "$sample" --steps "$steps" --image "$output"

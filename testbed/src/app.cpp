@@ -50,6 +50,7 @@ app::app(GLFWwindow *w, bool ui)
 
 app::~app() {
     if (registry) dragger.release(*registry);
+    // The registry first: raycast replies still pending point at the dragger and the probe.
     registry.reset();
     gfx.reset();
     if (with_ui) {
@@ -62,14 +63,16 @@ app::~app() {
 void app::load(const sample &s) {
     bool same = current == &s;
     if (registry) dragger.release(*registry);
-    registry.reset(); // detaches: the asynchronous worker stops here
+    registry.reset(); // detaches: the asynchronous worker stops here, pending rays are dropped
+    dragger.forget();
+    gfx->forget_meshes();
     registry = make_world(s, settings, state);
     current = &s;
     if (!same) camera = s.camera; // a reset keeps the view the user chose
     sim_clock = 0;
     edyn::update(*registry, sim_clock);
     stats.step_history.clear();
-    probe = {};
+    probe.clear();
 }
 
 void app::apply_settings() {
@@ -136,34 +139,48 @@ sample_input app::keyboard_input() const {
     return in;
 }
 
-void app::handle_mouse(int width, int height) {
-    bool captured = with_ui && ImGui::GetIO().WantCaptureMouse;
+pointer_state app::read_pointer() const {
+    pointer_state p;
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
-    auto dx = float(x - last_mouse_x), dy = float(y - last_mouse_y);
-    last_mouse_x = x;
-    last_mouse_y = y;
-    auto cursor_ray = pixel_ray(camera, float(x), float(y), width, height);
+    p.x = float(x);
+    p.y = float(y);
+    p.left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    p.right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    p.middle = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    p.shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+    if (with_ui) {
+        p.captured = ImGui::GetIO().WantCaptureMouse;
+        p.wheel = ImGui::GetIO().MouseWheel;
+    }
+    return p;
+}
 
-    bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    if (left && !left_was_down && !captured && rays_available()) dragger.grab(*registry, cursor_ray);
-    if (left && dragger.dragging()) dragger.drag(*registry, cursor_ray);
-    if (!left && dragger.dragging()) dragger.release(*registry);
-    left_was_down = left;
+void app::handle_pointer(const pointer_state &p, int width, int height) {
+    auto dx = p.x - last_pointer.x, dy = p.y - last_pointer.y;
+    bool was_down = last_pointer.left;
+    last_pointer = p;
+    auto cursor_ray = pixel_ray(camera, p.x, p.y, width, height);
 
-    if (!captured) {
-        bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-        bool middle = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-        bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
-        if (middle || (right && shift)) {
+    // A grab's hit cast in an earlier frame becomes a spring now.
+    dragger.poll(*registry);
+    if (p.left && !was_down && !p.captured) dragger.grab(*registry, cursor_ray);
+    if (p.left && dragger.dragging()) dragger.drag(*registry, cursor_ray);
+    if (!p.left) dragger.release(*registry);
+
+    if (!p.captured) {
+        if (p.middle || (p.right && p.shift)) {
             camera.pan(dx, dy, float(height));
-        } else if (right) {
+        } else if (p.right) {
             camera.orbit(dx, dy);
         }
-        if (with_ui && ImGui::GetIO().MouseWheel != 0) camera.zoom(ImGui::GetIO().MouseWheel);
+        if (p.wheel != 0) camera.zoom(p.wheel);
     }
-    probe = {};
-    if (ctl.show_ray && rays_available() && !captured) probe = cast_ray(*registry, cursor_ray);
+    if (ctl.show_ray && !p.captured) {
+        probe.cast(*registry, cursor_ray);
+    } else {
+        probe.clear();
+    }
 }
 
 void app::step_physics(double frame_dt) {
@@ -206,6 +223,14 @@ void app::gather_stats() {
         (void)e;
         ++stats.sleeping_islands;
     }
+    stats.pages = stats.loaded_pages = 0;
+    for (auto [e, shape] : r.view<edyn::paged_mesh_shape>().each()) {
+        (void)e;
+        stats.pages += shape.trimesh->num_pages();
+        // The worker loads and unloads them in asynchronous mode: not read from here then.
+        if (settings.mode != edyn::execution_mode::asynchronous)
+            stats.loaded_pages += shape.trimesh->num_loaded_pages();
+    }
 }
 
 void app::draw_frame(int width, int height, bool ui) {
@@ -221,9 +246,9 @@ void app::draw_frame(int width, int height, bool ui) {
         add_line(*gfx, from, dragger.grab_point(*registry), 1, 1, 1);
         add_cross(*gfx, from, 0.1f, 1, 1, 1);
     }
-    if (probe.body != edyn::null) {
-        add_cross(*gfx, probe.point, 0.15f, 0.1f, 1, 1);
-        add_line(*gfx, probe.point, probe.point + probe.normal, 1, 0.2f, 1);
+    if (probe.last.body != edyn::null) {
+        add_cross(*gfx, probe.last.point, 0.15f, 0.1f, 1, 1);
+        add_line(*gfx, probe.last.point, probe.last.point + probe.last.normal, 1, 0.2f, 1);
     }
     stats.draw_lists_ms = ms_since(start);
     gfx->draw();
@@ -263,7 +288,7 @@ void app::run(unsigned max_frames) {
         int w = 0, h = 0, fw = 0, fh = 0;
         glfwGetWindowSize(window, &w, &h);
         glfwGetFramebufferSize(window, &fw, &fh);
-        if (w > 0 && h > 0) handle_mouse(w, h);
+        if (w > 0 && h > 0) handle_pointer(read_pointer(), w, h);
         step_physics(frame_dt);
         if (state.follow != edyn::null && registry->valid(state.follow)) {
             // Ease towards the followed body so that the view does not shake with it.
@@ -288,20 +313,116 @@ void app::run(unsigned max_frames) {
                 steps ? physics / steps : 0.0, draw / frames, lists / frames, stats.draw_calls, stats.bodies);
 }
 
-bool app::screenshot(unsigned steps, const std::string &path) {
+void app::script_frame(const pointer_state &p, int width, int height) {
+    handle_pointer(p, width, height);
+    auto dt = float(edyn::get_fixed_dt(*registry));
+    if (state.on_frame) state.on_frame(*registry, {}, dt);
+    edyn::step_simulation(*registry);
+    // Applies the step (in asynchronous mode, once the worker has run it) and hands over the
+    // raycast replies: in every mode, a ray cast in this frame is answered before the next.
+    edyn::wait_for_simulation(*registry);
+}
+
+void app::play_script(const std::vector<script_command> &script, int width, int height) {
+    auto print_vector = [](const edyn::vector3 &v) {
+        std::printf(" %.4f %.4f %.4f", double(v.x), double(v.y), double(v.z));
+    };
+    pointer_state p = last_pointer;
+    std::vector<edyn::entity> reported; // grabbed bodies and balls, whose final place is printed
+    auto report_grab = [&] {
+        auto body = dragger.body();
+        if (body == edyn::null || std::find(reported.begin(), reported.end(), body) != reported.end()) return;
+        reported.push_back(body);
+        std::printf("script: grabbed %u at", unsigned(edyn::to_integral(body)));
+        print_vector(dragger.grab_point(*registry));
+        std::printf(" centre");
+        print_vector(registry->get<edyn::position>(body));
+        std::printf("\n");
+    };
+    auto frame = [&] {
+        script_frame(p, width, height);
+        report_grab();
+    };
+    for (auto &c : script) {
+        switch (c.action) {
+        case script_action::press:
+            p.x = c.x;
+            p.y = c.y;
+            p.left = true;
+            frame();
+            break;
+        case script_action::move: {
+            auto x0 = p.x, y0 = p.y;
+            for (unsigned i = 1; i <= c.frames; ++i) {
+                auto t = float(i) / float(c.frames);
+                p.x = x0 + (c.x - x0) * t;
+                p.y = y0 + (c.y - y0) * t;
+                frame();
+            }
+            break;
+        }
+        case script_action::release:
+            p.left = false;
+            frame();
+            break;
+        case script_action::wait:
+            for (unsigned i = 0; i < c.frames; ++i)
+                frame();
+            break;
+        case script_action::ray:
+            p.x = c.x;
+            p.y = c.y;
+            ctl.show_ray = true;
+            frame();
+            if (probe.last.body == edyn::null) {
+                std::printf("script: ray %.1f %.1f miss\n", double(c.x), double(c.y));
+            } else {
+                std::printf("script: ray %.1f %.1f hit %u at", double(c.x), double(c.y),
+                            unsigned(edyn::to_integral(probe.last.body)));
+                print_vector(probe.last.point);
+                std::printf(" normal");
+                print_vector(probe.last.normal);
+                std::printf(" centre");
+                print_vector(registry->valid(probe.last.body)
+                                 ? edyn::vector3(registry->get<edyn::position>(probe.last.body))
+                                 : edyn::vector3_zero);
+                std::printf("\n");
+            }
+            // Shown for this frame only: its marker would cover what the picture is checked for.
+            ctl.show_ray = false;
+            break;
+        case script_action::shoot: {
+            auto ball = shoot_ball(*registry, pixel_ray(camera, c.x, c.y, width, height));
+            reported.push_back(ball);
+            std::printf("script: ball %u through %.1f %.1f\n", unsigned(edyn::to_integral(ball)), double(c.x),
+                        double(c.y));
+            break;
+        }
+        }
+    }
+    for (auto body : reported) {
+        if (!registry->valid(body)) continue;
+        std::printf("script: end %u at", unsigned(edyn::to_integral(body)));
+        print_vector(registry->get<edyn::present_position>(body));
+        std::printf("\n");
+    }
+}
+
+bool app::screenshot(unsigned steps, const std::vector<script_command> &script, const std::string &path) {
     stats.physics_ms = 0;
     run_steps(*registry, state, steps, [&](double ms) {
         stats.physics_ms += ms;
         stats.step_history.push_back(float(ms));
         if (stats.step_history.size() > history_length) stats.step_history.pop_front();
     });
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (!script.empty()) play_script(script, w, h);
     // The panel shows a frame of 60 Hz: one step, of the average time.
     stats.ms_per_step = steps ? stats.physics_ms / steps : 0;
     stats.physics_ms = stats.ms_per_step;
     stats.steps = steps ? 1 : 0;
     gather_stats();
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window, &w, &h);
     // ImGui sizes a new window in its first frame and shows it from the second; the third shows
     // the drawing time of a frame after the first (whose time includes compiling shaders).
     for (int frame = 0; frame < (with_ui ? 3 : 1); ++frame) {

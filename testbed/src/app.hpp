@@ -9,6 +9,7 @@
 #include "picking.hpp"
 #include "renderer.hpp"
 #include "samples.hpp"
+#include "script.hpp"
 #include "world.hpp"
 #include <deque>
 #include <edyn/edyn.hpp>
@@ -30,6 +31,16 @@ struct frame_stats {
     std::deque<float> step_history; // ms per step, one value per frame that stepped
     int draw_calls{0};
     std::size_t bodies{0}, manifolds{0}, contact_points{0}, islands{0}, sleeping_islands{0};
+    // Pages of paged meshes loaded now, of all (loaded is unknown in asynchronous mode).
+    std::size_t pages{0}, loaded_pages{0};
+};
+
+// The mouse as a frame sees it: read from GLFW in a window, or played from a script.
+struct pointer_state {
+    float x{0}, y{0}; // pixels, origin top left
+    bool left{false}, right{false}, middle{false}, shift{false};
+    float wheel{0};       // clicks this frame
+    bool captured{false}; // over the panel
 };
 
 struct controls {
@@ -54,8 +65,10 @@ public:
     // The interactive loop, until the window closes or, when max_frames is not 0, for that many
     // frames; then prints where the time went on average.
     void run(unsigned max_frames = 0);
-    // Runs `steps` fixed steps in sequential mode, draws one frame and writes it to `path`.
-    bool screenshot(unsigned steps, const std::string &path);
+    // Runs `steps` fixed steps, then the script's frames (one fixed step each, the pointer
+    // played from the script, what it did printed as "script: ..." lines), draws one frame and
+    // writes it to `path`.
+    bool screenshot(unsigned steps, const std::vector<script_command> &script, const std::string &path);
 
     // For the panel.
     const sample *current_sample() const { return current; }
@@ -63,11 +76,10 @@ public:
     world_settings settings;
     frame_stats stats;
     controls ctl;
-    ray_hit probe; // the cursor ray's hit, when shown
+    ray_probe probe; // the cursor ray and its hit, when shown
     orbit_camera camera;
     const sample *requested{nullptr}; // set by the panel to switch samples
     void apply_settings();
-    bool rays_available() const { return settings.mode != edyn::execution_mode::asynchronous; }
 
     void on_key(int key, int action, int mods);
 
@@ -80,10 +92,13 @@ private:
     sample_state state;
     body_dragger dragger;
     double sim_clock{0};
-    double last_mouse_x{0}, last_mouse_y{0};
-    bool left_was_down{false};
+    pointer_state last_pointer;
 
-    void handle_mouse(int width, int height);
+    pointer_state read_pointer() const;
+    void handle_pointer(const pointer_state &p, int width, int height);
+    // One frame of a script: the pointer, one fixed step, its results applied.
+    void script_frame(const pointer_state &p, int width, int height);
+    void play_script(const std::vector<script_command> &script, int width, int height);
     void step_physics(double frame_dt);
     void draw_frame(int width, int height, bool ui);
     void gather_stats();

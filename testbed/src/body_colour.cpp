@@ -22,6 +22,13 @@ constexpr std::array<colour, 8> palette{{
 
 } // namespace
 
+colour palette_colour(edyn::entity body) {
+    // The entity's index picks the colour: the same scene gets the same colours every run.
+    // Mixed, so that bodies made in a regular order do not repeat a short cycle.
+    auto index = std::uint32_t(edyn::to_index(body)) * 2654435761u;
+    return palette[(index >> 16) % palette.size()];
+}
+
 colour body_colour(const edyn::registry &registry, edyn::entity body, bool grey_sleeping) {
     if (auto *tint = registry.try_get<body_tint>(body); tint && registry.all_of<edyn::static_tag>(body))
         return {tint->r, tint->g, tint->b};
@@ -31,10 +38,7 @@ colour body_colour(const edyn::registry &registry, edyn::entity body, bool grey_
     if (auto *tint = registry.try_get<body_tint>(body)) {
         c = {tint->r, tint->g, tint->b};
     } else {
-        // The entity's index picks the colour: the same scene gets the same colours every run.
-        // Mixed, so that bodies made in a regular order do not repeat a short cycle.
-        auto index = std::uint32_t(edyn::to_index(body)) * 2654435761u;
-        c = palette[(index >> 16) % palette.size()];
+        c = palette_colour(body);
     }
     if (auto *flash = registry.try_get<body_flash>(body); flash && flash->time_left > 0) {
         auto t = std::min(flash->time_left / 0.3f, 1.0f);

@@ -17,6 +17,7 @@ struct options {
     unsigned frames{0};
     std::string mode{"sequential"};
     std::string screenshot;
+    std::string script;
     int width{0}, height{0};
     bool ui{false};
     bool debug{false};
@@ -85,10 +86,13 @@ int main(int argc, char **argv) {
     cli.add_option("--steps", opt.steps, "with --screenshot: fixed steps to run before the picture")
         ->check(CLI::Range(0u, 100000u));
     cli.add_option("--screenshot", opt.screenshot, "render off-screen to this PNG file and exit");
+    cli.add_option("--script", opt.script,
+                   "with --screenshot: mouse actions played after --steps, one fixed step a frame, e.g. "
+                   "\"press 400 200; move 400 100 30; wait 60; release; ray 300 250; shoot 400 225\"");
     cli.add_option("--width", opt.width, "window or image width in pixels")->check(CLI::Range(64, 8192));
     cli.add_option("--height", opt.height, "window or image height in pixels")->check(CLI::Range(64, 8192));
     cli.add_option("--frames", opt.frames, "in a window: quit after this many frames and print the timings");
-    cli.add_option("--mode", opt.mode, "in a window: execution mode to start in")
+    cli.add_option("--mode", opt.mode, "execution mode (in a window, the one it starts in)")
         ->check(CLI::IsMember({"sequential", "multithreaded", "asynchronous"}));
     cli.add_flag("--ui", opt.ui, "with --screenshot: draw the panel too");
     cli.add_flag("--debug", opt.debug, "start with contacts, normals, AABBs and islands drawn");
@@ -116,23 +120,39 @@ int main(int argc, char **argv) {
     bool off_screen = !opt.screenshot.empty();
     if (opt.width == 0) opt.width = off_screen ? 800 : 1280;
     if (opt.height == 0) opt.height = off_screen ? 450 : 720;
+    std::vector<testbed::script_command> script;
+    if (!opt.script.empty()) {
+        if (!off_screen) {
+            std::fprintf(stderr, "edyn-testbed: --script needs --screenshot (it is played off-screen)\n");
+            return 2;
+        }
+        try {
+            script = testbed::parse_script(opt.script, opt.width, opt.height);
+        } catch (const std::invalid_argument &e) {
+            std::fprintf(stderr, "edyn-testbed: %s\n", e.what());
+            return 2;
+        }
+    }
 
     auto *window = open_window(opt, off_screen);
     if (!window) return 3;
     int status = 0;
     try {
         testbed::app app(window, !off_screen || opt.ui);
-        // Screenshots are always sequential: deterministic, so that the check can re-run them.
-        if (!off_screen && opt.mode == "multithreaded")
-            app.settings.mode = edyn::execution_mode::sequential_multithreaded;
-        if (!off_screen && opt.mode == "asynchronous") app.settings.mode = edyn::execution_mode::asynchronous;
+        // Screenshots step one fixed step at a time and wait for it in every mode, so that the
+        // check, re-running the steps sequentially, finds the same transforms.
+        if (opt.mode == "multithreaded") app.settings.mode = edyn::execution_mode::sequential_multithreaded;
+        if (opt.mode == "asynchronous") app.settings.mode = edyn::execution_mode::asynchronous;
         if (opt.debug) app.ctl.debug = {true, true, true, true, true};
         app.load(*sample);
         if (off_screen) {
-            status = app.screenshot(opt.steps, opt.screenshot) ? 0 : 1;
+            status = app.screenshot(opt.steps, script, opt.screenshot) ? 0 : 1;
             if (status == 0)
                 std::printf("edyn-testbed: %s after %u steps written to %s\n", sample->name.c_str(),
                             opt.steps, opt.screenshot.c_str());
+            if (status == 0 && app.stats.pages > 0 && opt.mode != "asynchronous")
+                std::printf("edyn-testbed: %zu of %zu mesh pages loaded\n", app.stats.loaded_pages,
+                            app.stats.pages);
         } else {
             app.run(opt.frames);
         }

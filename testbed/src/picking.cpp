@@ -2,21 +2,56 @@
 
 namespace testbed {
 
-ray_hit cast_ray(const edyn::registry &registry, const ray &r, edyn::scalar length) {
-    auto p1 = r.origin + r.direction * length;
-    auto result = edyn::raycast(registry, r.origin, p1);
+namespace {
+
+ray_hit to_hit(const edyn::raycast_result &result, edyn::vector3 p0, edyn::vector3 p1) {
     ray_hit hit;
     if (!result.hit()) return hit;
     hit.body = result.entity;
-    hit.point = edyn::lerp(r.origin, p1, result.fraction);
+    hit.point = edyn::lerp(p0, p1, result.fraction);
     hit.normal = result.normal;
     return hit;
 }
 
-bool body_dragger::grab(edyn::registry &registry, const ray &r) {
+} // namespace
+
+void ray_probe::cast(edyn::registry &registry, const ray &r, edyn::scalar length) {
+    edyn::raycast_delegate_type delegate;
+    delegate.connect<&ray_probe::on_result>(*this);
+    edyn::raycast_async(registry, r.origin, r.origin + r.direction * length, delegate);
+}
+
+void ray_probe::on_result(edyn::raycast_id_type, const edyn::raycast_result &result, edyn::vector3 p0,
+                          edyn::vector3 p1) {
+    last = to_hit(result, p0, p1);
+}
+
+void body_dragger::grab(edyn::registry &registry, const ray &r) {
     release(registry);
-    auto hit = cast_ray(registry, r);
-    if (hit.body == edyn::null || !registry.all_of<edyn::dynamic_tag>(hit.body)) return false;
+    edyn::raycast_delegate_type delegate;
+    delegate.connect<&body_dragger::on_result>(*this);
+    pending_ray = r;
+    waiting_for =
+        edyn::raycast_async(registry, r.origin, r.origin + r.direction * edyn::scalar(500), delegate);
+}
+
+void body_dragger::on_result(edyn::raycast_id_type id, const edyn::raycast_result &result, edyn::vector3 p0,
+                             edyn::vector3 p1) {
+    // A hit for a grab released (or replaced) since is dropped.
+    if (waiting_for != id) return;
+    waiting_for.reset();
+    pending_hit = to_hit(result, p0, p1);
+}
+
+void body_dragger::poll(edyn::registry &registry) {
+    if (!pending_hit) return;
+    auto hit = *pending_hit;
+    auto r = *pending_ray;
+    pending_hit.reset();
+    pending_ray.reset();
+    // The body may have gone since the ray was cast (asynchronous mode: a frame or two ago).
+    if (hit.body == edyn::null || !registry.valid(hit.body) || !registry.all_of<edyn::dynamic_tag>(hit.body))
+        return;
     grabbed = hit.body;
     distance = edyn::dot(hit.point - r.origin, r.direction);
     auto &pos = registry.get<edyn::position>(grabbed);
@@ -38,7 +73,6 @@ bool body_dragger::grab(edyn::registry &registry, const ray &r) {
                                                                        c.damping = mass * 30;
                                                                    });
     edyn::wake_up_entity(registry, grabbed);
-    return true;
 }
 
 void body_dragger::drag(edyn::registry &registry, const ray &r) {
@@ -56,7 +90,14 @@ void body_dragger::drag(edyn::registry &registry, const ray &r) {
 void body_dragger::release(edyn::registry &registry) {
     if (spring != edyn::null && registry.valid(spring)) registry.destroy(spring);
     if (anchor != edyn::null && registry.valid(anchor)) registry.destroy(anchor);
+    forget();
+}
+
+void body_dragger::forget() {
     spring = anchor = grabbed = edyn::null;
+    waiting_for.reset();
+    pending_ray.reset();
+    pending_hit.reset();
 }
 
 edyn::vector3 body_dragger::anchor_position(const edyn::registry &registry) const {

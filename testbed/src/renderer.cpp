@@ -151,10 +151,7 @@ renderer::~renderer() {
         glDeleteBuffers(1, &m.vbo);
         glDeleteBuffers(1, &m.ibo);
     }
-    for (auto &[key, m] : trimeshes) {
-        glDeleteVertexArrays(1, &m.vao);
-        glDeleteBuffers(1, &m.vbo);
-    }
+    forget_meshes();
     unsigned buffers[] = {instance_vbo, batch_vbo, line_vbo};
     glDeleteBuffers(3, buffers);
     unsigned arrays[] = {batch_vao, line_vao};
@@ -206,24 +203,45 @@ void renderer::begin(const mat4 &vp, int width, int height) {
     glViewport(0, 0, width, height);
 }
 
+renderer::gpu_trimesh renderer::upload(const edyn::triangle_mesh &mesh) {
+    auto vertices = make_triangle_mesh(mesh);
+    gpu_trimesh m;
+    m.vertex_count = int(vertices.size());
+    glGenVertexArrays(1, &m.vao);
+    glGenBuffers(1, &m.vbo);
+    glBindVertexArray(m.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(mesh_vertex)), vertices.data(),
+                 GL_STATIC_DRAW);
+    float_attrib(0, 3, sizeof(mesh_vertex), 0);
+    float_attrib(1, 3, sizeof(mesh_vertex), 3 * sizeof(float));
+    glBindVertexArray(0);
+    return m;
+}
+
 void renderer::add_triangle_mesh(const edyn::triangle_mesh &mesh, const instance &transform) {
-    auto it = trimeshes.find(&mesh);
+    auto it = trimeshes.find({&mesh, 0});
+    if (it == trimeshes.end()) it = trimeshes.emplace(std::pair{&mesh, std::size_t(0)}, upload(mesh)).first;
+    trimesh_draws.emplace_back(&it->second, transform);
+}
+
+void renderer::add_mesh_page(const edyn::paged_triangle_mesh &mesh, std::size_t page,
+                             const edyn::triangle_mesh *loaded, const instance &transform) {
+    auto it = trimeshes.find({&mesh, page});
     if (it == trimeshes.end()) {
-        auto vertices = make_triangle_mesh(mesh);
-        gpu_trimesh m;
-        m.vertex_count = int(vertices.size());
-        glGenVertexArrays(1, &m.vao);
-        glGenBuffers(1, &m.vbo);
-        glBindVertexArray(m.vao);
-        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(mesh_vertex)), vertices.data(),
-                     GL_STATIC_DRAW);
-        float_attrib(0, 3, sizeof(mesh_vertex), 0);
-        float_attrib(1, 3, sizeof(mesh_vertex), 3 * sizeof(float));
-        glBindVertexArray(0);
-        it = trimeshes.emplace(&mesh, m).first;
+        if (!loaded) return;
+        it = trimeshes.emplace(std::pair{&mesh, page}, upload(*loaded)).first;
     }
     trimesh_draws.emplace_back(&it->second, transform);
+}
+
+void renderer::forget_meshes() {
+    for (auto &[key, m] : trimeshes) {
+        glDeleteVertexArrays(1, &m.vao);
+        glDeleteBuffers(1, &m.vbo);
+    }
+    trimeshes.clear();
+    trimesh_draws.clear();
 }
 
 void renderer::draw_lit(unsigned vao, int count, int instance_count, bool checker) {

@@ -10,8 +10,8 @@
 #include "shape_meshes.hpp"
 #include <array>
 #include <cstddef>
+#include <map>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 namespace testbed {
@@ -54,6 +54,13 @@ public:
     std::vector<line_vertex> lines;
     // A static triangle mesh drawn at a body's transform (its vertices uploaded once).
     void add_triangle_mesh(const edyn::triangle_mesh &mesh, const instance &transform);
+    // A page of a paged mesh: uploaded the first time it is seen loaded (`loaded` not null),
+    // drawn from then on, also while the simulation has it unloaded again. Pages never seen
+    // loaded are not drawn.
+    void add_mesh_page(const edyn::paged_triangle_mesh &mesh, std::size_t page,
+                       const edyn::triangle_mesh *loaded, const instance &transform);
+    // Drops the uploaded meshes, whose owners are gone (a new sample).
+    void forget_meshes();
 
     void draw();
     // Draw calls issued by the last draw().
@@ -73,12 +80,14 @@ private:
     unsigned instance_vbo{0};
     unsigned batch_vao{0}, batch_vbo{0};
     unsigned line_vao{0}, line_vbo{0};
-    std::unordered_map<const edyn::triangle_mesh *, gpu_trimesh> trimeshes;
+    // By owner and page (a mesh_shape's mesh is page 0 of itself).
+    std::map<std::pair<const void *, std::size_t>, gpu_trimesh> trimeshes;
     std::vector<std::pair<const gpu_trimesh *, instance>> trimesh_draws;
     mat4 view_projection;
     int last_draw_calls{0};
 
     gpu_mesh upload(const std::vector<mesh_vertex> &vertices);
+    gpu_trimesh upload(const edyn::triangle_mesh &mesh);
     void draw_lit(unsigned vao, int count, int instances, bool checker);
 };
 

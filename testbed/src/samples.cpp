@@ -139,6 +139,16 @@ std::vector<sample> make_samples() {
                      sc::make_mesh_pile(r, 225, 15);
                      return sample_state{};
                  }});
+    s.push_back(
+        {"paged_terrain", "Meshes",
+         "The same terrain as a paged mesh: pages load near the bodies (only loaded pages are drawn).",
+         make_camera({0, 2, 0}, 62, 0.5f, 0.6f), [](edyn::registry &r) {
+             sc::mesh_pile_terrain terrain;
+             terrain.paged = true;
+             terrain.page_size = 500; // 40 pages
+             sc::make_mesh_pile(r, 225, 15, 2, terrain);
+             return sample_state{};
+         }});
     return s;
 }
 
@@ -151,6 +161,7 @@ void run_steps(edyn::registry &registry, sample_state &state, unsigned steps,
         if (state.on_frame) state.on_frame(registry, {}, dt);
         auto start = std::chrono::steady_clock::now();
         edyn::step_simulation(registry);
+        edyn::wait_for_simulation(registry); // asynchronous mode: the step is applied here
         if (after_step)
             after_step(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());

@@ -42,7 +42,8 @@ const sample *find_sample(const std::string &name);
 std::string sample_names();
 
 // Runs `steps` fixed steps one by one, calling the sample's frame hook with no input before
-// each: how screenshots and their check advance a sample, identically.
+// each and waiting for each step (asynchronous mode): how screenshots and their check advance a
+// sample, identically in every execution mode.
 // `after_step`, when given, gets each step's time in milliseconds.
 void run_steps(edyn::registry &registry, sample_state &state, unsigned steps,
                const std::function<void(double)> &after_step = {});

@@ -38,6 +38,7 @@ struct shape_drawer {
     renderer &r;
     transform t;
     colour c;
+    bool read_pages; // false in asynchronous mode, where the worker loads and unloads them
 
     void add(mesh_kind kind, const transform &at, const edyn::vector3 &scale) {
         r.instances[std::size_t(kind)].push_back(make_instance(at, scale, c));
@@ -88,10 +89,16 @@ struct shape_drawer {
         add(mesh_kind::plane, at, {200, 1, 200});
     }
     void operator()(const edyn::mesh_shape &s) {
-        r.add_triangle_mesh(*s.trimesh, make_instance(t, {1, 1, 1}, {0.55f, 0.62f, 0.45f}));
+        r.add_triangle_mesh(*s.trimesh, make_instance(t, {1, 1, 1}, terrain_colour));
     }
-    // Paged meshes load their pages on demand in the simulation; they are not drawn.
-    void operator()(const edyn::paged_mesh_shape &) {}
+    // The pages the simulation has loaded so far (on demand, near bodies). In asynchronous mode
+    // the simulation worker owns the pages: those uploaded earlier are drawn, no new ones.
+    void operator()(const edyn::paged_mesh_shape &s) {
+        auto &mesh = *s.trimesh;
+        auto at = make_instance(t, {1, 1, 1}, terrain_colour);
+        for (std::size_t page = 0; page < mesh.num_pages(); ++page)
+            r.add_mesh_page(mesh, page, read_pages ? mesh.get_page(page) : nullptr, at);
+    }
 };
 
 } // namespace
@@ -99,10 +106,11 @@ struct shape_drawer {
 void draw_bodies(const edyn::registry &registry, renderer &r, bool grey_sleeping) {
     auto view = registry.view<edyn::rigidbody_tag, edyn::shape_index, edyn::present_position,
                               edyn::present_orientation>();
+    bool read_pages = edyn::get_settings(registry).execution_mode != edyn::execution_mode::asynchronous;
     for (auto entity : view) {
         auto &pos = registry.get<edyn::present_position>(entity);
         auto &orn = registry.get<edyn::present_orientation>(entity);
-        shape_drawer drawer{r, {pos, orn}, body_colour(registry, entity, grey_sleeping)};
+        shape_drawer drawer{r, {pos, orn}, body_colour(registry, entity, grey_sleeping), read_pages};
         edyn::visit_shape(registry, entity, [&](const auto &shape) { drawer(shape); });
     }
 }

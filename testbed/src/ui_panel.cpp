@@ -68,6 +68,13 @@ void stats_view(app &a) {
     ImGui::Text("Bodies %zu, manifolds %zu", st.bodies, st.manifolds);
     ImGui::Text("Contact points %zu, islands %zu (%zu asleep)", st.contact_points, st.islands,
                 st.sleeping_islands);
+    if (st.pages > 0) {
+        if (a.settings.mode == edyn::execution_mode::asynchronous) {
+            ImGui::Text("Mesh pages: %zu (loaded in the worker)", st.pages);
+        } else {
+            ImGui::Text("Mesh pages loaded: %zu of %zu", st.loaded_pages, st.pages);
+        }
+    }
     std::vector<float> history(st.step_history.begin(), st.step_history.end());
     float top = 1;
     for (auto v : history)
@@ -88,16 +95,13 @@ void draw_options(app &a) {
     ImGui::SameLine();
     ImGui::Checkbox("Islands (I)", &d.islands);
     ImGui::Checkbox("Grey sleeping bodies", &d.grey_sleeping);
-    if (a.rays_available()) {
-        ImGui::Checkbox("Ray from cursor (Y)", &a.ctl.show_ray);
-        if (a.ctl.show_ray && a.probe.body != edyn::null) {
-            ImGui::Text("hit body %u at (%.2f %.2f %.2f)", unsigned(edyn::to_index(a.probe.body)),
-                        double(a.probe.point.x), double(a.probe.point.y), double(a.probe.point.z));
-            ImGui::Text("normal (%.2f %.2f %.2f)", double(a.probe.normal.x), double(a.probe.normal.y),
-                        double(a.probe.normal.z));
-        }
-    } else {
-        ImGui::TextDisabled("Picking and rays: sequential modes only");
+    ImGui::Checkbox("Ray from cursor (Y)", &a.ctl.show_ray);
+    auto &hit = a.probe.last;
+    if (a.ctl.show_ray && hit.body != edyn::null) {
+        ImGui::Text("hit body %u at (%.2f %.2f %.2f)", unsigned(edyn::to_index(hit.body)),
+                    double(hit.point.x), double(hit.point.y), double(hit.point.z));
+        ImGui::Text("normal (%.2f %.2f %.2f)", double(hit.normal.x), double(hit.normal.y),
+                    double(hit.normal.z));
     }
 }
 

@@ -20,8 +20,8 @@ using raycast_delegate_type = delegate<void(raycast_id_type, const raycast_resul
 /// In asynchronous mode the ray is cast in the simulation worker, with the bodies as the
 /// worker has them. The result (with the main registry's entity) is handed to `delegate` on the
 /// calling thread during a later update() (or wait_for_simulation()); in the other modes the
-/// ray is cast at once and the result is handed over during the next update(). The ray is cast
-/// as raycast describes.
+/// ray is cast at once and the result is handed over during the next update() or
+/// wait_for_simulation(). The ray is cast as raycast describes.
 /// @param registry An attached registry (the main one, in asynchronous mode).
 /// @param p0 Start of the ray, world space, in metres.
 /// @param p1 End of the ray, world space, in metres.

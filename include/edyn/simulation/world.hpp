@@ -82,7 +82,8 @@ void step_simulation(registry &registry);
 /// (and run the steps already asked for), then applies the worker's results to the main
 /// registry as update() does, without advancing time. Tools and tests use it, with set_paused
 /// and step_simulation, to run the worker step by step. In the other modes there is nothing to
-/// wait for and it returns at once.
+/// wait for: it hands the pending raycast_async and query_aabb_async replies to their delegates,
+/// as update() would, and returns.
 /// @param registry An attached registry.
 /// @throws std::invalid_argument When the registry is not attached. An exception thrown in
 /// the worker, or by a listener or delegate, is rethrown as in update().

@@ -424,6 +424,28 @@ TEST(async_raycast, replies_in_the_sequential_mode_at_the_next_update) {
     EXPECT_EQ(caught.result.entity, entity{1}) << "the box";
 }
 
+// Tools that step one step at a time (step_simulation, wait_for_simulation) get their replies in
+// every mode, without an update() that would move the clock.
+TEST(async_raycast, wait_for_simulation_hands_over_the_replies_in_every_mode) {
+    for (auto mode : {execution_mode::sequential, execution_mode::sequential_multithreaded,
+                      execution_mode::asynchronous}) {
+        registry reg;
+        attach(reg, init_config{mode});
+        build_scene(reg);
+        step_simulation(reg);
+        wait_for_simulation(reg);
+        ray_catch caught;
+        raycast_delegate_type delegate;
+        delegate.connect<&keep_ray>(caught);
+        raycast_async(reg, {0, 5, 0}, {0, -5, 0}, delegate);
+        wait_for_simulation(reg);
+        ASSERT_EQ(caught.calls, 1) << "mode " << int(mode);
+        EXPECT_EQ(caught.result.entity, entity{1}) << "the box, mode " << int(mode);
+        wait_for_simulation(reg);
+        EXPECT_EQ(caught.calls, 1) << "each reply once, mode " << int(mode);
+    }
+}
+
 void throw_from_delegate(ray_catch &c, raycast_id_type, const raycast_result &, vector3, vector3) {
     ++c.calls;
     throw std::runtime_error("delegate failed");
