@@ -92,7 +92,8 @@ struct shape_drawer {
         r.add_triangle_mesh(*s.trimesh, make_instance(t, {1, 1, 1}, terrain_colour));
     }
     // The pages the simulation has loaded so far (on demand, near bodies). In asynchronous mode
-    // the simulation worker owns the pages: those uploaded earlier are drawn, no new ones.
+    // the simulation worker owns the pages and they are not read here (a sample switched to that
+    // mode is rebuilt, so nothing was uploaded before either).
     void operator()(const edyn::paged_mesh_shape &s) {
         auto &mesh = *s.trimesh;
         auto at = make_instance(t, {1, 1, 1}, terrain_colour);

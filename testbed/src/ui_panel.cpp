@@ -70,7 +70,7 @@ void stats_view(app &a) {
                 st.sleeping_islands);
     if (st.pages > 0) {
         if (a.settings.mode == edyn::execution_mode::asynchronous) {
-            ImGui::Text("Mesh pages: %zu (loaded in the worker)", st.pages);
+            ImGui::Text("Mesh pages: %zu (owned by the worker: not drawn)", st.pages);
         } else {
             ImGui::Text("Mesh pages loaded: %zu of %zu", st.loaded_pages, st.pages);
         }
