@@ -116,6 +116,45 @@ TEST(step_allocation, a_settled_pile_steps_without_allocating_on_worker_threads)
     EXPECT_EQ(allocations_per_100_settled_steps(config), 0u) << "allocations in 100 steps (2 threads)";
 }
 
+// The same on a mesh: 100 mixed bodies (boxes, spheres, capsules, rocks) settled on a flat
+// 20,000-triangle grid (on hills they would keep sliding into new contacts and pages), and on the
+// same grid as a paged mesh whose pages stay loaded.
+std::size_t allocations_per_100_settled_steps_on_terrain(bool paged) {
+    registry reg;
+    attach(reg, init_config{execution_mode::sequential});
+    scenes::mesh_pile_terrain terrain;
+    terrain.paged = paged;
+    terrain.page_size = 500;
+    terrain.amplitude = 0;
+    auto scene = scenes::make_mesh_pile(reg, 100, 10, 1, terrain);
+    for (auto e : scene.bodies)
+        reg.emplace<sleeping_disabled_tag>(e);
+    for (int i = 0; i < 300; ++i)
+        step_simulation(reg);
+
+    allocations = 0;
+    counting = true;
+    for (int i = 0; i < 100; ++i)
+        step_simulation(reg);
+    counting = false;
+    // Resting on the grid, not fallen through it or off it.
+    for (auto e : scene.bodies) {
+        auto y = reg.get<position>(e).y;
+        EXPECT_TRUE(y > 0 && y < 1) << "body " << to_index(e) << " at height " << y;
+    }
+    EXPECT_GE(reg.storage<contact_manifold>().size(), scene.bodies.size()) << "every body touches the grid";
+    detach(reg);
+    return allocations.load();
+}
+
+TEST(step_allocation, a_pile_settled_on_a_mesh_terrain_steps_without_allocating) {
+    EXPECT_EQ(allocations_per_100_settled_steps_on_terrain(false), 0u) << "allocations in 100 steps";
+}
+
+TEST(step_allocation, a_pile_settled_on_a_paged_terrain_steps_without_allocating) {
+    EXPECT_EQ(allocations_per_100_settled_steps_on_terrain(true), 0u) << "allocations in 100 steps";
+}
+
 TEST(step_allocation, the_counter_sees_allocations) {
     // Guards the test above against a counter that never counts.
     allocations = 0;
