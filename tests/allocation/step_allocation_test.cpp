@@ -7,6 +7,7 @@
 #include <edyn_scenes/scenes.hpp>
 #include <gtest/gtest.h>
 #include <new>
+#include <vector>
 
 namespace {
 
@@ -82,14 +83,9 @@ void operator delete[](void *p, std::size_t, std::align_val_t) noexcept { std::f
 namespace edyn {
 namespace {
 
-// Steps a settled, awake 1,024-body pile (the bodies keep touching, sliding a little and
-// trading contact points, but the world no longer grows) and counts the allocations of 100
-// more steps.
-std::size_t allocations_per_100_settled_steps(const init_config &config) {
-    registry reg;
-    attach(reg, config);
-    scenes::make_ground(reg);
-    auto bodies = scenes::make_pile(reg, 1024, 16, 2, scenes::pile_shapes::with_polyhedra);
+// Keeps `bodies` awake (asleep, a step would skip the work being measured), lets them settle
+// for 300 steps and counts the allocations of 100 more.
+std::size_t allocations_in_100_steps_after_settling(registry &reg, const std::vector<entity> &bodies) {
     for (auto e : bodies)
         reg.emplace<sleeping_disabled_tag>(e);
     for (int i = 0; i < 300; ++i)
@@ -100,8 +96,19 @@ std::size_t allocations_per_100_settled_steps(const init_config &config) {
     for (int i = 0; i < 100; ++i)
         step_simulation(reg);
     counting = false;
-    detach(reg);
     return allocations.load();
+}
+
+// A settled, awake 1,024-body pile: the bodies keep touching, sliding a little and trading
+// contact points, but the world no longer grows.
+std::size_t allocations_per_100_settled_steps(const init_config &config) {
+    registry reg;
+    attach(reg, config);
+    scenes::make_ground(reg);
+    auto bodies = scenes::make_pile(reg, 1024, 16, 2, scenes::pile_shapes::with_polyhedra);
+    auto count = allocations_in_100_steps_after_settling(reg, bodies);
+    detach(reg);
+    return count;
 }
 
 TEST(step_allocation, a_settled_pile_steps_without_allocating) {
@@ -127,16 +134,7 @@ std::size_t allocations_per_100_settled_steps_on_terrain(bool paged) {
     terrain.page_size = 500;
     terrain.amplitude = 0;
     auto scene = scenes::make_mesh_pile(reg, 100, 10, 1, terrain);
-    for (auto e : scene.bodies)
-        reg.emplace<sleeping_disabled_tag>(e);
-    for (int i = 0; i < 300; ++i)
-        step_simulation(reg);
-
-    allocations = 0;
-    counting = true;
-    for (int i = 0; i < 100; ++i)
-        step_simulation(reg);
-    counting = false;
+    auto count = allocations_in_100_steps_after_settling(reg, scene.bodies);
     // Resting on the grid, not fallen through it or off it.
     for (auto e : scene.bodies) {
         auto y = reg.get<position>(e).y;
@@ -144,7 +142,7 @@ std::size_t allocations_per_100_settled_steps_on_terrain(bool paged) {
     }
     EXPECT_GE(reg.storage<contact_manifold>().size(), scene.bodies.size()) << "every body touches the grid";
     detach(reg);
-    return allocations.load();
+    return count;
 }
 
 TEST(step_allocation, a_pile_settled_on_a_mesh_terrain_steps_without_allocating) {
