@@ -119,13 +119,19 @@ void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, co
 
 } // namespace
 
-void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
-                       const joint_pose &pose) noexcept {
+bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_pose &pose,
+                        matrix3x3 &inverse_k) noexcept {
     auto sA = skew_matrix(pose.rA), sB = skew_matrix(pose.rB);
     auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) - sA * a.inv_inertia * sA -
              sB * b.inv_inertia * sB;
-    anchor.point_mass_valid = std::abs(determinant(k)) > scalar(1e-12);
-    anchor.point_mass = anchor.point_mass_valid ? inverse(k) : matrix3x3_zero;
+    bool valid = std::abs(determinant(k)) > scalar(1e-12);
+    inverse_k = valid ? inverse(k) : matrix3x3_zero;
+    return valid;
+}
+
+void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
+                       const joint_pose &pose) noexcept {
+    anchor.point_mass_valid = inverse_point_mass(a, b, pose, anchor.point_mass);
 }
 
 void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction, scalar inv_h,

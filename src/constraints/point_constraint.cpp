@@ -37,10 +37,7 @@ void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body
     auto mass = anchor.point_mass;
     if (length_sqr(pose.d) > large_point_separation_sqr) {
         // Pivots far apart move far when corrected: the mass is recomputed, not reused.
-        joint_anchor fresh = anchor;
-        update_point_mass(fresh, a, b, pose);
-        if (!fresh.point_mass_valid) return;
-        mass = fresh.point_mass;
+        if (!inverse_point_mass(a, b, pose, mass)) return;
     } else if (!anchor.point_mass_valid) {
         return;
     }

@@ -233,6 +233,16 @@ void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar 
 /// past a centimetre, corrections turn the bodies enough to make it diverge.
 inline constexpr scalar large_point_separation_sqr = scalar(1e-4);
 
+/// The inverse of the pivots' effective mass matrix
+/// K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB] at the pose `pose`.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param pose The current pose, from current_pose().
+/// @param inverse_k Receives the inverse of K, or zero when K is singular.
+/// @return False when K is singular (neither body moves).
+bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_pose &pose,
+                        matrix3x3 &inverse_k) noexcept;
+
 /// Computes `anchor.point_mass`, the inverse of the pivots' effective mass matrix
 /// K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB], for the pose `pose` of the bodies.
 /// @param anchor The joint's pivots; its `point_mass` and `point_mass_valid` are written.
