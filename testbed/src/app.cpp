@@ -315,12 +315,9 @@ void app::run(unsigned max_frames) {
 
 void app::script_frame(const pointer_state &p, int width, int height) {
     handle_pointer(p, width, height);
-    auto dt = float(edyn::get_fixed_dt(*registry));
-    if (state.on_frame) state.on_frame(*registry, {}, dt);
-    edyn::step_simulation(*registry);
-    // Applies the step (in asynchronous mode, once the worker has run it) and hands over the
-    // raycast replies: in every mode, a ray cast in this frame is answered before the next.
-    edyn::wait_for_simulation(*registry);
+    // One step, waited for: in asynchronous mode the worker has run it, and in every mode a ray
+    // cast in this frame is answered before the next.
+    run_steps(*registry, state, 1);
 }
 
 void app::play_script(const std::vector<script_command> &script, int width, int height) {
