@@ -1,8 +1,10 @@
 #include "edyn/constraints/contact_solver.hpp"
+#include "contact_bundle_solver.hpp"
 #include "edyn/constraints/constraint_row.hpp"
 #include "edyn/parallel/parallel_for.hpp"
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace edyn {
 
@@ -39,18 +41,32 @@ inline void apply_row(const contact_row &row, const vector3 &d, scalar impulse, 
 
 // Constraints per parallel range: enough work to outweigh handing a range to a thread.
 constexpr std::size_t contacts_per_task = 64;
+// Bundles or single constraints per parallel range within a colour.
+constexpr std::size_t colour_items_per_task = 16;
 
-// Calls fn(k) for every constraint k, colour after colour, each colour's constraints at once on
-// the scheduler's threads; then the overflow, in order on the calling thread.
-template<typename Fn>
-void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Fn &&fn) {
+// Calls bundle(i) for every bundle i and single(k) for every constraint k solved on its own,
+// colour after colour, each colour's at once on the scheduler's threads; then the overflow, in
+// order on the calling thread.
+template<typename Bundle, typename Single>
+void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Bundle &&bundle,
+                              Single &&single) {
     auto &begin = contacts.colour_begin;
     for (std::size_t k = 0; k + 1 < begin.size(); ++k) {
-        parallel_for(scheduler, begin[k], begin[k + 1], contacts_per_task, fn);
+        auto first_bundle = contacts.bundle_begin[k];
+        auto num_bundles = contacts.bundle_begin[k + 1] - first_bundle;
+        auto first_single = contacts.single_begin[k];
+        auto num_items = num_bundles + contacts.single_begin[k + 1] - first_single;
+        parallel_for(scheduler, 0u, num_items, colour_items_per_task, [&](std::uint32_t i) {
+            if (i < num_bundles) {
+                bundle(first_bundle + i);
+            } else {
+                single(contacts.singles[first_single + i - num_bundles]);
+            }
+        });
     }
     auto size = static_cast<std::uint32_t>(contacts.constraints.size());
     for (auto k = begin.empty() ? 0u : begin.back(); k < size; ++k) {
-        fn(k);
+        single(k);
     }
 }
 
@@ -104,11 +120,13 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
             c.roll_mass[i] = effective_angular_mass(a, b, c.roll_axis[i]);
         }
     });
+    detail::pack_contact_bundles(contacts, bodies, scheduler);
 }
 
 void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
                          task_scheduler *scheduler) {
-    for_each_in_colour_order(contacts, scheduler, [&](std::uint32_t k) {
+    auto bundle = [&](std::uint32_t i) { detail::warm_start_bundle(contacts, i, bodies); };
+    auto single = [&](std::uint32_t k) {
         auto &c = contacts.constraints[k];
         solver_body copies[2];
         auto &a = solved(bodies[c.body[0]], copies[0]);
@@ -120,12 +138,16 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
             apply_row(p.tangent_row[1], p.tangent[1], p.tangent_impulse[1], a, b);
         }
 
+        // Without spinning or rolling impulses there is nothing to apply (and a bundle, which
+        // has none, applies nothing either).
+        if (c.spin_impulse == 0 && c.num_roll_axes == 0) return;
         auto angular = c.normal * c.spin_impulse;
         for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
             angular += c.roll_axis[i] * c.roll_impulse[i];
         }
         apply_angular_impulse(a, b, angular);
-    });
+    };
+    for_each_in_colour_order(contacts, scheduler, bundle, single);
 }
 
 namespace {
@@ -199,7 +221,9 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
     auto rigid = make_softness(hertz, settings.contact_damping_ratio, h);
     auto inv_h = scalar(1) / h;
 
-    for_each_in_colour_order(contacts, scheduler, [&](std::uint32_t k) {
+    detail::bundle_pass pass{inv_h, rigid, settings.max_push_out_velocity, use_bias};
+    auto bundle = [&](std::uint32_t i) { detail::solve_bundle(contacts, i, bodies, pass); };
+    auto single = [&](std::uint32_t k) {
         auto &c = contacts.constraints[k];
         solver_body copies[2];
         auto &a = solved(bodies[c.body[0]], copies[0]);
@@ -238,10 +262,13 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
 
         solve_friction(c, points, a, b);
         solve_spin_and_roll(c, a, b, total_normal);
-    });
+    };
+    for_each_in_colour_order(contacts, scheduler, bundle, single);
 }
 
 void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler) {
+    parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
+                 [&](std::uint32_t i) { detail::unpack_bundle_impulses(contacts, i); });
     auto count = static_cast<std::uint32_t>(contacts.constraints.size());
     parallel_for(scheduler, 0u, count, contacts_per_task, [&](std::uint32_t k) {
         auto &c = contacts.constraints[k];

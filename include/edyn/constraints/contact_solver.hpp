@@ -1,6 +1,7 @@
 #ifndef EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 #define EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 
+#include "edyn/constraints/contact_bundle.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include <array>
@@ -126,6 +127,22 @@ struct contact_solver_set {
     /// constraints from colour_begin.back() on (all of them when the set was not coloured) are
     /// solved in order on the calling thread, after the colours.
     std::vector<std::uint32_t> colour_begin;
+    /// The coloured constraints as prepare_contacts() packs them, four to a bundle, colour by
+    /// colour: colour k's bundles are [bundle_begin[k], bundle_begin[k + 1]). Between
+    /// prepare_contacts() and accumulate_contact_impulses() a bundled constraint's impulses live
+    /// in its bundle's slots, not in its points.
+    std::vector<contact_bundle> bundles;
+    /// The bundles' point slots, indexed by contact_bundle::first_slot.
+    std::vector<contact_bundle_slot> bundle_slots;
+    /// Where each colour's bundles begin in `bundles`, one entry per colour and one past the end.
+    std::vector<std::uint32_t> bundle_begin;
+    /// The coloured constraints solved one at a time (those with spinning or rolling friction or a
+    /// material spring), colour by colour: colour k's are [single_begin[k], single_begin[k + 1]).
+    std::vector<std::uint32_t> singles;
+    /// Where each colour's constraints begin in `singles`, as `bundle_begin`.
+    std::vector<std::uint32_t> single_begin;
+    /// Scratch of prepare_contacts(): one colour's bundled constraints, most points first.
+    std::vector<std::uint32_t> packing;
 
     /// Empties every array, keeping their capacity.
     void clear() noexcept {
@@ -133,6 +150,11 @@ struct contact_solver_set {
         points.clear();
         totals.clear();
         colour_begin.clear();
+        bundles.clear();
+        bundle_slots.clear();
+        bundle_begin.clear();
+        singles.clear();
+        single_begin.clear();
     }
     /// Appends `c` with `num_points` default points and returns the first of them.
     /// Sets the new constraint's `first_point` and `num_points` and grows `totals` alongside.

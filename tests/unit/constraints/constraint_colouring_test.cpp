@@ -4,6 +4,7 @@
 #include <edyn/constraints/contact_solver.hpp>
 #include <edyn/parallel/task_scheduler.hpp>
 #include <gtest/gtest.h>
+#include <map>
 #include <random>
 #include <utility>
 #include <vector>
@@ -146,23 +147,29 @@ random_contacts make_contacts(std::size_t num_contacts, unsigned seed, bool colo
     // Built in the solving order, each contact from its own seed so both sets hold the same ones.
     for (auto k : order) {
         std::mt19937 contact_rng(seed * 7919u + k);
+        std::uniform_real_distribution<scalar> u(-1, 1);
+        auto normal = normalize(vector3{scalar(0.3) * u(contact_rng), 1, scalar(0.3) * u(contact_rng)});
         contact_solver_constraint c;
         c.body[0] = pairs[k].a;
         c.body[1] = pairs[k].b;
-        c.friction = scalar(0.6);
-        c.spin_friction = scalar(0.01);
-        c.roll_friction = scalar(0.01);
-        c.normal = vector3_y;
-        c.num_roll_axes = 2;
-        c.roll_axis[0] = vector3_x;
-        c.roll_axis[1] = vector3_z;
+        c.friction = scalar(0.6) + scalar(0.4) * u(contact_rng);
+        c.normal = normal;
+        // Most contacts have plain friction and are solved four at a time; some have spinning
+        // and rolling friction or a material spring, and are solved one at a time.
+        if (k % 5 == 1) {
+            c.spin_friction = scalar(0.01);
+            c.roll_friction = scalar(0.01);
+            c.num_roll_axes = 2;
+            plane_space(normal, c.roll_axis[0], c.roll_axis[1]);
+        } else if (k % 7 == 2) {
+            c.stiffness = 1e4;
+        }
         auto *points = set.contacts.add(c, sizes[k]);
         for (std::uint32_t i = 0; i < sizes[k]; ++i) {
-            std::uniform_real_distribution<scalar> u(-1, 1);
             auto &p = points[i];
             p.rA = {u(contact_rng) / 2, scalar(-0.5), u(contact_rng) / 2};
             p.rB = {u(contact_rng) / 2, scalar(0.5), u(contact_rng) / 2};
-            p.normal = vector3_y;
+            p.normal = normal;
             p.adjusted_separation = scalar(0.01) * u(contact_rng) - dot(p.normal, p.rA - p.rB);
             p.normal_impulse = scalar(0.1) * (u(contact_rng) + 1);
         }
@@ -192,6 +199,34 @@ bool same_bits(const std::vector<solver_body> &a, const std::vector<solver_body>
     return true;
 }
 
+// Every contact's impulses and totals, found by its bodies (the two sets order them apart).
+bool same_impulses(const random_contacts &x, const random_contacts &y) {
+    auto key = [](const contact_solver_constraint &c) { return std::pair(c.body[0], c.body[1]); };
+    std::map<std::pair<solver_body_index, solver_body_index>, std::vector<const contact_solver_constraint *>>
+        of_y;
+    for (auto &c : y.contacts.constraints)
+        of_y[key(c)].push_back(&c);
+    std::map<std::pair<solver_body_index, solver_body_index>, std::size_t> used;
+    for (auto &c : x.contacts.constraints) {
+        auto &d = *of_y.at(key(c)).at(used[key(c)]++);
+        if (c.num_points != d.num_points ||
+            std::memcmp(&c.spin_impulse, &d.spin_impulse, sizeof(scalar)) != 0)
+            return false;
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            auto &p = x.contacts.points[c.first_point + i];
+            auto &q = y.contacts.points[d.first_point + i];
+            auto &t = x.contacts.totals[c.first_point + i];
+            auto &u = y.contacts.totals[d.first_point + i];
+            if (std::memcmp(&p.normal_impulse, &q.normal_impulse, sizeof(scalar)) != 0 ||
+                std::memcmp(&p.tangent_impulse, &q.tangent_impulse, sizeof(p.tangent_impulse)) != 0 ||
+                std::memcmp(&t.normal_impulse, &u.normal_impulse, sizeof(scalar)) != 0 ||
+                std::memcmp(&t.tangent_impulse, &u.tangent_impulse, sizeof(t.tangent_impulse)) != 0)
+                return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 // The reason for the colouring: solved colour by colour on any number of threads, the contacts
@@ -206,6 +241,9 @@ TEST(constraint_colouring, coloured_contacts_solve_to_the_same_bits_as_in_order_
         auto coloured = make_contacts(3000, 11, true);
         ASSERT_GT(coloured.contacts.colour_begin.size(), 2u);
         solve(coloured, &scheduler);
+        EXPECT_GT(coloured.contacts.bundles.size(), 300u) << "the plain contacts go four at a time";
+        EXPECT_GT(coloured.contacts.singles.size(), 500u) << "the others one at a time";
         EXPECT_TRUE(same_bits(in_order.bodies, coloured.bodies)) << threads << " threads";
+        EXPECT_TRUE(same_impulses(in_order, coloured)) << threads << " threads";
     }
 }

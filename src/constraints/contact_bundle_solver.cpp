@@ -1,0 +1,400 @@
+#include "contact_bundle_solver.hpp"
+#include "../math/wide_scalar.hpp"
+#include "edyn/parallel/parallel_for.hpp"
+#include <cstddef>
+
+namespace edyn::detail {
+
+namespace {
+
+constexpr std::uint32_t lanes = contact_bundle_lanes;
+static_assert(lanes == wide_lanes);
+
+// Bundles per parallel range when filling their slots.
+constexpr std::size_t bundles_per_task = 16;
+
+// The solver state of one body in each lane.
+struct wide_body {
+    wide3 linvel, angvel, delta_position;
+    wide_quaternion delta_rotation;
+    wide inv_mass;
+};
+
+#ifdef EDYN_WIDE_SSE2
+
+// The state a bundle reads is the first 14 floats of solver_body: loaded as four groups of four
+// floats per lane (the last group runs two floats into inv_inertia) and transposed.
+static_assert(offsetof(solver_body, linvel) == 0 && offsetof(solver_body, angvel) == 12 &&
+              offsetof(solver_body, delta_position) == 24 && offsetof(solver_body, delta_rotation) == 36 &&
+              offsetof(solver_body, inv_mass) == 52 && sizeof(solver_body) >= 64);
+
+wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
+    const float *p[lanes];
+    for (std::uint32_t i = 0; i < lanes; ++i) p[i] = reinterpret_cast<const float *>(&bodies[index[i]]);
+    __m128 g[4][lanes];
+    for (int k = 0; k < 4; ++k) {
+        for (std::uint32_t i = 0; i < lanes; ++i) g[k][i] = _mm_loadu_ps(p[i] + 4 * k);
+        _MM_TRANSPOSE4_PS(g[k][0], g[k][1], g[k][2], g[k][3]);
+    }
+    wide_body b;
+    b.linvel = {{g[0][0]}, {g[0][1]}, {g[0][2]}};
+    b.angvel = {{g[0][3]}, {g[1][0]}, {g[1][1]}};
+    b.delta_position = {{g[1][2]}, {g[1][3]}, {g[2][0]}};
+    b.delta_rotation = {{g[2][1]}, {g[2][2]}, {g[2][3]}, {g[3][0]}};
+    b.inv_mass = {g[3][1]};
+    return b;
+}
+
+// Writes the velocities of the lanes whose bit is set; the two floats after them go back
+// unchanged.
+void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits, const wide_body &b) {
+    __m128 g0[lanes] = {b.linvel.x.v, b.linvel.y.v, b.linvel.z.v, b.angvel.x.v};
+    __m128 g1[lanes] = {b.angvel.y.v, b.angvel.z.v, b.delta_position.x.v, b.delta_position.y.v};
+    _MM_TRANSPOSE4_PS(g0[0], g0[1], g0[2], g0[3]);
+    _MM_TRANSPOSE4_PS(g1[0], g1[1], g1[2], g1[3]);
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        if (!(bits & (1u << i))) continue;
+        auto *p = reinterpret_cast<float *>(&bodies[index[i]]);
+        _mm_storeu_ps(p, g0[i]);
+        _mm_storeu_ps(p + 4, g1[i]);
+    }
+}
+
+#else
+
+wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
+    wide_body b;
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        auto &s = bodies[index[i]];
+        b.linvel.x.v[i] = s.linvel.x;
+        b.linvel.y.v[i] = s.linvel.y;
+        b.linvel.z.v[i] = s.linvel.z;
+        b.angvel.x.v[i] = s.angvel.x;
+        b.angvel.y.v[i] = s.angvel.y;
+        b.angvel.z.v[i] = s.angvel.z;
+        b.delta_position.x.v[i] = s.delta_position.x;
+        b.delta_position.y.v[i] = s.delta_position.y;
+        b.delta_position.z.v[i] = s.delta_position.z;
+        b.delta_rotation.x.v[i] = s.delta_rotation.x;
+        b.delta_rotation.y.v[i] = s.delta_rotation.y;
+        b.delta_rotation.z.v[i] = s.delta_rotation.z;
+        b.delta_rotation.w.v[i] = s.delta_rotation.w;
+        b.inv_mass.v[i] = s.inv_mass;
+    }
+    return b;
+}
+
+void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits, const wide_body &b) {
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        if (!(bits & (1u << i))) continue;
+        auto &s = bodies[index[i]];
+        s.linvel = {b.linvel.x.v[i], b.linvel.y.v[i], b.linvel.z.v[i]};
+        s.angvel = {b.angvel.x.v[i], b.angvel.y.v[i], b.angvel.z.v[i]};
+    }
+}
+
+#endif
+
+// A contact row as stored in a slot: angularA, angularB, inv_angularA, inv_angularB.
+struct wide_row {
+    wide3 angularA, angularB, inv_angularA, inv_angularB;
+};
+
+wide_row load_row(const scalar (&row)[4][3][lanes]) {
+    return {wide3_load(row[0]), wide3_load(row[1]), wide3_load(row[2]), wide3_load(row[3])};
+}
+
+// Relative velocity along d, as row_velocity() in contact_solver.cpp.
+inline wide row_velocity(const wide_row &row, const wide3 &d, const wide_body &a, const wide_body &b) {
+    return dot(d, a.linvel - b.linvel) + dot(row.angularA, a.angvel) - dot(row.angularB, b.angvel);
+}
+
+// Applies the impulse along the row, as apply_row() in contact_solver.cpp.
+inline void apply_row(const wide_row &row, const wide3 &d, wide impulse, wide_body &a, wide_body &b) {
+    a.linvel = a.linvel + d * (a.inv_mass * impulse);
+    a.angvel = a.angvel + row.inv_angularA * impulse;
+    b.linvel = b.linvel - d * (b.inv_mass * impulse);
+    b.angvel = b.angvel - row.inv_angularB * impulse;
+}
+
+// The velocities a partly filled slot must leave alone in its empty lanes.
+struct velocities {
+    wide3 linvelA, angvelA, linvelB, angvelB;
+};
+
+inline velocities velocities_of(const wide_body &a, const wide_body &b) {
+    return {a.linvel, a.angvel, b.linvel, b.angvel};
+}
+
+inline void keep_unmasked(wide_mask active, const velocities &before, wide_body &a, wide_body &b) {
+    a.linvel = select(active, a.linvel, before.linvelA);
+    a.angvel = select(active, a.angvel, before.angvelA);
+    b.linvel = select(active, b.linvel, before.linvelB);
+    b.angvel = select(active, b.angvel, before.angvelB);
+}
+
+// Lanes that have a point in slot s.
+inline wide_mask slot_mask(const contact_bundle &bundle, std::uint32_t s) {
+    return wide_set(scalar(s)) < wide_from_counts(bundle.num_points);
+}
+
+// Current separation of the slot's points from the bodies' motion since the step began, as
+// current_separation() in contact_solver.cpp.
+inline wide current_separation(const contact_bundle_slot &slot, const wide3 &normal, const wide_body &a,
+                               const wide_body &b) {
+    auto d = (a.delta_position - b.delta_position) +
+             (rotate(a.delta_rotation, wide3_load(slot.rA)) - rotate(b.delta_rotation, wide3_load(slot.rB)));
+    return dot(normal, d) + wide_load(slot.adjusted_separation);
+}
+
+void fill_lane(contact_bundle_slot &slot, std::uint32_t lane, const contact_solver_point &p) {
+    auto put = [&](scalar (&to)[3][lanes], const vector3 &v) {
+        to[0][lane] = v.x;
+        to[1][lane] = v.y;
+        to[2][lane] = v.z;
+    };
+    auto put_row = [&](scalar (&to)[4][3][lanes], const contact_row &row) {
+        put(to[0], row.angularA);
+        put(to[1], row.angularB);
+        put(to[2], row.inv_angularA);
+        put(to[3], row.inv_angularB);
+    };
+    put(slot.rA, p.rA);
+    put(slot.rB, p.rB);
+    put(slot.normal, p.normal);
+    put(slot.tangent[0], p.tangent[0]);
+    put(slot.tangent[1], p.tangent[1]);
+    slot.adjusted_separation[lane] = p.adjusted_separation;
+    slot.normal_mass[lane] = p.normal_mass;
+    slot.tangent_mass[0][lane] = p.tangent_mass[0];
+    slot.tangent_mass[1][lane] = p.tangent_mass[1];
+    slot.normal_impulse[lane] = p.normal_impulse;
+    slot.tangent_impulse[0][lane] = p.tangent_impulse[0];
+    slot.tangent_impulse[1][lane] = p.tangent_impulse[1];
+    put_row(slot.normal_row, p.normal_row);
+    put_row(slot.tangent_row[0], p.tangent_row[0]);
+    put_row(slot.tangent_row[1], p.tangent_row[1]);
+}
+
+// Fills the bundle's slots from its constraints' points; lanes without a point get zeros.
+void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<const solver_body> bodies) {
+    auto &bundle = contacts.bundles[index];
+    bundle.moves_a = bundle.moves_b = 0;
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        if (moves(bodies[bundle.body[0][i]])) bundle.moves_a |= 1u << i;
+        if (moves(bodies[bundle.body[1][i]])) bundle.moves_b |= 1u << i;
+    }
+    static const contact_solver_point empty_point = [] {
+        contact_solver_point p;
+        p.rA = p.rB = p.normal = p.tangent[0] = p.tangent[1] = vector3_zero;
+        return p;
+    }();
+    for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
+        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        for (std::uint32_t i = 0; i < lanes; ++i) {
+            if (s < bundle.num_points[i]) {
+                auto &c = contacts.constraints[bundle.constraint[i]];
+                fill_lane(slot, i, contacts.points[c.first_point + s]);
+            } else {
+                fill_lane(slot, i, empty_point);
+            }
+        }
+    }
+}
+
+} // namespace
+
+bool is_bundled(const contact_solver_constraint &c) noexcept {
+    return !(c.spin_friction > 0) && c.num_roll_axes == 0 && c.spin_impulse == 0 && !(c.stiffness < large_scalar);
+}
+
+void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
+                          task_scheduler *scheduler) {
+    contacts.bundles.clear();
+    contacts.bundle_begin.clear();
+    contacts.singles.clear();
+    contacts.single_begin.clear();
+    auto &begin = contacts.colour_begin;
+    std::uint32_t num_slots = 0;
+
+    // Room for the most the packing can make of this many constraints and points, so that the
+    // arrays grow only when the world does, not when its colours' sizes change: a colour of n
+    // constraints makes at most n / 4 + 1 bundles, and, sorted as they are, its bundles' slots
+    // number at most its points / 4 + 4.
+    auto num_colours = begin.empty() ? std::size_t(0) : begin.size() - 1;
+    auto max_points = std::size_t(contact_solver_constraint::max_points);
+    contacts.bundles.reserve(contacts.constraints.size() / lanes + num_colours);
+    contacts.bundle_slots.reserve(contacts.points.size() / lanes + max_points * num_colours);
+    contacts.singles.reserve(contacts.constraints.size());
+    contacts.packing.reserve(contacts.constraints.size());
+    contacts.bundle_begin.reserve(num_colours + 1);
+    contacts.single_begin.reserve(num_colours + 1);
+
+    for (std::size_t k = 0; k + 1 < begin.size(); ++k) {
+        contacts.bundle_begin.push_back(std::uint32_t(contacts.bundles.size()));
+        contacts.single_begin.push_back(std::uint32_t(contacts.singles.size()));
+
+        // The colour's bundled constraints sorted by point count, most first, so that a bundle's
+        // lanes mostly have as many points as each other. Their order within a colour does not
+        // matter: they share no body that moves.
+        std::uint32_t first_of[contact_solver_constraint::max_points + 2]{};
+        for (auto i = begin[k]; i < begin[k + 1]; ++i) {
+            auto &c = contacts.constraints[i];
+            if (is_bundled(c)) {
+                ++first_of[contact_solver_constraint::max_points - c.num_points + 1];
+            } else {
+                contacts.singles.push_back(i);
+            }
+        }
+        for (std::size_t n = 1; n < std::size(first_of); ++n) first_of[n] += first_of[n - 1];
+        contacts.packing.resize(first_of[std::size(first_of) - 1]);
+        for (auto i = begin[k]; i < begin[k + 1]; ++i) {
+            auto &c = contacts.constraints[i];
+            if (is_bundled(c)) contacts.packing[first_of[contact_solver_constraint::max_points - c.num_points]++] = i;
+        }
+
+        for (std::size_t first = 0; first < contacts.packing.size(); first += lanes) {
+            auto &bundle = contacts.bundles.emplace_back();
+            bundle.first_slot = num_slots;
+            bundle.num_slots = 0;
+            bundle.full_slots = contact_solver_constraint::max_points;
+            for (std::uint32_t i = 0; i < lanes; ++i) {
+                if (first + i < contacts.packing.size()) {
+                    auto index = contacts.packing[first + i];
+                    auto &c = contacts.constraints[index];
+                    bundle.constraint[i] = index;
+                    bundle.body[0][i] = c.body[0];
+                    bundle.body[1][i] = c.body[1];
+                    bundle.num_points[i] = c.num_points;
+                    bundle.friction[i] = c.friction;
+                } else {
+                    bundle.constraint[i] = 0;
+                    bundle.body[0][i] = bundle.body[1][i] = static_solver_body;
+                    bundle.num_points[i] = 0;
+                    bundle.friction[i] = 0;
+                }
+                bundle.num_slots = std::max(bundle.num_slots, bundle.num_points[i]);
+                bundle.full_slots = std::min(bundle.full_slots, bundle.num_points[i]);
+            }
+            num_slots += bundle.num_slots;
+        }
+    }
+    if (!begin.empty()) {
+        contacts.bundle_begin.push_back(std::uint32_t(contacts.bundles.size()));
+        contacts.single_begin.push_back(std::uint32_t(contacts.singles.size()));
+    }
+
+    contacts.bundle_slots.resize(num_slots);
+    parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), bundles_per_task,
+                 [&](std::uint32_t i) { fill_bundle(contacts, i, bodies); });
+}
+
+void warm_start_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies) {
+    auto &bundle = contacts.bundles[index];
+    auto a = gather(bodies.data(), bundle.body[0]);
+    auto b = gather(bodies.data(), bundle.body[1]);
+
+    for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
+        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        auto partial = s >= bundle.full_slots;
+        auto before = velocities_of(a, b);
+        apply_row(load_row(slot.normal_row), wide3_load(slot.normal), wide_load(slot.normal_impulse), a, b);
+        for (int t = 0; t < 2; ++t) {
+            apply_row(load_row(slot.tangent_row[t]), wide3_load(slot.tangent[t]),
+                      wide_load(slot.tangent_impulse[t]), a, b);
+        }
+        if (partial) keep_unmasked(slot_mask(bundle, s), before, a, b);
+    }
+
+    scatter(bodies.data(), bundle.body[0], bundle.moves_a, a);
+    scatter(bodies.data(), bundle.body[1], bundle.moves_b, b);
+}
+
+void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies,
+                  const bundle_pass &pass) {
+    auto &bundle = contacts.bundles[index];
+    auto a = gather(bodies.data(), bundle.body[0]);
+    auto b = gather(bodies.data(), bundle.body[1]);
+    auto zero = wide_set(0);
+    auto one = wide_set(1);
+    auto inv_h = wide_set(pass.inv_h);
+    auto bias_rate = wide_set(pass.rigid.bias_rate);
+    auto rigid_mass_scale = wide_set(pass.rigid.mass_scale);
+    auto rigid_impulse_scale = wide_set(pass.rigid.impulse_scale);
+    auto min_bias = wide_set(-pass.max_push_out_velocity);
+
+    // Normal rows of every point, then friction, as the one-at-a-time pass does.
+    for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
+        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        auto partial = s >= bundle.full_slots;
+        auto before = velocities_of(a, b);
+        auto normal = wide3_load(slot.normal);
+        auto sep = current_separation(slot, normal, a, b);
+        // Speculative where still apart; else the soft push-out in the biased pass, nothing in
+        // the relax pass.
+        auto apart = zero < sep;
+        auto bias = select(apart, sep * inv_h, zero);
+        auto mass_scale = one, impulse_scale = zero;
+        if (pass.use_bias) {
+            bias = select(apart, bias, std_max(bias_rate * sep, min_bias));
+            mass_scale = select(apart, one, rigid_mass_scale);
+            impulse_scale = select(apart, zero, rigid_impulse_scale);
+        }
+        auto row = load_row(slot.normal_row);
+        auto old_impulse = wide_load(slot.normal_impulse);
+        auto vn = row_velocity(row, normal, a, b);
+        auto impulse = -wide_load(slot.normal_mass) * mass_scale * (vn + bias) - impulse_scale * old_impulse;
+        auto new_impulse = std_max(old_impulse + impulse, zero);
+        apply_row(row, normal, new_impulse - old_impulse, a, b);
+        if (partial) {
+            auto active = slot_mask(bundle, s);
+            keep_unmasked(active, before, a, b);
+            new_impulse = select(active, new_impulse, old_impulse);
+        }
+        wide_store(slot.normal_impulse, new_impulse);
+    }
+
+    auto friction = wide_load(bundle.friction);
+    for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
+        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        auto partial = s >= bundle.full_slots;
+        auto active = partial ? slot_mask(bundle, s) : wide_mask{};
+        auto max_impulse = friction * wide_load(slot.normal_impulse);
+        auto min_impulse = -max_impulse;
+        for (int t = 0; t < 2; ++t) {
+            auto before = velocities_of(a, b);
+            auto row = load_row(slot.tangent_row[t]);
+            auto tangent = wide3_load(slot.tangent[t]);
+            auto old_impulse = wide_load(slot.tangent_impulse[t]);
+            auto vt = row_velocity(row, tangent, a, b);
+            auto new_impulse =
+                std_clamp(old_impulse - wide_load(slot.tangent_mass[t]) * vt, min_impulse, max_impulse);
+            apply_row(row, tangent, new_impulse - old_impulse, a, b);
+            if (partial) {
+                keep_unmasked(active, before, a, b);
+                new_impulse = select(active, new_impulse, old_impulse);
+            }
+            wide_store(slot.tangent_impulse[t], new_impulse);
+        }
+    }
+
+    scatter(bodies.data(), bundle.body[0], bundle.moves_a, a);
+    scatter(bodies.data(), bundle.body[1], bundle.moves_b, b);
+}
+
+void unpack_bundle_impulses(contact_solver_set &contacts, std::uint32_t index) {
+    auto &bundle = contacts.bundles[index];
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        if (bundle.num_points[i] == 0) continue;
+        auto &c = contacts.constraints[bundle.constraint[i]];
+        for (std::uint32_t s = 0; s < c.num_points; ++s) {
+            auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+            auto &p = contacts.points[c.first_point + s];
+            p.normal_impulse = slot.normal_impulse[i];
+            p.tangent_impulse[0] = slot.tangent_impulse[0][i];
+            p.tangent_impulse[1] = slot.tangent_impulse[1][i];
+        }
+    }
+}
+
+} // namespace edyn::detail

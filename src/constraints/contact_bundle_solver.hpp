@@ -1,0 +1,44 @@
+#ifndef EDYN_SRC_CONSTRAINTS_CONTACT_BUNDLE_SOLVER_HPP
+#define EDYN_SRC_CONSTRAINTS_CONTACT_BUNDLE_SOLVER_HPP
+
+// The contact solver's passes over four constraints at once (see contact_bundle). Each lane
+// computes exactly what the one-at-a-time passes in contact_solver.cpp compute for its
+// constraint, operation for operation, so that bundling changes no result.
+
+#include "edyn/constraints/contact_solver.hpp"
+#include <cstdint>
+#include <span>
+
+namespace edyn::detail {
+
+// Whether a constraint goes into a bundle: those without spinning or rolling friction and
+// without a material spring.
+bool is_bundled(const contact_solver_constraint &c) noexcept;
+
+// Packs each colour's bundled constraints four to a bundle, most points first, and lists the
+// others in `singles`; copies the points' rows, masses and impulses into the bundles' slots.
+// Call once the points are prepared.
+void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
+                          task_scheduler *scheduler);
+
+// Applies the bundle's impulses to its bodies (warm starting).
+void warm_start_bundle(contact_solver_set &contacts, std::uint32_t bundle, std::span<solver_body> bodies);
+
+// What one solve pass shares with every bundle.
+struct bundle_pass {
+    scalar inv_h;               // 1 / the sub-step.
+    softness rigid;             // The rigid contacts' softness for the sub-step.
+    scalar max_push_out_velocity;
+    bool use_bias;              // The biased pass, or the relax pass.
+};
+
+// One pass of normal and friction rows over the bundle's points.
+void solve_bundle(contact_solver_set &contacts, std::uint32_t bundle, std::span<solver_body> bodies,
+                  const bundle_pass &pass);
+
+// Copies the bundle's impulses back into its constraints' points.
+void unpack_bundle_impulses(contact_solver_set &contacts, std::uint32_t bundle);
+
+} // namespace edyn::detail
+
+#endif // EDYN_SRC_CONSTRAINTS_CONTACT_BUNDLE_SOLVER_HPP

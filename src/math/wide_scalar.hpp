@@ -1,0 +1,167 @@
+#ifndef EDYN_SRC_MATH_WIDE_SCALAR_HPP
+#define EDYN_SRC_MATH_WIDE_SCALAR_HPP
+
+// Four scalars handled at once, for solvers that work on four independent constraints side by
+// side. Every operation is the IEEE operation of its scalar counterpart, lane by lane, without
+// fused multiply-adds, so that a lane computes exactly what the scalar code computes for the
+// same inputs, and a build gives one result whichever path it compiles (SSE2 for float on
+// x86-64, plain arrays elsewhere).
+
+#include "edyn/math/scalar.hpp"
+#include <cstddef>
+#include <cstdint>
+
+#if defined(__SSE2__) && !defined(EDYN_DOUBLE_PRECISION)
+#define EDYN_WIDE_SSE2 1
+#include <emmintrin.h>
+#endif
+
+namespace edyn::detail {
+
+inline constexpr std::size_t wide_lanes = 4;
+
+#ifdef EDYN_WIDE_SSE2
+
+struct wide_mask {
+    __m128 m;
+};
+
+struct wide {
+    __m128 v;
+};
+
+inline wide wide_load(const scalar *p) noexcept { return {_mm_loadu_ps(p)}; }
+inline void wide_store(scalar *p, wide a) noexcept { _mm_storeu_ps(p, a.v); }
+inline wide wide_set(scalar s) noexcept { return {_mm_set1_ps(s)}; }
+// Four unsigned counts (below 2^31) as scalars.
+inline wide wide_from_counts(const std::uint32_t *p) noexcept {
+    return {_mm_cvtepi32_ps(_mm_loadu_si128(reinterpret_cast<const __m128i *>(p)))};
+}
+inline wide operator+(wide a, wide b) noexcept { return {_mm_add_ps(a.v, b.v)}; }
+inline wide operator-(wide a, wide b) noexcept { return {_mm_sub_ps(a.v, b.v)}; }
+inline wide operator*(wide a, wide b) noexcept { return {_mm_mul_ps(a.v, b.v)}; }
+inline wide operator/(wide a, wide b) noexcept { return {_mm_div_ps(a.v, b.v)}; }
+inline wide operator-(wide a) noexcept { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
+// a < b, lane by lane.
+inline wide_mask operator<(wide a, wide b) noexcept { return {_mm_cmplt_ps(a.v, b.v)}; }
+// Lanes of `a` where the mask is set, of `b` elsewhere.
+inline wide select(wide_mask m, wide a, wide b) noexcept {
+    return {_mm_or_ps(_mm_and_ps(m.m, a.v), _mm_andnot_ps(m.m, b.v))};
+}
+inline wide_mask operator&(wide_mask a, wide_mask b) noexcept { return {_mm_and_ps(a.m, b.m)}; }
+inline bool any(wide_mask m) noexcept { return _mm_movemask_ps(m.m) != 0; }
+// std::max(a, b), that is (a < b) ? b : a, in every lane (zeros' signs and NaNs included).
+inline wide std_max(wide a, wide b) noexcept { return {_mm_max_ps(b.v, a.v)}; }
+// std::clamp(a, lo, hi) for lo <= hi: (a < lo) ? lo : (hi < a) ? hi : a.
+inline wide std_clamp(wide a, wide lo, wide hi) noexcept {
+    return {_mm_min_ps(hi.v, _mm_max_ps(lo.v, a.v))};
+}
+
+#else
+
+struct wide_mask {
+    bool m[wide_lanes];
+};
+
+struct wide {
+    scalar v[wide_lanes];
+};
+
+template<typename Fn>
+inline wide lanewise(Fn fn) noexcept {
+    wide r;
+    for (std::size_t i = 0; i < wide_lanes; ++i) r.v[i] = fn(i);
+    return r;
+}
+
+inline wide wide_load(const scalar *p) noexcept {
+    return lanewise([&](std::size_t i) { return p[i]; });
+}
+inline void wide_store(scalar *p, wide a) noexcept {
+    for (std::size_t i = 0; i < wide_lanes; ++i) p[i] = a.v[i];
+}
+inline wide wide_set(scalar s) noexcept {
+    return lanewise([&](std::size_t) { return s; });
+}
+inline wide wide_from_counts(const std::uint32_t *p) noexcept {
+    return lanewise([&](std::size_t i) { return scalar(p[i]); });
+}
+inline wide operator+(wide a, wide b) noexcept {
+    return lanewise([&](std::size_t i) { return a.v[i] + b.v[i]; });
+}
+inline wide operator-(wide a, wide b) noexcept {
+    return lanewise([&](std::size_t i) { return a.v[i] - b.v[i]; });
+}
+inline wide operator*(wide a, wide b) noexcept {
+    return lanewise([&](std::size_t i) { return a.v[i] * b.v[i]; });
+}
+inline wide operator/(wide a, wide b) noexcept {
+    return lanewise([&](std::size_t i) { return a.v[i] / b.v[i]; });
+}
+inline wide operator-(wide a) noexcept {
+    return lanewise([&](std::size_t i) { return -a.v[i]; });
+}
+inline wide_mask operator<(wide a, wide b) noexcept {
+    wide_mask m;
+    for (std::size_t i = 0; i < wide_lanes; ++i) m.m[i] = a.v[i] < b.v[i];
+    return m;
+}
+inline wide select(wide_mask m, wide a, wide b) noexcept {
+    return lanewise([&](std::size_t i) { return m.m[i] ? a.v[i] : b.v[i]; });
+}
+inline wide_mask operator&(wide_mask a, wide_mask b) noexcept {
+    wide_mask m;
+    for (std::size_t i = 0; i < wide_lanes; ++i) m.m[i] = a.m[i] && b.m[i];
+    return m;
+}
+inline bool any(wide_mask m) noexcept {
+    for (std::size_t i = 0; i < wide_lanes; ++i)
+        if (m.m[i]) return true;
+    return false;
+}
+inline wide std_max(wide a, wide b) noexcept {
+    return lanewise([&](std::size_t i) { return a.v[i] < b.v[i] ? b.v[i] : a.v[i]; });
+}
+inline wide std_clamp(wide a, wide lo, wide hi) noexcept {
+    return lanewise([&](std::size_t i) {
+        return a.v[i] < lo.v[i] ? lo.v[i] : (hi.v[i] < a.v[i] ? hi.v[i] : a.v[i]);
+    });
+}
+
+#endif
+
+// A vector3 in each lane.
+struct wide3 {
+    wide x, y, z;
+};
+
+inline wide3 operator+(const wide3 &a, const wide3 &b) noexcept { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline wide3 operator-(const wide3 &a, const wide3 &b) noexcept { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline wide3 operator*(const wide3 &a, wide s) noexcept { return {a.x * s, a.y * s, a.z * s}; }
+inline wide dot(const wide3 &a, const wide3 &b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline wide3 cross(const wide3 &a, const wide3 &b) noexcept {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline wide3 select(wide_mask m, const wide3 &a, const wide3 &b) noexcept {
+    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
+}
+// Loads three arrays of four lanes (x, y, z).
+inline wide3 wide3_load(const scalar (&p)[3][wide_lanes]) noexcept {
+    return {wide_load(p[0]), wide_load(p[1]), wide_load(p[2])};
+}
+
+// A quaternion in each lane, rotating as edyn::rotate does.
+struct wide_quaternion {
+    wide x, y, z, w;
+};
+
+inline wide3 rotate(const wide_quaternion &q, const wide3 &v) noexcept {
+    wide3 u{q.x, q.y, q.z};
+    auto two = wide_set(scalar(2));
+    auto t = cross(u, v) * two;
+    return (v + t * q.w) + cross(u, t);
+}
+
+} // namespace edyn::detail
+
+#endif // EDYN_SRC_MATH_WIDE_SCALAR_HPP
