@@ -17,6 +17,7 @@
 #include "edyn/math/vector2.hpp"
 #include "edyn/math/vector3.hpp"
 
+#include "edyn/parallel/background_tasks.hpp"
 #include "edyn/parallel/parallel_for.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 

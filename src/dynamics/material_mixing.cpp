@@ -108,6 +108,11 @@ bool has_per_vertex_material(const registry &registry, entity a, entity b) {
     return may_have_coefficients(registry, a) || may_have_coefficients(registry, b);
 }
 
+bool has_per_vertex_material(const registry &registry, const contact_manifold &manifold) {
+    if (manifold.point_materials.known) return manifold.point_materials.per_vertex;
+    return has_per_vertex_material(registry, manifold.body[0], manifold.body[1]);
+}
+
 material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point) {
     const auto &mat_a = registry.get<material>(a);
     const auto &mat_b = registry.get<material>(b);

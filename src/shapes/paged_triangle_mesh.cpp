@@ -1,8 +1,10 @@
 #include "edyn/shapes/paged_triangle_mesh.hpp"
 #include "invalid_argument.hpp"
 #include <algorithm>
+#include <condition_variable>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -37,6 +39,8 @@ public:
             return nullptr;
         }
     }
+
+    const std::vector<triangle_mesh_page> *memory_pages() const noexcept override { return &pages; }
 
 private:
     std::vector<triangle_mesh_page> pages;
@@ -94,6 +98,8 @@ public:
         }
     }
 
+    std::string page_directory() const override { return directory; }
+
 private:
     std::string directory;
 };
@@ -123,16 +129,69 @@ std::unique_ptr<triangle_mesh_page_loader> make_file_page_loader(const std::vect
     return std::make_unique<file_page_loader>(directory);
 }
 
+// What the mesh shares with its load tasks, which may run on any thread and may still be queued
+// when the mesh is destroyed.
+struct paged_triangle_mesh::loading {
+    std::unique_ptr<triangle_mesh_page_loader> loader;
+    // Loaders need not be thread-safe: one load at a time.
+    std::mutex load_mutex;
+    // Guards what follows and the tickets' `claimed`.
+    std::mutex mutex;
+    std::condition_variable cv;
+    std::vector<std::pair<std::size_t, std::shared_ptr<triangle_mesh>>> done;
+    unsigned running{0}; // Loads claimed and not yet in `done`.
+
+    // Claims the ticket: true for the one caller that is to load the page.
+    bool claim(load_ticket &ticket);
+    // Loads a page whose ticket the caller claimed and hands it over through `done`.
+    void load(std::size_t index);
+};
+
+struct paged_triangle_mesh::load_ticket {
+    bool claimed{false}; // Under loading::mutex.
+};
+
+bool paged_triangle_mesh::loading::claim(load_ticket &ticket) {
+    std::lock_guard lock(mutex);
+    if (ticket.claimed) return false;
+    ticket.claimed = true;
+    ++running;
+    return true;
+}
+
+void paged_triangle_mesh::loading::load(std::size_t index) {
+    std::shared_ptr<triangle_mesh> mesh;
+    {
+        std::lock_guard lock(load_mutex);
+        try {
+            mesh = loader->load(index);
+        } catch (...) {
+            mesh = nullptr;
+        }
+    }
+    {
+        std::lock_guard lock(mutex);
+        done.emplace_back(index, std::move(mesh));
+        --running;
+    }
+    cv.notify_all();
+}
+
+std::unique_ptr<triangle_mesh_page_loader> open_file_page_loader(const std::string &directory) {
+    return std::make_unique<file_page_loader>(directory);
+}
+
 paged_triangle_mesh::paged_triangle_mesh(std::vector<AABB> page_aabbs,
                                          std::vector<std::size_t> page_triangles,
                                          std::unique_ptr<triangle_mesh_page_loader> loader)
-    : loader(std::move(loader)) {
+    : shared(std::make_shared<loading>()) {
     if (page_aabbs.empty()) throw_invalid_argument("paged_triangle_mesh: there must be at least one page");
     if (page_triangles.size() != page_aabbs.size()) {
         throw_invalid_argument("paged_triangle_mesh: ", page_aabbs.size(), " page bounds but ",
                                page_triangles.size(), " triangle counts");
     }
-    if (!this->loader) throw_invalid_argument("paged_triangle_mesh: loader is null");
+    if (!loader) throw_invalid_argument("paged_triangle_mesh: loader is null");
+    shared->loader = std::move(loader);
     pages.resize(page_aabbs.size());
     first_triangles.assign(1, 0);
     for (std::size_t p = 0; p < pages.size(); ++p) {
@@ -143,13 +202,16 @@ paged_triangle_mesh::paged_triangle_mesh(std::vector<AABB> page_aabbs,
 }
 
 paged_triangle_mesh::~paged_triangle_mesh() {
-    {
-        std::lock_guard lock(mutex);
-        stopping = true;
+    // Tasks not started find their ticket claimed and do nothing; the load in progress, if any,
+    // finishes before the loader (owned by `shared`) may be destroyed with the mesh's owner.
+    std::unique_lock lock(shared->mutex);
+    for (auto &p : pages) {
+        if (p.ticket) p.ticket->claimed = true;
     }
-    cv.notify_all();
-    if (thread.joinable()) thread.join();
+    shared->cv.wait(lock, [&] { return shared->running == 0; });
 }
+
+const triangle_mesh_page_loader &paged_triangle_mesh::get_loader() const noexcept { return *shared->loader; }
 
 std::size_t paged_triangle_mesh::page_of_triangle(std::size_t triangle) const noexcept {
     auto it = std::upper_bound(first_triangles.begin(), first_triangles.end(), triangle);
@@ -169,65 +231,35 @@ std::size_t paged_triangle_mesh::num_loaded_triangles() const noexcept {
     return count;
 }
 
-void paged_triangle_mesh::loader_loop() {
-    std::unique_lock lock(mutex);
-    for (;;) {
-        cv.wait(lock, [&] { return stopping || !queue.empty(); });
-        if (stopping) return;
-        auto index = queue.front();
-        queue.pop_front();
-        lock.unlock();
-        std::shared_ptr<triangle_mesh> mesh;
-        try {
-            mesh = loader->load(index);
-        } catch (...) {
-            mesh = nullptr;
-        }
-        lock.lock();
-        done.emplace_back(index, std::move(mesh));
-        cv.notify_all();
-    }
-}
-
-void paged_triangle_mesh::enqueue(std::size_t index, bool urgent) {
-    {
-        std::lock_guard lock(mutex);
-        if (!thread.joinable()) thread = std::thread([this] { loader_loop(); });
-        if (urgent) {
-            // Ahead of the pages asked for in advance.
-            auto it = std::find(queue.begin(), queue.end(), index);
-            if (it != queue.end()) queue.erase(it);
-            queue.push_front(index);
-        } else {
-            queue.push_back(index);
-        }
-    }
-    cv.notify_all();
-}
-
 void paged_triangle_mesh::collect() {
     std::vector<std::pair<std::size_t, std::shared_ptr<triangle_mesh>>> finished;
     {
-        std::lock_guard lock(mutex);
-        finished.swap(done);
+        std::lock_guard lock(shared->mutex);
+        if (shared->done.empty()) return;
+        finished.swap(shared->done);
     }
     for (auto &[index, mesh] : finished) {
         auto &p = pages[index];
         // A failed load leaves the page unloaded: it is asked for again when needed.
         p.mesh = std::move(mesh);
         p.state = p.mesh ? page_state::loaded : page_state::unloaded;
+        p.ticket.reset();
     }
 }
 
-void paged_triangle_mesh::request(const AABB &region, std::uint64_t step) {
+void paged_triangle_mesh::request(const AABB &region, std::uint64_t step, background_tasks &tasks) {
     tree.visit([&](const AABB &node) { return intersect(node, region); },
                [&](std::size_t index) {
                    auto &p = pages[index];
                    p.last_used = step;
-                   if (p.state == page_state::unloaded) {
-                       p.state = page_state::queued;
-                       enqueue(index, false);
-                   }
+                   if (p.state != page_state::unloaded) return;
+                   p.state = page_state::queued;
+                   p.ticket = std::make_shared<load_ticket>();
+                   // The task holds the shared state, not the mesh: it may run after the mesh is
+                   // gone, and then finds its ticket claimed.
+                   tasks.post([shared = shared, ticket = p.ticket, index] {
+                       if (shared->claim(*ticket)) shared->load(index);
+                   });
                });
 }
 
@@ -238,17 +270,21 @@ void paged_triangle_mesh::require(const AABB &region, std::uint64_t step) {
                    auto &p = pages[index];
                    p.last_used = step;
                    if (p.state == page_state::loaded) return;
-                   p.state = page_state::queued;
-                   enqueue(index, true);
+                   if (p.state == page_state::unloaded) {
+                       p.state = page_state::queued;
+                       p.ticket = std::make_shared<load_ticket>();
+                   }
                    waiting.push_back(index);
                });
     for (auto index : waiting) {
+        // Loaded here unless a task has started on it (or finished it): never twice at once.
+        if (auto ticket = pages[index].ticket; ticket && shared->claim(*ticket)) shared->load(index);
         // Each page is waited for once: a failed load leaves it unloaded for this step.
         for (;;) {
             collect();
             if (pages[index].state != page_state::queued) break;
-            std::unique_lock lock(mutex);
-            cv.wait(lock, [&] { return !done.empty(); });
+            std::unique_lock lock(shared->mutex);
+            shared->cv.wait(lock, [&] { return !shared->done.empty(); });
         }
     }
 }

@@ -46,7 +46,7 @@ void fill_materials(const registry &registry, contact_manifold &manifold,
     auto *matB = registry.try_get<material>(manifold.body[1]);
     if (!matA || !matB) return;
     // Per-vertex materials of a mesh: every point, every step, as points move over the mesh.
-    if (has_per_vertex_material(registry, manifold.body[0], manifold.body[1])) {
+    if (has_per_vertex_material(registry, manifold)) {
         for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
             auto &cp = manifold.point[manifold.ids[i]];
             set_material(cp, get_point_material(registry, manifold.body[0], manifold.body[1], cp));
@@ -100,6 +100,15 @@ contact_point_changes collide_manifold(const registry &registry, contact_manifol
     auto approach = approach_speed(registry, a, b) * dt;
     manifold.separation_threshold = contact_breaking_threshold + approach;
     shape_epoch_pair epochs{shape_epoch_of(registry, a), shape_epoch_of(registry, b)};
+    // Worked out once, and again only when a shape changed: the bodies' shapes are not looked up
+    // for it every step. (A pair that skips the steps above has no moving body: its points, if
+    // any, stay as they are until one moves, which brings it here.)
+    auto &materials = manifold.point_materials;
+    if (!materials.known || materials.shape_epochs != epochs) {
+        materials.per_vertex = has_per_vertex_material(registry, a, b);
+        materials.shape_epochs = epochs;
+        materials.known = true;
+    }
     if (can_reuse_contacts(manifold, tf, approach, epochs)) {
         return refresh_contact_manifold(manifold, tf);
     }

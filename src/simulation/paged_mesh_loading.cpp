@@ -42,12 +42,13 @@ void update_paged_meshes(registry &registry, world_state &world) {
             auto ahead = inset(aabb, vector3_one * lookahead);
             if (!intersect(ahead, mesh_aabb)) continue;
             auto local = to_local(aabb, pos, orn);
-            paged.request(inset(local, vector3_one * lookahead), step);
+            paged.request(inset(local, vector3_one * lookahead), step, *world.background);
             // Pages the body can touch in this step: its bounds grown by the step's travel.
             paged.require(inset(local, vector3_one * (speed * dt + contact_breaking_threshold)), step);
         }
         paged.unload_unused(step);
     }
+    world.background->release_finished();
 }
 
 } // namespace edyn

@@ -107,7 +107,7 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
     c.damping = mixed.damping;
     c.normal = manifold.point[manifold.ids[0]].normal;
     c.source = source;
-    if (has_per_vertex_material(registry, a, b)) {
+    if (has_per_vertex_material(registry, manifold)) {
         // The points' own values (the narrowphase interpolated them), averaged over the manifold
         // whose friction and restitution the solver shares between its points.
         scalar friction = 0, restitution = 0;

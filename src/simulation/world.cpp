@@ -119,9 +119,13 @@ void attach(registry &registry, const init_config &config) {
             invalid("attach", std::string("init_config::scheduler: ") + e.what());
         }
     }
+    auto background = config.scheduler && scheduler ? std::make_unique<background_tasks>(*config.scheduler)
+                                                    : std::make_unique<background_tasks>();
     auto &s = registry.ctx().emplace<settings>();
     s.execution_mode = config.execution_mode;
-    registry.ctx().emplace<world_state>().scheduler = std::move(scheduler);
+    auto &state = registry.ctx().emplace<world_state>();
+    state.scheduler = std::move(scheduler);
+    state.background = std::move(background);
     registry.ctx().emplace<contact_events>();
     if (config.execution_mode == execution_mode::asynchronous) {
         // The simulation lives in the worker; this registry mirrors it.

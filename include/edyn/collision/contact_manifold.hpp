@@ -76,6 +76,18 @@ struct contact_manifold {
         bool valid{false};                   ///< Whether collide() has run for the pair yet.
     } last_collide;                          ///< The state at the last collide() of this pair.
 
+    /// Whether either body's shape may give each contact point a material of its own (a triangle
+    /// mesh with per-vertex friction or restitution, or a paged mesh: see
+    /// has_per_vertex_material), worked out by the narrowphase the first time it collides the
+    /// pair and again after either body's shape changed (its shape_epoch), so that the step does
+    /// not look both bodies' shapes up for every manifold. Written by the engine.
+    struct material_snapshot {
+        /// Shape epochs of A and B when `per_vertex` was worked out.
+        shape_epoch_pair shape_epochs{0, 0};
+        bool known{false};      ///< Whether `per_vertex` has been worked out yet.
+        bool per_vertex{false}; ///< Whether per-point materials may apply to the pair.
+    } point_materials;          ///< Whether the points have materials of their own.
+
     /// Calls `fn(contact_point &)` for each live point, in `ids` order.
     /// @param fn Callable taking a `contact_point &`.
     template<typename Fn>

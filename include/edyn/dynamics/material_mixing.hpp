@@ -1,6 +1,7 @@
 #ifndef EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 #define EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 
+#include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/contact_point.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/ecs/registry.hpp"
@@ -105,6 +106,14 @@ material_base get_mixed_material(const registry &registry, const material &a, co
 /// @param b Second body.
 /// @return Whether per-point materials may apply to this pair.
 bool has_per_vertex_material(const registry &registry, entity a, entity b);
+
+/// Whether the points of `manifold` may each have their own material: the manifold's
+/// `point_materials` once the narrowphase has worked it out, else has_per_vertex_material() of
+/// its bodies (a manifold the narrowphase has not collided yet).
+/// @param registry The registry the manifold's bodies live in.
+/// @param manifold The manifold.
+/// @return Whether per-point materials may apply to the manifold's points.
+bool has_per_vertex_material(const registry &registry, const contact_manifold &manifold);
 
 /// The material at one contact point of bodies `a` and `b`.
 /// A pair override when one exists; otherwise each mesh body's friction and restitution

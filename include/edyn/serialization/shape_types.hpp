@@ -19,9 +19,12 @@
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/shapes/shapes.hpp"
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -246,18 +249,163 @@ void serialize(Archive &archive, mesh_shape &shape) {
     }
 }
 
-/// Writes or reads a paged mesh shape as absent: its pages are not sent.
+/// The most pages a paged mesh read from bytes may have (65,536); more fail the archive.
+inline constexpr std::size_t max_serialized_mesh_pages = std::size_t(1) << 16;
+/// The most triangles one page of a paged mesh read from bytes may have (a third of
+/// max_serialized_mesh_indices); more fail the archive.
+inline constexpr std::size_t max_serialized_page_triangles = max_serialized_mesh_indices / 3;
+/// The longest page directory a paged mesh read from bytes may name (4,096 bytes).
+inline constexpr std::size_t max_serialized_page_directory = 4096;
+
+namespace detail {
+
+// How a paged mesh's pages travel.
+enum class paged_mesh_source : std::uint8_t {
+    absent, // No mesh, or pages from a loader of the program's own: not sent.
+    memory, // The pages' arrays (make_memory_page_loader).
+    files   // The directory of the page files (make_file_page_loader, open_file_page_loader).
+};
+
+inline bool is_finite(const vector3 &v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The page's arrays as a memory loader keeps them, read with the same bounds as a mesh_shape's;
+// false (and the archive failed) when they do not describe `num_triangles` triangles.
+inline bool read_page(memory_input_archive &archive, triangle_mesh_page &page, std::size_t num_triangles) {
+    if (!read_bounded_array(archive, page.vertices, max_serialized_mesh_vertices) ||
+        !read_bounded_array(archive, page.indices, max_serialized_mesh_indices) ||
+        !read_bounded_array(archive, page.friction, max_serialized_mesh_vertices) ||
+        !read_bounded_array(archive, page.restitution, max_serialized_mesh_vertices) ||
+        !read_bounded_array(archive, page.edge_flags, max_serialized_page_triangles)) {
+        return false;
+    }
+    if (page.indices.size() != 3 * num_triangles || page.edge_flags.size() != num_triangles) {
+        archive.fail();
+        return false;
+    }
+    return true;
+}
+
+} // namespace detail
+
+/// Writes or reads a paged mesh shape: its page layout (each page's bounds and triangle count,
+/// from which the page tree is rebuilt the same), `lookahead_time` and `unload_delay`, and where
+/// its pages come from.
 ///
-/// The pages come from the program's own loader, which a peer provides through an asset (see the
-/// manual's assets). The shape is read as one without a mesh, which make_rigidbody refuses.
+/// Pages held by make_memory_page_loader() travel whole (each page's vertices, indices,
+/// per-vertex friction and restitution, and edge activity), and the copy keeps them in a loader
+/// of the same kind; for make_file_page_loader() or open_file_page_loader(), the directory
+/// travels, and the copy reads the page files there (open_file_page_loader()), which the peer
+/// must have. Either way the copy numbers its pages and triangles as the original does, so that
+/// contact features and ray-cast infos agree. Pages from a loader of the program's own are not
+/// sent: the shape is written as one without a mesh, which make_rigidbody refuses (send such
+/// terrain as an asset). What a mesh is loading or has loaded is not sent: the copy loads its own.
+///
+/// Reading validates everything it rebuilds: counts beyond the `max_serialized_*` bounds, bounds
+/// that are not finite, a page whose arrays are not its triangle count's or that
+/// triangle_mesh::initialize() refuses, a negative or non-finite lookahead, fail the archive and
+/// leave `shape` as it was. The mesh read is a new one, not shared with other shapes.
 /// @param archive A memory_output_archive or memory_input_archive.
-/// @param shape The shape to write from (ignored) or read into.
+/// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, paged_mesh_shape &shape) {
-    bool has_mesh = false;
-    archive(has_mesh);
-    if constexpr (!Archive::is_output) {
-        if (!archive.failed()) shape.trimesh.reset();
+    using source = detail::paged_mesh_source;
+    if constexpr (Archive::is_output) {
+        const auto *pages = shape.trimesh ? shape.trimesh->get_loader().memory_pages() : nullptr;
+        auto directory = shape.trimesh ? shape.trimesh->get_loader().page_directory() : std::string{};
+        auto kind = pages ? source::memory : !directory.empty() ? source::files : source::absent;
+        serialize_enum(archive, kind, source::files);
+        if (kind == source::absent) return;
+        const auto &mesh = *shape.trimesh;
+        auto lookahead = mesh.lookahead_time;
+        auto delay = mesh.unload_delay;
+        archive(lookahead, delay);
+        archive.write_size(mesh.num_pages());
+        for (std::size_t p = 0; p < mesh.num_pages(); ++p) {
+            auto aabb = mesh.get_page_aabb(p);
+            archive(aabb.min, aabb.max);
+            archive.write_size(mesh.num_page_triangles(p));
+        }
+        if (kind == source::files) {
+            archive(directory);
+            return;
+        }
+        for (const auto &page : *pages) {
+            detail::write_array(archive, std::span<const vector3>(page.vertices));
+            detail::write_array(archive, std::span<const std::uint32_t>(page.indices));
+            detail::write_array(archive, std::span<const scalar>(page.friction));
+            detail::write_array(archive, std::span<const scalar>(page.restitution));
+            detail::write_array(archive, std::span<const std::uint8_t>(page.edge_flags));
+        }
+    } else {
+        auto kind = source::absent;
+        serialize_enum(archive, kind, source::files);
+        if (archive.failed()) return;
+        if (kind == source::absent) {
+            shape.trimesh.reset();
+            return;
+        }
+        scalar lookahead = 0;
+        std::uint32_t delay = 0;
+        archive(lookahead, delay);
+        // Each page takes at least two vectors and a count.
+        auto num_pages = archive.read_size(std::min(max_serialized_mesh_pages, archive.remaining() / 7));
+        if (archive.failed()) return;
+        if (!std::isfinite(lookahead) || lookahead < 0 || num_pages == 0) {
+            archive.fail();
+            return;
+        }
+        std::vector<AABB> aabbs(num_pages);
+        std::vector<std::size_t> counts(num_pages);
+        for (std::size_t p = 0; p < num_pages; ++p) {
+            archive(aabbs[p].min, aabbs[p].max);
+            counts[p] = archive.read_size(max_serialized_page_triangles);
+            if (archive.failed()) return;
+            const auto &lo = aabbs[p].min, &hi = aabbs[p].max;
+            if (!detail::is_finite(lo) || !detail::is_finite(hi) || lo.x > hi.x || lo.y > hi.y ||
+                lo.z > hi.z) {
+                archive.fail();
+                return;
+            }
+        }
+        std::unique_ptr<triangle_mesh_page_loader> loader;
+        if (kind == source::files) {
+            auto size = archive.read_size(max_serialized_page_directory);
+            if (archive.failed()) return;
+            std::string directory(size, '\0');
+            archive.read_bytes(directory.data(), size);
+            if (archive.failed()) return;
+            if (directory.empty()) {
+                archive.fail();
+                return;
+            }
+            loader = open_file_page_loader(directory);
+        } else {
+            std::vector<triangle_mesh_page> pages(num_pages);
+            for (std::size_t p = 0; p < num_pages; ++p) {
+                if (!detail::read_page(archive, pages[p], counts[p])) return;
+            }
+            loader = make_memory_page_loader(std::move(pages));
+            // Every page once, as the peer's loads will build it: one the loader refuses would
+            // stay empty there, a hole in the terrain, so it fails the archive here.
+            for (std::size_t p = 0; p < num_pages; ++p) {
+                auto page = loader->load(p);
+                if (!page || page->num_triangles() != counts[p]) {
+                    archive.fail();
+                    return;
+                }
+            }
+        }
+        try {
+            auto mesh =
+                std::make_shared<paged_triangle_mesh>(std::move(aabbs), std::move(counts), std::move(loader));
+            mesh->lookahead_time = lookahead;
+            mesh->unload_delay = delay;
+            shape.trimesh = std::move(mesh);
+        } catch (...) {
+            archive.fail();
+        }
     }
 }
 

@@ -1,17 +1,14 @@
 #ifndef EDYN_SHAPES_PAGED_TRIANGLE_MESH_HPP
 #define EDYN_SHAPES_PAGED_TRIANGLE_MESH_HPP
 
+#include "edyn/parallel/background_tasks.hpp"
 #include "edyn/shapes/aabb.hpp"
 #include "edyn/shapes/static_tree.hpp"
 #include "edyn/shapes/triangle_mesh.hpp"
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <memory>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace edyn {
@@ -32,19 +29,29 @@ struct triangle_mesh_page {
 /// Where the pages of a paged_triangle_mesh come from; derive from it to load pages from your
 /// own storage.
 ///
-/// load() is called on the mesh's loading thread, one page at a time, and may block (on a file,
-/// a network). make_memory_page_loader() and make_file_page_loader() give ready-made loaders.
+/// load() is called by the world's background tasks (see background_tasks: a program's own
+/// scheduler, when init_config::scheduler gives one), or on the thread that steps the world when
+/// a body needs a page at once; one page at a time, and it may block (on a file, a network).
+/// make_memory_page_loader() and make_file_page_loader() give ready-made loaders.
 class triangle_mesh_page_loader {
 public:
     virtual ~triangle_mesh_page_loader() = default;
-    /// Loads one page; called on the mesh's background loading thread, never concurrently with
-    /// itself.
+    /// Loads one page; called on any thread, never concurrently with itself, and never after
+    /// the paged_triangle_mesh that owns the loader is destroyed.
     /// @param page Index of the page.
     /// @return An initialized triangle_mesh holding the page's triangles, in the same order and
     ///         count as given to paged_triangle_mesh, or null when the page cannot be had (an
     ///         exception counts as null). The page then stays empty: nothing collides with it,
     ///         and it is asked for again the next time a body needs it.
     virtual std::shared_ptr<triangle_mesh> load(std::size_t page) = 0;
+    /// The pages, when the loader keeps them all in memory (make_memory_page_loader()), so that
+    /// the mesh can be sent to a peer whole; null by default, for pages that come from elsewhere.
+    /// @return The pages, indexed by page number, or null.
+    virtual const std::vector<triangle_mesh_page> *memory_pages() const noexcept { return nullptr; }
+    /// The directory of page files the loader reads (make_file_page_loader(),
+    /// open_file_page_loader()), so that a peer can read the same files; empty by default.
+    /// @return The directory, or an empty string.
+    virtual std::string page_directory() const { return {}; }
 };
 
 /// Makes a page loader that keeps every page's arrays in memory and builds a page's
@@ -62,14 +69,23 @@ std::unique_ptr<triangle_mesh_page_loader> make_memory_page_loader(std::vector<t
 std::unique_ptr<triangle_mesh_page_loader> make_file_page_loader(const std::vector<triangle_mesh_page> &pages,
                                                                  const std::string &directory);
 
+/// Makes a page loader that reads the page files make_file_page_loader() wrote in `directory`
+/// (in this run or another), writing nothing. A page whose file is missing or malformed fails to
+/// load (it stays empty).
+/// @param directory The directory of the page files.
+/// @return The loader, to give to paged_triangle_mesh.
+std::unique_ptr<triangle_mesh_page_loader> open_file_page_loader(const std::string &directory);
+
 /// A triangle mesh too large to keep in memory whole (a large terrain), split into pages of
 /// at most a given number of triangles under a tree of their bounds.
 ///
-/// The simulation loads the
-/// pages that bodies near (their bounds grown by the distance they travel in `lookahead_time`)
-/// on a background thread, and unloads those no body has neared for `unload_delay` steps. A
-/// body over a page whose load has not finished waits for it: the step completes the load
-/// before the body's collision, so no body falls through a page that was late.
+/// The simulation loads the pages that bodies near (their bounds grown by the distance they
+/// travel in `lookahead_time`) in the background, as tasks of the world's background_tasks (so
+/// through the program's scheduler when init_config::scheduler gives one), and unloads those no
+/// body has neared for `unload_delay` steps. A body over a page whose load has not finished waits
+/// for it: the step completes the load before the body's collision, loading the page itself when
+/// no task has started on it yet, so no body falls through a page that was late. A page is
+/// never loaded by two tasks at once.
 ///
 /// Triangles are numbered across pages: page p holds triangles first_triangle(p) onwards.
 /// Collision features carry that number in `part`. A paged mesh belongs to one world (its
@@ -91,7 +107,8 @@ public:
     /// @throws std::invalid_argument For no pages, mismatched counts or a null loader.
     paged_triangle_mesh(std::vector<AABB> page_aabbs, std::vector<std::size_t> page_triangles,
                         std::unique_ptr<triangle_mesh_page_loader> loader);
-    /// Stops the loading thread, waiting for the page being loaded, if any.
+    /// Cancels the loads not started yet and waits for the one in progress, if any: the loader
+    /// is not called once this returns. Background tasks still queued for it do nothing then.
     ~paged_triangle_mesh();
     paged_triangle_mesh(const paged_triangle_mesh &) = delete;
     paged_triangle_mesh &operator=(const paged_triangle_mesh &) = delete;
@@ -103,6 +120,13 @@ public:
     /// Number, across pages, of the page's first triangle.
     /// @param page Index of the page (not checked).
     std::size_t first_triangle(std::size_t page) const noexcept { return first_triangles[page]; }
+    /// Number of triangles of a page, loaded or not.
+    /// @param page Index of the page (not checked).
+    std::size_t num_page_triangles(std::size_t page) const noexcept {
+        return first_triangles[page + 1] - first_triangles[page];
+    }
+    /// Where the pages come from (read only: to send the mesh to a peer).
+    const triangle_mesh_page_loader &get_loader() const noexcept;
     /// The page holding triangle `triangle` (numbered across pages).
     std::size_t page_of_triangle(std::size_t triangle) const noexcept;
     /// Bounds of all pages, in the mesh's space.
@@ -134,20 +158,22 @@ public:
                    });
     }
 
-    /// Starts loading, in the background, the pages that overlap `region`, and marks them in use
-    /// at `step`.
+    /// Starts loading, as tasks posted to `tasks`, the pages that overlap `region` and are not
+    /// loaded or being loaded, and marks them in use at `step`.
     ///
     /// This and the three functions below are the simulation's side, called by the step on the
-    /// thread that steps the world.
+    /// thread that steps the world (one thread at a time).
     /// @param region The region in the mesh's space (m).
     /// @param step Number of the current step.
-    void request(const AABB &region, std::uint64_t step);
-    /// Loads now the pages that overlap `region` and are not loaded, waiting for those being
-    /// loaded; marks them in use at `step`. A page whose load fails stays empty for this step.
+    /// @param tasks Where the loads run: the world's background tasks.
+    void request(const AABB &region, std::uint64_t step, background_tasks &tasks);
+    /// Loads now, on the calling thread, the pages that overlap `region` and are neither loaded
+    /// nor being loaded, and waits for those a task is loading; marks them in use at `step`. A
+    /// page whose load fails stays empty for this step.
     /// @param region The region in the mesh's space (m).
     /// @param step Number of the current step.
     void require(const AABB &region, std::uint64_t step);
-    /// Takes in the pages whose background load finished, making them visible to queries.
+    /// Takes in the pages whose load finished, making them visible to queries.
     void collect();
     /// Unloads the pages not in use since `step - unload_delay`.
     /// @param step Number of the current step.
@@ -155,28 +181,22 @@ public:
 
 private:
     enum class page_state : std::uint8_t { unloaded, queued, loaded };
+    struct loading;
+    struct load_ticket;
     struct page {
         AABB aabb;
         std::shared_ptr<triangle_mesh> mesh;
         page_state state{page_state::unloaded};
         std::uint64_t last_used{0};
+        // While queued: claimed by the one who loads the page (a task, or require()).
+        std::shared_ptr<load_ticket> ticket;
     };
-
-    void enqueue(std::size_t page, bool urgent);
-    void loader_loop();
 
     std::vector<page> pages;
     std::vector<std::size_t> first_triangles; // One more than pages: the total last.
     static_tree tree;
-    std::unique_ptr<triangle_mesh_page_loader> loader;
-
-    // Shared with the loading thread.
-    std::mutex mutex;
-    std::condition_variable cv;
-    std::deque<std::size_t> queue;
-    std::vector<std::pair<std::size_t, std::shared_ptr<triangle_mesh>>> done;
-    bool stopping{false};
-    std::thread thread; // Started with the first load.
+    // The loader and the finished loads, shared with the tasks (which may outlive the mesh).
+    std::shared_ptr<loading> shared;
 };
 
 /// Splits a mesh into pages and makes a paged mesh of them, ready for a paged_mesh_shape.

@@ -31,8 +31,10 @@ struct init_config {
     /// The most num_worker_threads accepts: 256.
     static constexpr unsigned max_worker_threads = 256;
     /// sequential_multithreaded only: the program's own scheduler, instead of edyn's oneTBB
-    /// arena (num_worker_threads is then ignored). Empty by default. Its `enqueue` and `wait`
-    /// hooks must be set and its `concurrency` must not be 0.
+    /// arena (num_worker_threads is then ignored), for the step's parallel phases and for the
+    /// background work (page loads of paged meshes, one task of one item each: see
+    /// background_tasks). Empty by default. Its `enqueue` and `wait` hooks must be set and its
+    /// `concurrency` must not be 0.
     std::optional<task_hooks> scheduler{};
 };
 

@@ -1,6 +1,7 @@
 #include "collide_test_helpers.hpp"
 #include "edyn/shapes/mesh_shape.hpp"
 #include "edyn/shapes/polyhedron_shape.hpp"
+#include "support/grid_mesh.hpp"
 #include <functional>
 #include <memory>
 #include <string>
@@ -23,30 +24,12 @@ constexpr scalar tol = scalar(1e-4);
 vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar(z)}; }
 
 mesh_shape make_mesh(const std::vector<vector3> &vertices, const std::vector<int> &indices) {
-    auto mesh = std::make_shared<triangle_mesh>();
-    mesh->insert_vertices(vertices.begin(), vertices.end());
-    mesh->insert_indices(indices.begin(), indices.end());
-    mesh->initialize();
-    return mesh_shape{mesh};
+    return mesh_shape{test::make_triangle_mesh(vertices, indices)};
 }
 
 // Floor of n x n unit cells in the xz plane at y = 0, front +y; cell (i, j) spans
-// [i, i + 1] x [j, j + 1].
-mesh_shape floor_mesh(int n) {
-    std::vector<vector3> vertices;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j)
-            vertices.push_back(vec(i, 0, j));
-    std::vector<int> indices;
-    auto at = [n](int i, int j) { return i * (n + 1) + j; };
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            indices.insert(indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    }
-    return make_mesh(vertices, indices);
-}
+// [i, i + 1] x [j, j + 1] (support/grid_mesh.hpp).
+mesh_shape floor_mesh(int n) { return mesh_shape{test::make_grid(n)}; }
 
 // Triangle 0 far away; triangle 1 large, facing +y at y = 0, around the origin, transformed by
 // (pos, orn).

@@ -4,6 +4,7 @@
 #include "edyn/collision/shape_raycast.hpp"
 #include "edyn/edyn.hpp"
 #include "edyn/math/transform.hpp"
+#include "support/grid_mesh.hpp"
 #include <cmath>
 #include <gtest/gtest.h>
 #include <memory>
@@ -32,25 +33,11 @@ void expect_vec_near(const vector3 &a, const vector3 &b, scalar t) {
 // n x n unit cells in the xz plane at height y, front +y, appended to (vertices, indices). Cell
 // (i, j) gives triangles first + 2 (i n + j) (where z - j >= x - i) and first + 2 (i n + j) + 1.
 void add_floor(std::vector<vector3> &vertices, std::vector<int> &indices, int n, scalar y) {
-    int base = int(vertices.size());
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j)
-            vertices.push_back({scalar(i), y, scalar(j)});
-    auto at = [&](int i, int j) { return base + i * (n + 1) + j; };
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            indices.insert(indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    }
+    test::append_grid(vertices, indices, n, 1, {0, y, 0});
 }
 
 mesh_shape make_mesh(const std::vector<vector3> &vertices, const std::vector<int> &indices) {
-    auto mesh = std::make_shared<triangle_mesh>();
-    mesh->insert_vertices(vertices.begin(), vertices.end());
-    mesh->insert_indices(indices.begin(), indices.end());
-    mesh->initialize();
-    return mesh_shape{mesh};
+    return mesh_shape{test::make_triangle_mesh(vertices, indices)};
 }
 
 // Two 4 x 4 floors: triangles 0..31 at y = 0, 32..63 at y = 1.

@@ -1,5 +1,6 @@
 // Bodies with a mesh_shape: only static and kinematic ones, checked at creation, on a change of
 // kind and on a change of shape; their AABB; a kinematic mesh carries its contacts when moved.
+#include "support/grid_mesh.hpp"
 #include <cmath>
 #include <edyn/edyn.hpp>
 #include <functional>
@@ -17,24 +18,8 @@ vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar
 
 // n x n cells of size `cell` in the xz plane at y = 0, centred on the origin, facing +y.
 mesh_shape floor_mesh(int n, scalar cell) {
-    std::vector<vector3> vertices;
     auto half = scalar(n) * cell / 2;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j)
-            vertices.push_back({scalar(i) * cell - half, 0, scalar(j) * cell - half});
-    std::vector<int> indices;
-    auto at = [n](int i, int j) { return i * (n + 1) + j; };
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            indices.insert(indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    }
-    auto mesh = std::make_shared<triangle_mesh>();
-    mesh->insert_vertices(vertices.begin(), vertices.end());
-    mesh->insert_indices(indices.begin(), indices.end());
-    mesh->initialize();
-    return mesh_shape{mesh};
+    return mesh_shape{test::make_grid(n, cell, {-half, 0, -half})};
 }
 
 void expect_invalid_argument(const std::function<void()> &fn, const std::vector<std::string> &parts) {

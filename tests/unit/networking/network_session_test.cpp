@@ -5,6 +5,7 @@
 #include <cmath>
 #include <edyn/networking/networked_components.hpp>
 #include <edyn/networking/remote_client.hpp>
+#include <edyn_scenes/scenes.hpp>
 #include <gtest/gtest.h>
 #include <map>
 
@@ -222,3 +223,55 @@ TEST(network_session, corrections_are_shown_gradually_and_decay) {
 }
 
 } // namespace
+
+TEST(network_session, a_body_resting_on_a_paged_terrain_rests_on_the_client_s_copy_of_it) {
+    net_harness h(&setup);
+    // A hilly 40 m x 40 m terrain of 3,200 triangles in pages of 200, kept in memory.
+    auto grid =
+        scenes::make_grid_mesh(40, 1, [](scalar x, scalar z) { return scenes::terrain_height(x, z, 2); });
+    auto v = grid->get_vertices();
+    auto i = grid->get_indices();
+    auto def = rigidbody_def{};
+    def.kind = rigidbody_kind::rb_static;
+    def.shape = paged_mesh_shape{create_paged_triangle_mesh({v.begin(), v.end()}, {i.begin(), i.end()}, 200)};
+    auto terrain = make_rigidbody(h.server, def);
+    h.server.emplace<networked_tag>(terrain);
+    const auto &server_mesh = *h.server.get<paged_mesh_shape>(terrain).trimesh;
+    auto x = scalar(3), z = scalar(-4);
+    auto box = make_box(h.server, {x, scenes::terrain_height(x, z, 2) + scalar(0.6), z});
+    auto &c = h.add_client({.latency = 0.05});
+
+    auto worst_sink = scalar(0);
+    h.run(4, [&] {
+        if (h.time < 2) return;
+        auto local = client_local_entity(c.reg, box);
+        if (local == null) return;
+        auto p = c.reg.get<position>(local);
+        auto sink = scenes::terrain_height(p.x, p.z, 2) + scalar(0.5) - p.y;
+        worst_sink = std::max(worst_sink, sink);
+    });
+
+    auto local_terrain = client_local_entity(c.reg, terrain);
+    ASSERT_NE(local_terrain, entity{null}) << "the terrain was not created in the client";
+    ASSERT_TRUE(c.reg.all_of<paged_mesh_shape>(local_terrain));
+    const auto &client_mesh = c.reg.get<paged_mesh_shape>(local_terrain).trimesh;
+    ASSERT_NE(client_mesh, nullptr);
+    EXPECT_EQ(client_mesh->num_pages(), server_mesh.num_pages());
+    EXPECT_EQ(client_mesh->num_triangles(), server_mesh.num_triangles());
+    for (std::size_t p = 0; p < server_mesh.num_pages(); ++p)
+        EXPECT_EQ(client_mesh->get_page_aabb(p), server_mesh.get_page_aabb(p)) << "page " << p;
+    // The client steps its copy of the world: the pages under the box are loaded there.
+    EXPECT_GT(client_mesh->num_loaded_pages(), 0u);
+    EXPECT_LT(client_mesh->num_loaded_pages(), client_mesh->num_pages());
+
+    auto local = client_local_entity(c.reg, box);
+    ASSERT_NE(local, entity{null});
+    auto server_pos = h.server.get<position>(box);
+    auto client_pos = c.reg.get<position>(local);
+    // At rest on the terrain on both sides (a box's centre 0.5 m above the surface, within the
+    // terrain's slope under its corners).
+    EXPECT_NEAR(server_pos.y, scenes::terrain_height(server_pos.x, server_pos.z, 2) + scalar(0.5), 0.15);
+    EXPECT_LT(length(c.reg.get<linvel>(local)), scalar(0.05));
+    EXPECT_LT(length(client_pos - server_pos), scalar(0.02));
+    EXPECT_LT(worst_sink, scalar(0.15)) << "the box sank into the client's terrain by " << worst_sink << " m";
+}

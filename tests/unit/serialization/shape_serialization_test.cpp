@@ -1,11 +1,17 @@
+#include "edyn/collision/collide.hpp"
+#include "edyn/collision/shape_raycast.hpp"
 #include "edyn/serialization/shape_types.hpp"
 #include "edyn/shapes/moment_of_inertia.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "unit/serialization/archive_round_trip.hpp"
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <string>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -258,17 +264,256 @@ TEST(shape_serialization_test, malformed_meshes_fail) {
     EXPECT_TRUE(decode_fails<mesh_shape>(lying));
 }
 
-TEST(shape_serialization_test, paged_mesh_is_read_as_absent) {
-    std::vector<vector3> vertices{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
-    std::vector<std::uint32_t> indices{0, 2, 1};
-    paged_mesh_shape shape{create_paged_triangle_mesh(vertices, indices, 10)};
-    auto bytes = encode(shape);
-    paged_mesh_shape copy = shape;
-    EXPECT_FALSE(decode_fails(bytes, copy));
-    EXPECT_EQ(copy.trimesh, nullptr);
-    auto variant = round_trip(shapes_variant_t{shape});
+namespace {
+
+// A hilly 12 x 12 grid of unit cells (288 triangles) with per-vertex friction and restitution,
+// in pages of at most 20 triangles.
+std::shared_ptr<paged_triangle_mesh> hilly_paged_mesh(const std::string &directory = {}) {
+    std::vector<vector3> vertices, colors;
+    std::vector<std::uint32_t> indices;
+    const std::uint32_t n = 12;
+    for (std::uint32_t i = 0; i <= n; ++i) {
+        for (std::uint32_t j = 0; j <= n; ++j) {
+            auto x = scalar(i) - 6, z = scalar(j) - 6;
+            vertices.push_back({x, std::sin(x * scalar(0.7)) * std::cos(z * scalar(0.5)), z});
+            colors.push_back({scalar(0.3) + scalar(i) / 40, scalar(j) / 20, 0});
+        }
+    }
+    for (std::uint32_t i = 0; i < n; ++i) {
+        for (std::uint32_t j = 0; j < n; ++j) {
+            auto at = [&](std::uint32_t a, std::uint32_t b) { return a * (n + 1) + b; };
+            indices.insert(indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+        }
+    }
+    auto mesh = create_paged_triangle_mesh(vertices, indices, 20, &colors, directory);
+    mesh->lookahead_time = scalar(0.75);
+    mesh->unload_delay = 17;
+    return mesh;
+}
+
+// The copy has the original's layout, triangles, edges and coefficients, and collides and ray
+// casts as the original does, bit for bit.
+void expect_same_paged_mesh(paged_triangle_mesh &copy, paged_triangle_mesh &original) {
+    ASSERT_EQ(copy.num_pages(), original.num_pages());
+    EXPECT_EQ(copy.num_triangles(), original.num_triangles());
+    EXPECT_EQ(copy.lookahead_time, original.lookahead_time);
+    EXPECT_EQ(copy.unload_delay, original.unload_delay);
+    EXPECT_EQ(copy.get_aabb(), original.get_aabb());
+    copy.require(copy.get_aabb(), 0);
+    original.require(original.get_aabb(), 0);
+    ASSERT_EQ(copy.num_loaded_pages(), copy.num_pages());
+    for (std::size_t p = 0; p < original.num_pages(); ++p) {
+        EXPECT_EQ(copy.get_page_aabb(p), original.get_page_aabb(p)) << "page " << p;
+        ASSERT_EQ(copy.first_triangle(p), original.first_triangle(p)) << "page " << p;
+        const auto &a = *copy.get_page(p), &b = *original.get_page(p);
+        ASSERT_EQ(a.num_triangles(), b.num_triangles());
+        for (std::size_t t = 0; t < b.num_triangles(); ++t) {
+            auto ta = a.get_triangle_vertices(t), tb = b.get_triangle_vertices(t);
+            for (std::size_t k = 0; k < 3; ++k) {
+                EDYN_EXPECT_SAME(ta[k], tb[k]) << " page " << p << " triangle " << t;
+                EXPECT_EQ(a.is_edge_active(t, k), b.is_edge_active(t, k))
+                    << "page " << p << " triangle " << t;
+            }
+            EXPECT_EQ(a.get_friction(t, {scalar(0.2), scalar(0.3), scalar(0.5)}),
+                      b.get_friction(t, {scalar(0.2), scalar(0.3), scalar(0.5)}));
+            EXPECT_EQ(a.get_restitution(t, {scalar(0.6), scalar(0.3), scalar(0.1)}),
+                      b.get_restitution(t, {scalar(0.6), scalar(0.3), scalar(0.1)}));
+        }
+    }
+    paged_mesh_shape sa{std::shared_ptr<paged_triangle_mesh>(&copy, [](auto *) {})};
+    paged_mesh_shape sb{std::shared_ptr<paged_triangle_mesh>(&original, [](auto *) {})};
+    std::size_t points = 0, hits = 0;
+    for (int k = 0; k < 40; ++k) {
+        auto x = scalar(-5.5) + scalar(k % 8) * scalar(1.37), z = scalar(-5.2) + scalar(k / 8) * scalar(2.1);
+        auto y = std::sin(x * scalar(0.7)) * std::cos(z * scalar(0.5));
+        collision_context ctx;
+        ctx.posA = {x, y + scalar(0.38), z};
+        ctx.ornA = quaternion_axis_angle(vector3_y, scalar(k) * scalar(0.3));
+        collision_result ra, rb;
+        collide(box_shape{scalar(0.4), scalar(0.4), scalar(0.4)}, sa, ctx, ra);
+        collide(box_shape{scalar(0.4), scalar(0.4), scalar(0.4)}, sb, ctx, rb);
+        ASSERT_EQ(ra.num_points, rb.num_points) << "at " << x << ", " << z;
+        for (std::size_t i = 0; i < rb.num_points; ++i) {
+            EDYN_EXPECT_SAME(ra.point[i].pivotB, rb.point[i].pivotB);
+            EDYN_EXPECT_SAME(ra.point[i].normal, rb.point[i].normal);
+            EXPECT_EQ(ra.point[i].distance, rb.point[i].distance);
+            ASSERT_EQ(ra.point[i].featureB.has_value(), rb.point[i].featureB.has_value());
+            if (rb.point[i].featureB)
+                EXPECT_TRUE(*ra.point[i].featureB == *rb.point[i].featureB) << "point " << i;
+        }
+        points += rb.num_points;
+        raycast_context ray{
+            vector3_zero, quaternion_identity, {x, 5, z}, {x + scalar(0.3), -5, z - scalar(0.2)}};
+        auto ha = shape_raycast(sa, ray), hb = shape_raycast(sb, ray);
+        ASSERT_EQ(ha.hit(), hb.hit());
+        if (!hb.hit()) continue;
+        ++hits;
+        EXPECT_EQ(ha.fraction, hb.fraction);
+        EDYN_EXPECT_SAME(ha.normal, hb.normal);
+        auto ia = std::get<paged_mesh_raycast_info>(ha.info_var),
+             ib = std::get<paged_mesh_raycast_info>(hb.info_var);
+        EXPECT_EQ(ia.submesh_index, ib.submesh_index);
+        EXPECT_EQ(ia.triangle_index, ib.triangle_index);
+    }
+    EXPECT_GT(points, 40u);
+    EXPECT_EQ(hits, 40u);
+}
+
+std::filesystem::path scratch_directory(const char *name) {
+    auto dir = std::filesystem::temp_directory_path() /
+               (std::string(name) + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+} // namespace
+
+TEST(shape_serialization_test, paged_mesh_in_memory_travels_whole) {
+    auto original = hilly_paged_mesh();
+    ASSERT_GT(original->num_pages(), 10u);
+    auto copy = round_trip(paged_mesh_shape{original});
+    ASSERT_TRUE(copy.trimesh);
+    EXPECT_NE(copy.trimesh, original);
+    ASSERT_NE(copy.trimesh->get_loader().memory_pages(), nullptr) << "the copy keeps its pages in memory";
+    expect_same_paged_mesh(*copy.trimesh, *original);
+    expect_truncations_fail(paged_mesh_shape{original});
+    // In the shapes' variant too.
+    auto variant = round_trip(shapes_variant_t{paged_mesh_shape{original}});
     ASSERT_TRUE(std::holds_alternative<paged_mesh_shape>(variant));
-    EXPECT_EQ(std::get<paged_mesh_shape>(variant).trimesh, nullptr);
+    EXPECT_NE(std::get<paged_mesh_shape>(variant).trimesh, nullptr);
+}
+
+TEST(shape_serialization_test, file_backed_paged_mesh_travels_as_its_directory) {
+    auto dir = scratch_directory("edyn_serialized_pages_");
+    auto original = hilly_paged_mesh(dir.string());
+    auto bytes = encode(paged_mesh_shape{original});
+    // The layout and the directory, not the triangles.
+    EXPECT_LT(bytes.size(), original->num_pages() * 40 + dir.string().size() + 32);
+    auto copy = round_trip(paged_mesh_shape{original});
+    ASSERT_TRUE(copy.trimesh);
+    EXPECT_EQ(copy.trimesh->get_loader().page_directory(), dir.string());
+    EXPECT_EQ(copy.trimesh->get_loader().memory_pages(), nullptr);
+    expect_same_paged_mesh(*copy.trimesh, *original);
+    expect_truncations_fail(paged_mesh_shape{original});
+    std::filesystem::remove_all(dir);
+}
+
+TEST(shape_serialization_test, paged_mesh_of_a_program_loader_or_none_is_read_as_absent) {
+    struct own_loader final : triangle_mesh_page_loader {
+        std::shared_ptr<triangle_mesh> load(std::size_t) override { return nullptr; }
+    };
+    paged_mesh_shape own{
+        std::make_shared<paged_triangle_mesh>(std::vector<AABB>{AABB{vector3_zero, vector3_one}},
+                                              std::vector<std::size_t>{1}, std::make_unique<own_loader>())};
+    paged_mesh_shape copy{hilly_paged_mesh()};
+    EXPECT_FALSE(decode_fails(encode(own), copy));
+    EXPECT_EQ(copy.trimesh, nullptr);
+    EXPECT_EQ(encode(own), encode(paged_mesh_shape{}));
+    EXPECT_EQ(round_trip(paged_mesh_shape{}).trimesh, nullptr);
+}
+
+TEST(shape_serialization_test, malformed_paged_meshes_fail) {
+    // One page of one triangle, written field by field so that each can be spoiled.
+    struct fields {
+        std::uint8_t kind{1};
+        scalar lookahead{scalar(0.5)};
+        std::uint32_t delay{60};
+        std::size_t num_pages{1};
+        AABB aabb{{0, 0, 0}, {1, 0, 1}};
+        std::size_t triangles{1};
+        std::vector<vector3> vertices{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+        std::vector<std::uint32_t> indices{0, 2, 1};
+        std::vector<scalar> friction{};
+        std::vector<std::uint8_t> edge_flags{7};
+        std::string directory{};
+    };
+    auto bytes_of = [](const fields &f) {
+        std::vector<std::uint8_t> bytes;
+        memory_output_archive archive(bytes);
+        auto kind = f.kind;
+        auto lookahead = f.lookahead;
+        auto delay = f.delay;
+        archive(kind, lookahead, delay);
+        archive.write_size(f.num_pages);
+        for (std::size_t p = 0; p < f.num_pages; ++p) {
+            auto aabb = f.aabb;
+            archive(aabb.min, aabb.max);
+            archive.write_size(f.triangles);
+        }
+        if (f.kind == 2) {
+            auto directory = f.directory;
+            archive(directory);
+            return bytes;
+        }
+        for (std::size_t p = 0; p < f.num_pages; ++p) {
+            archive.write_size(f.vertices.size());
+            for (auto v : f.vertices)
+                archive(v);
+            archive.write_size(f.indices.size());
+            for (auto i : f.indices)
+                archive(i);
+            archive.write_size(f.friction.size());
+            for (auto c : f.friction)
+                archive(c);
+            archive.write_size(0);
+            archive.write_size(f.edge_flags.size());
+            for (auto e : f.edge_flags)
+                archive(e);
+        }
+        return bytes;
+    };
+    auto fails = [&](const fields &f) { return decode_fails<paged_mesh_shape>(bytes_of(f)); };
+    fields good;
+    ASSERT_FALSE(fails(good));
+    fields directory;
+    directory.kind = 2;
+    directory.directory = "pages";
+    ASSERT_FALSE(fails(directory));
+
+    auto spoiled = [&](auto &&spoil, fields f = {}) {
+        spoil(f);
+        return fails(f);
+    };
+    constexpr auto nan = std::numeric_limits<scalar>::quiet_NaN();
+    EXPECT_TRUE(spoiled([](fields &f) { f.kind = 3; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.lookahead = -1; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.lookahead = nan; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.num_pages = 0; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.aabb.min.y = nan; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.aabb.min.x = 2; })); // min past max
+    EXPECT_TRUE(spoiled([](fields &f) { f.triangles = 2; }));  // the page's arrays hold one
+    EXPECT_TRUE(spoiled([](fields &f) { f.triangles = max_serialized_page_triangles + 1; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.indices = {0, 2, 3}; }));   // out of range
+    EXPECT_TRUE(spoiled([](fields &f) { f.indices = {0, 0, 0}; }));   // degenerate: no triangle left
+    EXPECT_TRUE(spoiled([](fields &f) { f.friction = {1, 1}; }));     // wrong count
+    EXPECT_TRUE(spoiled([](fields &f) { f.friction = {1, -1, 1}; })); // negative
+    EXPECT_TRUE(spoiled([](fields &f) { f.edge_flags = {}; }));       // one per triangle
+    EXPECT_TRUE(spoiled([](fields &f) { f.vertices[1].z = nan; }));
+    EXPECT_TRUE(spoiled([](fields &f) { f.directory.clear(); }, directory));
+    EXPECT_TRUE(
+        spoiled([](fields &f) { f.directory.assign(max_serialized_page_directory + 1, 'd'); }, directory));
+    // Counts beyond the bytes.
+    EXPECT_TRUE(spoiled([](fields &f) { f.num_pages = 1000000; }));
+    std::vector<std::uint8_t> lying;
+    memory_output_archive archive(lying);
+    std::uint8_t kind = 1;
+    scalar lookahead = 1;
+    std::uint32_t delay = 1;
+    archive(kind, lookahead, delay);
+    archive.write_size(max_serialized_mesh_pages + 1);
+    EXPECT_TRUE(decode_fails<paged_mesh_shape>(lying));
+
+    // A failed read leaves the shape as it was.
+    auto mesh = hilly_paged_mesh();
+    paged_mesh_shape kept{mesh};
+    EXPECT_TRUE(decode_fails(bytes_of([] {
+                                 fields f;
+                                 f.triangles = 2;
+                                 return f;
+                             }()),
+                             kept));
+    EXPECT_EQ(kept.trimesh, mesh);
 }
 
 TEST(shape_serialization_test, malformed_polyhedra_fail) {
@@ -420,7 +665,7 @@ TEST(shape_serialization_test, shapes_variant_round_trip) {
                                          tetrahedron(),
                                          box_and_sphere(),
                                          one_triangle_mesh()};
-    // A paged mesh is not sent (its own test below).
+    // A paged mesh has tests of its own above.
     ASSERT_EQ(shapes.size() + 1, num_shapes);
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         auto copy = round_trip(shapes[i]);

@@ -1,5 +1,6 @@
 // Paged triangle meshes: how create_paged_triangle_mesh splits a mesh, loading in the
 // background and on demand, unloading, file-backed pages, and bad input.
+#include <atomic>
 #include <chrono>
 #include <edyn/edyn.hpp>
 #include <edyn_scenes/scenes.hpp>
@@ -100,9 +101,10 @@ TEST(paged_triangle_mesh_test, pages_load_in_the_background_on_request_and_at_on
     auto loaded = paged->num_loaded_pages();
     EXPECT_LT(loaded, paged->num_pages() / 4);
 
-    // request: loaded by the background thread, taken by collect().
+    // request: loaded by a background task, taken by collect().
+    background_tasks tasks;
     auto other = vector3{19.5, 0, 19.5};
-    paged->request(point_box(other), 1);
+    paged->request(point_box(other), 1, tasks);
     std::size_t other_page = paged->num_pages();
     for (std::size_t p = 0; p < paged->num_pages(); ++p) {
         if (intersect(paged->get_page_aabb(p), point_box(other))) other_page = p;
@@ -185,4 +187,111 @@ TEST(paged_triangle_mesh_test, bad_input_throws_naming_the_function) {
     expect_message([&] { create_paged_triangle_mesh(grid.vertices, {}, 10); }, "no indices");
     expect_message([&] { paged_triangle_mesh({}, {}, make_memory_page_loader({})); }, "at least one page");
     expect_message([&] { paged_triangle_mesh({AABB{}}, {1}, nullptr); }, "loader is null");
+}
+
+namespace {
+
+// Loads pages from memory, counting the loads of each page, the most at once, and holding each
+// load until `open` is set.
+struct gated_loader final : triangle_mesh_page_loader {
+    std::unique_ptr<triangle_mesh_page_loader> pages;
+    std::shared_ptr<std::atomic<bool>> open = std::make_shared<std::atomic<bool>>(true);
+    std::shared_ptr<std::vector<std::atomic<int>>> loads;
+    std::shared_ptr<std::atomic<int>> started = std::make_shared<std::atomic<int>>(0);
+    std::shared_ptr<std::atomic<int>> running = std::make_shared<std::atomic<int>>(0);
+    std::shared_ptr<std::atomic<int>> most_running = std::make_shared<std::atomic<int>>(0);
+
+    gated_loader(const std::vector<triangle_mesh_page> &source)
+        : pages(make_memory_page_loader(source))
+        , loads(std::make_shared<std::vector<std::atomic<int>>>(source.size())) {}
+
+    std::shared_ptr<triangle_mesh> load(std::size_t page) override {
+        ++(*loads)[page];
+        ++*started;
+        auto now = ++*running;
+        for (auto most = most_running->load();
+             now > most && !most_running->compare_exchange_weak(most, now);) {
+        }
+        while (!open->load())
+            std::this_thread::yield();
+        auto mesh = pages->load(page);
+        --*running;
+        return mesh;
+    }
+};
+
+// The same pages as `source`, from a gated_loader whose counters `loader` shares.
+std::shared_ptr<paged_triangle_mesh> gated_copy(const paged_triangle_mesh &source, gated_loader *&loader) {
+    std::vector<AABB> aabbs;
+    std::vector<std::size_t> counts;
+    for (std::size_t p = 0; p < source.num_pages(); ++p) {
+        aabbs.push_back(source.get_page_aabb(p));
+        counts.push_back(source.num_page_triangles(p));
+    }
+    auto owned = std::make_unique<gated_loader>(*source.get_loader().memory_pages());
+    loader = owned.get();
+    return std::make_shared<paged_triangle_mesh>(aabbs, counts, std::move(owned));
+}
+
+} // namespace
+
+TEST(paged_triangle_mesh_test, a_page_a_task_is_loading_is_waited_for_not_loaded_again) {
+    auto grid = make_grid(20);
+    auto source = create_paged_triangle_mesh(grid.vertices, grid.indices, 100);
+    gated_loader *loader = nullptr;
+    auto paged = gated_copy(*source, loader);
+    auto open = loader->open;
+    auto loads = loader->loads;
+    auto started = loader->started;
+    auto most_running = loader->most_running;
+    *open = false;
+    background_tasks tasks;
+    auto where = vector3{-9.5, 0, -9.5};
+    paged->request(point_box(where), 1, tasks);
+    while (started->load() == 0)
+        std::this_thread::yield();
+    // The task is inside load(): require() must wait for it, not load the page a second time.
+    std::thread release([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        *open = true;
+    });
+    paged->require(point_box(where), 1);
+    release.join();
+    std::size_t under = 0;
+    for (std::size_t p = 0; p < paged->num_pages(); ++p) {
+        if (!intersect(paged->get_page_aabb(p), point_box(where))) continue;
+        ++under;
+        EXPECT_TRUE(paged->is_page_loaded(p)) << "page " << p;
+        EXPECT_EQ((*loads)[p].load(), 1) << "page " << p << " loaded more than once";
+    }
+    EXPECT_GE(under, 1u);
+    EXPECT_EQ(most_running->load(), 1) << "the loader ran concurrently with itself";
+}
+
+TEST(paged_triangle_mesh_test, the_mesh_can_be_destroyed_while_a_load_is_in_flight) {
+    auto grid = make_grid(20);
+    auto source = create_paged_triangle_mesh(grid.vertices, grid.indices, 100);
+    ASSERT_GE(source->num_pages(), 4u);
+    gated_loader *loader = nullptr;
+    auto paged = gated_copy(*source, loader);
+    auto open = loader->open;
+    auto started = loader->started;
+    *open = false;
+    std::atomic<bool> destroyed{false};
+    {
+        background_tasks tasks;                      // Declared after `paged` goes: outlives the mesh.
+        paged->request(paged->get_aabb(), 1, tasks); // Every page: one loading, the rest queued.
+        while (started->load() == 0)
+            std::this_thread::yield();
+        std::thread destroyer([&] {
+            paged.reset();
+            destroyed = true;
+        });
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        EXPECT_FALSE(destroyed.load()) << "the destructor did not wait for the load in progress";
+        *open = true;
+        destroyer.join();
+        EXPECT_TRUE(destroyed.load());
+    } // The tasks still queued run now, and must not call the loader of the mesh that is gone.
+    EXPECT_EQ(started->load(), 1);
 }

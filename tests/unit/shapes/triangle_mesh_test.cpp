@@ -5,6 +5,7 @@
 #include "edyn/math/math.hpp"
 #include "edyn/shapes/static_tree.hpp"
 #include "edyn/shapes/triangle_mesh.hpp"
+#include "support/grid_mesh.hpp"
 #include "unit/shapes/shape_test_util.hpp"
 #include <algorithm>
 #include <cmath>
@@ -33,23 +34,11 @@ triangle_mesh make_mesh(const std::vector<vector3> &vertices, const std::vector<
 }
 
 // Floor of n x n unit cells in the xz plane at height y(i, j), front +y. Cell (i, j) gives
-// triangles 2 * (i * n + j) and 2 * (i * n + j) + 1.
-template<typename Height>
-triangle_mesh grid_mesh(int n, Height &&height) {
+// triangles 2 * (i * n + j) and 2 * (i * n + j) + 1 (support/grid_mesh.hpp).
+triangle_mesh grid_mesh(int n, const test::grid_height &height) {
     std::vector<vector3> vertices;
-    for (int i = 0; i <= n; ++i) {
-        for (int j = 0; j <= n; ++j)
-            vertices.push_back({scalar(i), height(i, j), scalar(j)});
-    }
     std::vector<int> indices;
-    auto at = [n](int i, int j) { return i * (n + 1) + j; };
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            // (x, z) -> (x, z + 1) -> (x + 1, z + 1) runs counter-clockwise seen from +y.
-            indices.insert(indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            indices.insert(indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    }
+    test::append_grid(vertices, indices, n, 1, vector3_zero, height);
     return make_mesh(vertices, indices);
 }
 
