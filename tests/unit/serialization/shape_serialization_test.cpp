@@ -339,8 +339,9 @@ void expect_same_paged_mesh(paged_triangle_mesh &copy, paged_triangle_mesh &orig
             EDYN_EXPECT_SAME(ra.point[i].normal, rb.point[i].normal);
             EXPECT_EQ(ra.point[i].distance, rb.point[i].distance);
             ASSERT_EQ(ra.point[i].featureB.has_value(), rb.point[i].featureB.has_value());
-            if (rb.point[i].featureB)
+            if (rb.point[i].featureB) {
                 EXPECT_TRUE(*ra.point[i].featureB == *rb.point[i].featureB) << "point " << i;
+            }
         }
         points += rb.num_points;
         raycast_context ray{
