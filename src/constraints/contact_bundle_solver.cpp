@@ -30,10 +30,12 @@ static_assert(offsetof(solver_body, linvel) == 0 && offsetof(solver_body, angvel
 
 wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
     const float *p[lanes];
-    for (std::uint32_t i = 0; i < lanes; ++i) p[i] = reinterpret_cast<const float *>(&bodies[index[i]]);
+    for (std::uint32_t i = 0; i < lanes; ++i)
+        p[i] = reinterpret_cast<const float *>(&bodies[index[i]]);
     __m128 g[4][lanes];
     for (int k = 0; k < 4; ++k) {
-        for (std::uint32_t i = 0; i < lanes; ++i) g[k][i] = _mm_loadu_ps(p[i] + 4 * k);
+        for (std::uint32_t i = 0; i < lanes; ++i)
+            g[k][i] = _mm_loadu_ps(p[i] + 4 * k);
         _MM_TRANSPOSE4_PS(g[k][0], g[k][1], g[k][2], g[k][3]);
     }
     wide_body b;
@@ -47,7 +49,8 @@ wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lan
 
 // Writes the velocities of the lanes whose bit is set; the two floats after them go back
 // unchanged.
-void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits, const wide_body &b) {
+void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits,
+             const wide_body &b) {
     __m128 g0[lanes] = {b.linvel.x.v, b.linvel.y.v, b.linvel.z.v, b.angvel.x.v};
     __m128 g1[lanes] = {b.angvel.y.v, b.angvel.z.v, b.delta_position.x.v, b.delta_position.y.v};
     _MM_TRANSPOSE4_PS(g0[0], g0[1], g0[2], g0[3]);
@@ -84,7 +87,8 @@ wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lan
     return b;
 }
 
-void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits, const wide_body &b) {
+void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits,
+             const wide_body &b) {
     for (std::uint32_t i = 0; i < lanes; ++i) {
         if (!(bits & (1u << i))) continue;
         auto &s = bodies[index[i]];
@@ -148,12 +152,12 @@ inline wide current_separation(const contact_bundle_slot &slot, const wide3 &nor
 }
 
 void fill_lane(contact_bundle_slot &slot, std::uint32_t lane, const contact_solver_point &p) {
-    auto put = [&](scalar (&to)[3][lanes], const vector3 &v) {
+    auto put = [&](scalar(&to)[3][lanes], const vector3 &v) {
         to[0][lane] = v.x;
         to[1][lane] = v.y;
         to[2][lane] = v.z;
     };
-    auto put_row = [&](scalar (&to)[4][3][lanes], const contact_row &row) {
+    auto put_row = [&](scalar(&to)[4][3][lanes], const contact_row &row) {
         put(to[0], row.angularA);
         put(to[1], row.angularB);
         put(to[2], row.inv_angularA);
@@ -205,7 +209,8 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
 } // namespace
 
 bool is_bundled(const contact_solver_constraint &c) noexcept {
-    return !(c.spin_friction > 0) && c.num_roll_axes == 0 && c.spin_impulse == 0 && !(c.stiffness < large_scalar);
+    return !(c.spin_friction > 0) && c.num_roll_axes == 0 && c.spin_impulse == 0 &&
+           !(c.stiffness < large_scalar);
 }
 
 void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
@@ -246,11 +251,13 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
                 contacts.singles.push_back(i);
             }
         }
-        for (std::size_t n = 1; n < std::size(first_of); ++n) first_of[n] += first_of[n - 1];
+        for (std::size_t n = 1; n < std::size(first_of); ++n)
+            first_of[n] += first_of[n - 1];
         contacts.packing.resize(first_of[std::size(first_of) - 1]);
         for (auto i = begin[k]; i < begin[k + 1]; ++i) {
             auto &c = contacts.constraints[i];
-            if (is_bundled(c)) contacts.packing[first_of[contact_solver_constraint::max_points - c.num_points]++] = i;
+            if (is_bundled(c))
+                contacts.packing[first_of[contact_solver_constraint::max_points - c.num_points]++] = i;
         }
 
         for (std::size_t first = 0; first < contacts.packing.size(); first += lanes) {

@@ -53,9 +53,7 @@ inline bool any(wide_mask m) noexcept { return _mm_movemask_ps(m.m) != 0; }
 // std::max(a, b), that is (a < b) ? b : a, in every lane (zeros' signs and NaNs included).
 inline wide std_max(wide a, wide b) noexcept { return {_mm_max_ps(b.v, a.v)}; }
 // std::clamp(a, lo, hi) for lo <= hi: (a < lo) ? lo : (hi < a) ? hi : a.
-inline wide std_clamp(wide a, wide lo, wide hi) noexcept {
-    return {_mm_min_ps(hi.v, _mm_max_ps(lo.v, a.v))};
-}
+inline wide std_clamp(wide a, wide lo, wide hi) noexcept { return {_mm_min_ps(hi.v, _mm_max_ps(lo.v, a.v))}; }
 
 #else
 
@@ -70,7 +68,8 @@ struct wide {
 template<typename Fn>
 inline wide lanewise(Fn fn) noexcept {
     wide r;
-    for (std::size_t i = 0; i < wide_lanes; ++i) r.v[i] = fn(i);
+    for (std::size_t i = 0; i < wide_lanes; ++i)
+        r.v[i] = fn(i);
     return r;
 }
 
@@ -78,7 +77,8 @@ inline wide wide_load(const scalar *p) noexcept {
     return lanewise([&](std::size_t i) { return p[i]; });
 }
 inline void wide_store(scalar *p, wide a) noexcept {
-    for (std::size_t i = 0; i < wide_lanes; ++i) p[i] = a.v[i];
+    for (std::size_t i = 0; i < wide_lanes; ++i)
+        p[i] = a.v[i];
 }
 inline wide wide_set(scalar s) noexcept {
     return lanewise([&](std::size_t) { return s; });
@@ -103,7 +103,8 @@ inline wide operator-(wide a) noexcept {
 }
 inline wide_mask operator<(wide a, wide b) noexcept {
     wide_mask m;
-    for (std::size_t i = 0; i < wide_lanes; ++i) m.m[i] = a.v[i] < b.v[i];
+    for (std::size_t i = 0; i < wide_lanes; ++i)
+        m.m[i] = a.v[i] < b.v[i];
     return m;
 }
 inline wide select(wide_mask m, wide a, wide b) noexcept {
@@ -111,7 +112,8 @@ inline wide select(wide_mask m, wide a, wide b) noexcept {
 }
 inline wide_mask operator&(wide_mask a, wide_mask b) noexcept {
     wide_mask m;
-    for (std::size_t i = 0; i < wide_lanes; ++i) m.m[i] = a.m[i] && b.m[i];
+    for (std::size_t i = 0; i < wide_lanes; ++i)
+        m.m[i] = a.m[i] && b.m[i];
     return m;
 }
 inline bool any(wide_mask m) noexcept {
@@ -123,9 +125,8 @@ inline wide std_max(wide a, wide b) noexcept {
     return lanewise([&](std::size_t i) { return a.v[i] < b.v[i] ? b.v[i] : a.v[i]; });
 }
 inline wide std_clamp(wide a, wide lo, wide hi) noexcept {
-    return lanewise([&](std::size_t i) {
-        return a.v[i] < lo.v[i] ? lo.v[i] : (hi.v[i] < a.v[i] ? hi.v[i] : a.v[i]);
-    });
+    return lanewise(
+        [&](std::size_t i) { return a.v[i] < lo.v[i] ? lo.v[i] : (hi.v[i] < a.v[i] ? hi.v[i] : a.v[i]); });
 }
 
 #endif
