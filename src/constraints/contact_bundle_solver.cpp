@@ -222,18 +222,21 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
     auto &begin = contacts.colour_begin;
     std::uint32_t num_slots = 0;
 
-    // Room for the most the packing can make of this many constraints and points, so that the
-    // arrays grow only when the world does, not when its colours' sizes change: a colour of n
-    // constraints makes at most n / 4 + 1 bundles, and, sorted as they are, its bundles' slots
-    // number at most its points / 4 + 4.
+    // Room for the most the packing can make of this many constraints and points, and a quarter
+    // more, so that the arrays grow only when the world does, not when its colours' sizes or
+    // number change: a colour of n constraints makes at most n / 4 + 1 bundles, and, sorted as
+    // they are, its bundles' slots number at most its points / 4 + 4.
     auto num_colours = begin.empty() ? std::size_t(0) : begin.size() - 1;
     auto max_points = std::size_t(contact_solver_constraint::max_points);
-    contacts.bundles.reserve(contacts.constraints.size() / lanes + num_colours);
-    contacts.bundle_slots.reserve(contacts.points.size() / lanes + max_points * num_colours);
-    contacts.singles.reserve(contacts.constraints.size());
-    contacts.packing.reserve(contacts.constraints.size());
-    contacts.bundle_begin.reserve(num_colours + 1);
-    contacts.single_begin.reserve(num_colours + 1);
+    auto reserve = [](auto &array, std::size_t size) {
+        if (size > array.capacity()) array.reserve(size + size / 4);
+    };
+    reserve(contacts.bundles, contacts.constraints.size() / lanes + num_colours);
+    reserve(contacts.bundle_slots, contacts.points.size() / lanes + max_points * num_colours);
+    reserve(contacts.singles, contacts.constraints.size());
+    reserve(contacts.packing, contacts.constraints.size());
+    reserve(contacts.bundle_begin, num_colours + 1);
+    reserve(contacts.single_begin, num_colours + 1);
 
     for (std::size_t k = 0; k + 1 < begin.size(); ++k) {
         contacts.bundle_begin.push_back(std::uint32_t(contacts.bundles.size()));
