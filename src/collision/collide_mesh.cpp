@@ -51,13 +51,17 @@ struct triangle_prism {
         auto tri = mesh.get_triangle_vertices(t);
         normal = mesh.get_triangle_normal(t);
         centroid = (tri[0] + tri[1] + tri[2]) / scalar(3);
-        depth = std::max({length(tri[1] - tri[0]), length(tri[2] - tri[1]), length(tri[0] - tri[2])});
-        bounding_radius = 0;
+        // One square root each for the longest edge and the farthest vertex (the root of the
+        // largest square is the largest root, to the bit).
+        depth = std::sqrt(std::max(
+            {length_sqr(tri[1] - tri[0]), length_sqr(tri[2] - tri[1]), length_sqr(tri[0] - tri[2])}));
+        scalar radius_sqr = 0;
         for (int i = 0; i < 3; ++i) {
             vertices[i] = tri[i] - centroid;
             vertices[i + 3] = vertices[i] - normal * depth;
-            bounding_radius = std::max(bounding_radius, length(vertices[i + 3]));
+            radius_sqr = std::max(radius_sqr, length_sqr(vertices[i + 3]));
         }
+        bounding_radius = std::sqrt(radius_sqr);
         normals[0] = normal;
         normals[1] = -normal;
         for (int i = 0; i < 3; ++i) {

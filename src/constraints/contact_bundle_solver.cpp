@@ -209,7 +209,7 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
 } // namespace
 
 bool is_bundled(const contact_solver_constraint &c) noexcept {
-    return !(c.spin_friction > 0) && c.num_roll_axes == 0 && c.spin_impulse == 0 &&
+    return c.num_points > 0 && !(c.spin_friction > 0) && c.num_roll_axes == 0 && c.spin_impulse == 0 &&
            !(c.stiffness < large_scalar);
 }
 

@@ -11,8 +11,8 @@
 
 namespace edyn::detail {
 
-// Whether a constraint goes into a bundle: those without spinning or rolling friction and
-// without a material spring.
+// Whether a constraint goes into a bundle: those with points, without spinning or rolling
+// friction and without a material spring. (A lane without points is an empty lane.)
 bool is_bundled(const contact_solver_constraint &c) noexcept;
 
 // Packs each colour's bundled constraints four to a bundle, most points first, and lists the

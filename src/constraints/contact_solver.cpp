@@ -267,11 +267,8 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
 }
 
 void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler) {
-    parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
-                 [&](std::uint32_t i) { detail::unpack_bundle_impulses(contacts, i); });
-    auto count = static_cast<std::uint32_t>(contacts.constraints.size());
-    parallel_for(scheduler, 0u, count, contacts_per_task, [&](std::uint32_t k) {
-        auto &c = contacts.constraints[k];
+    // Each constraint writes only its own totals: any order will do.
+    auto add = [&](contact_solver_constraint &c) {
         for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
             auto &p = contacts.points[i];
             auto &t = contacts.totals[i];
@@ -282,7 +279,21 @@ void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *s
         c.total_spin_impulse += c.spin_impulse;
         c.total_roll_impulse[0] += c.roll_impulse[0];
         c.total_roll_impulse[1] += c.roll_impulse[1];
-    });
+    };
+    // The bundled constraints' impulses come back from their bundles on the way.
+    parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
+                 [&](std::uint32_t i) {
+                     detail::unpack_bundle_impulses(contacts, i);
+                     auto &bundle = contacts.bundles[i];
+                     for (std::size_t lane = 0; lane < contact_bundle_lanes; ++lane) {
+                         if (bundle.num_points[lane] > 0) add(contacts.constraints[bundle.constraint[lane]]);
+                     }
+                 });
+    parallel_for(scheduler, std::size_t(0), contacts.singles.size(), contacts_per_task,
+                 [&](std::size_t j) { add(contacts.constraints[contacts.singles[j]]); });
+    auto &begin = contacts.colour_begin;
+    parallel_for(scheduler, begin.empty() ? 0u : begin.back(), std::uint32_t(contacts.constraints.size()),
+                 contacts_per_task, [&](std::uint32_t k) { add(contacts.constraints[k]); });
 }
 
 namespace {
