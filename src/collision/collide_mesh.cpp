@@ -265,6 +265,27 @@ local_pose pose_in_prism(const collision_context &prism_ctx) noexcept {
 // The exact pair and the manifold along the triangle's normal, per shape.
 void collide_prism(const sphere_shape &a, const triangle_prism &prism, const collision_context &ctx,
                    collision_result &result) {
+    // A centre in front of the triangle's plane is nearest to the triangle itself (the prism lies
+    // behind it): the closest point is found on the triangle directly.
+    auto center = to_object_space(ctx.posA, ctx.posB, ctx.ornB);
+    if (dot(center - prism.vertices[0], prism.normal) >= 0) {
+        auto closest =
+            closest_point_triangle(center, prism.vertices[0], prism.vertices[1], prism.vertices[2]);
+        auto offset = center - closest;
+        auto length_offset = length(offset);
+        auto distance = length_offset - a.radius;
+        if (distance > ctx.threshold) return;
+        // From the triangle towards the centre: from B towards A; the face's normal for a centre
+        // on the triangle.
+        auto local_normal = length_offset > epsilon ? offset / length_offset : prism.normal;
+        collision_result::collision_point p;
+        p.normal = rotate(ctx.ornB, local_normal);
+        p.pivotA = rotate(conjugate(ctx.ornA), -p.normal * a.radius);
+        p.pivotB = closest;
+        p.distance = distance;
+        result.add_point(p);
+        return;
+    }
     detail::collide_swapped([](const polytope &p, const sphere_shape &s, const collision_context &c,
                                collision_result &r) { detail::collide_polytope_sphere(p, s, c, r); },
                             a, prism.view(), ctx, result);

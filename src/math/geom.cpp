@@ -8,6 +8,35 @@ namespace {
 constexpr scalar degenerate_length_sqr = epsilon * epsilon;
 } // namespace
 
+vector3 closest_point_triangle(const vector3 &p, const vector3 &a, const vector3 &b,
+                               const vector3 &c) noexcept {
+    auto ab = b - a, ac = c - a, ap = p - a;
+    auto d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a; // Vertex a.
+    auto bp = p - b;
+    auto d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b; // Vertex b.
+    auto vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3)); // Edge ab.
+    auto cp = p - c;
+    auto d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c; // Vertex c.
+    auto vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6)); // Edge ac.
+    auto va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))); // Edge bc.
+    auto sum = va + vb + vc;
+    if (!(sum > 0)) { // Degenerate: the nearest of its edges.
+        auto best = closest_point_segment(a, b, p);
+        for (auto q : {closest_point_segment(b, c, p), closest_point_segment(c, a, p)})
+            if (distance_sqr(q, p) < distance_sqr(best, p)) best = q;
+        return best;
+    }
+    auto denom = scalar(1) / sum;
+    return a + ab * (vb * denom) + ac * (vc * denom); // Face.
+}
+
 vector3 closest_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &q, scalar &t) noexcept {
     auto d = p1 - p0;
     auto len_sqr = length_sqr(d);

@@ -23,6 +23,17 @@ namespace edyn {
 /// @return The closest point, p0 + (p1 - p0) t.
 vector3 closest_point_segment(const vector3 &p0, const vector3 &p1, const vector3 &q, scalar &t) noexcept;
 
+/// Closest point to `p` on the solid triangle (a, b, c), by the Voronoi region of the triangle
+/// that holds p: a vertex, an edge or the face. A degenerate triangle (zero area) gives a point
+/// of its edges.
+/// @param p The query point.
+/// @param a First vertex.
+/// @param b Second vertex.
+/// @param c Third vertex.
+/// @return The point of the triangle closest to p.
+vector3 closest_point_triangle(const vector3 &p, const vector3 &a, const vector3 &b,
+                               const vector3 &c) noexcept;
+
 /// Closest point to `q` on the segment [p0, p1], when its parameter is not needed.
 /// @param p0 Start of the segment.
 /// @param p1 End of the segment.

@@ -298,3 +298,50 @@ TEST(geom_test, quadrilateral_area_any_order) {
     EXPECT_NEAR(quadrilateral_area(a, b, d, c), 2, tol);
     EXPECT_NEAR(quadrilateral_area(a, a, a, b), 0, tol);
 }
+
+TEST(geom_test, closest_point_triangle_in_each_voronoi_region) {
+    vector3 a{0, 0, 0}, b{2, 0, 0}, c{0, 2, 0};
+    // Above the face: straight down onto it.
+    EXPECT_EQ(closest_point_triangle({scalar(0.5), scalar(0.5), 3}, a, b, c),
+              (vector3{scalar(0.5), scalar(0.5), 0}));
+    // Beyond each vertex.
+    EXPECT_EQ(closest_point_triangle({-1, -1, 1}, a, b, c), a);
+    EXPECT_EQ(closest_point_triangle({3, -1, 0}, a, b, c), b);
+    EXPECT_EQ(closest_point_triangle({-1, 3, -2}, a, b, c), c);
+    // Beyond each edge: its foot on the edge.
+    EXPECT_EQ(closest_point_triangle({1, -1, 1}, a, b, c), (vector3{1, 0, 0}));
+    EXPECT_EQ(closest_point_triangle({-1, 1, 0}, a, b, c), (vector3{0, 1, 0}));
+    auto on_bc = closest_point_triangle({2, 2, 0}, a, b, c);
+    EXPECT_NEAR(on_bc.x, 1, 1e-6);
+    EXPECT_NEAR(on_bc.y, 1, 1e-6);
+}
+
+TEST(geom_test, closest_point_triangle_is_nearer_than_any_point_of_the_triangle) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<scalar> u(-2, 2);
+    for (int n = 0; n < 500; ++n) {
+        vector3 a{u(rng), u(rng), u(rng)}, b{u(rng), u(rng), u(rng)}, c{u(rng), u(rng), u(rng)};
+        vector3 p{2 * u(rng), 2 * u(rng), 2 * u(rng)};
+        auto q = closest_point_triangle(p, a, b, c);
+        // q lies in the triangle: in its plane and with barycentric coordinates in [0, 1].
+        auto normal = cross(b - a, c - a);
+        ASSERT_NEAR(dot(q - a, normal) / length(normal), 0, 1e-4) << "case " << n;
+        auto best = distance(p, q);
+        for (int i = 0; i <= 40; ++i) {
+            for (int j = 0; i + j <= 40; ++j) {
+                auto s = a + (b - a) * (scalar(i) / 40) + (c - a) * (scalar(j) / 40);
+                ASSERT_LE(best, distance(p, s) + scalar(1e-4))
+                    << "case " << n << " sample " << i << ", " << j;
+            }
+        }
+    }
+}
+
+TEST(geom_test, closest_point_triangle_of_a_degenerate_triangle_is_on_its_edges) {
+    // All three vertices on the x axis: the nearest point of the segment they span.
+    vector3 a{0, 0, 0}, b{1, 0, 0}, c{3, 0, 0};
+    auto q = closest_point_triangle({2, 1, 0}, a, b, c);
+    EXPECT_NEAR(q.x, 2, 1e-6);
+    EXPECT_NEAR(q.y, 0, 1e-6);
+    EXPECT_EQ(closest_point_triangle({5, 0, 1}, a, b, c), c);
+}
