@@ -1,7 +1,6 @@
 #ifndef EDYN_COLLISION_SHAPE_EPOCH_HPP
 #define EDYN_COLLISION_SHAPE_EPOCH_HPP
 
-#include <array>
 #include <cstdint>
 
 namespace edyn {
@@ -16,7 +15,13 @@ struct shape_epoch {
 };
 
 /// The shape epochs of a manifold's two bodies, in the manifold's body order.
-using shape_epoch_pair = std::array<std::uint32_t, 2>;
+struct shape_epoch_pair {
+    std::uint32_t a{0}; ///< Shape epoch of the manifold's first body.
+    std::uint32_t b{0}; ///< Shape epoch of the manifold's second body.
+    /// Equal when both epochs are (two integer comparisons: checked for every manifold, every
+    /// step).
+    bool operator==(const shape_epoch_pair &) const noexcept = default;
+};
 
 } // namespace edyn
 
