@@ -48,21 +48,24 @@ struct static_tree {
     /// @param func Callable taking a `std::size_t` item index.
     template<typename Test, typename Func>
     void visit(Test &&test, Func &&func) const {
-        if (nodes.empty()) return;
-        // Balanced: the depth is at most 33 for 2^32 items.
+        if (nodes.empty() || !test(nodes[0].aabb)) return;
+        // Only nodes that passed the test go on the stack: an inner node tests its two children,
+        // which lie side by side, before pushing them. Balanced: the depth is at most 33 for 2^32
+        // items.
         std::array<std::uint32_t, 64> stack;
         std::size_t size = 0;
         stack[size++] = 0;
         while (size > 0) {
             const auto &n = nodes[stack[--size]];
-            if (!test(n.aabb)) continue;
             if (n.leaf) {
                 func(std::size_t(n.index));
-            } else {
-                EDYN_ASSERT(size + 2 <= stack.size());
-                stack[size++] = n.index + 1;
-                stack[size++] = n.index;
+                continue;
             }
+            auto lower = test(nodes[n.index].aabb);
+            auto upper = test(nodes[n.index + 1].aabb);
+            EDYN_ASSERT(size + 2 <= stack.size());
+            if (upper) stack[size++] = n.index + 1;
+            if (lower) stack[size++] = n.index;
         }
     }
 };
