@@ -37,47 +37,63 @@ constexpr std::array<std::array<std::uint32_t, 2>, 9> prism_edge_faces{
     {{0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}, {2, 4}, {3, 2}, {4, 3}}};
 
 // One triangle's prism in a frame centred on the triangle's centroid and aligned with the mesh.
+// Built in two parts: the triangle (its vertices and normal), then, by extrude() when a routine
+// first needs them, the back, the sides and their planes. A sphere in front of the triangle, the
+// commonest case on a terrain, needs only the triangle.
 struct triangle_prism {
     vector3 centroid; // Mesh space.
     vector3 normal;   // Mesh space, the triangle's front.
-    scalar depth;
-    std::array<vector3, 6> vertices;
-    std::array<vector3, 5> normals;
-    std::array<scalar, 5> plane_constants;
-    std::array<vector3, 4> directions;
-    scalar bounding_radius;
+    // Vertices 0..2 the triangle's, relative to the centroid; 3..5 filled by extrude().
+    mutable std::array<vector3, 6> vertices;
 
     triangle_prism(const triangle_mesh &mesh, std::size_t t) noexcept {
         auto tri = mesh.get_triangle_vertices(t);
         normal = mesh.get_triangle_normal(t);
         centroid = (tri[0] + tri[1] + tri[2]) / scalar(3);
+        for (int i = 0; i < 3; ++i)
+            vertices[i] = tri[i] - centroid;
+    }
+
+    triangle_prism(const triangle_prism &) = delete;
+    triangle_prism &operator=(const triangle_prism &) = delete;
+
+    // The rest of the prism: behind the triangle by its longest edge.
+    const triangle_prism &extrude() const noexcept {
+        if (extruded) return *this;
         // One square root each for the longest edge and the farthest vertex (the root of the
         // largest square is the largest root, to the bit).
-        depth = std::sqrt(std::max(
-            {length_sqr(tri[1] - tri[0]), length_sqr(tri[2] - tri[1]), length_sqr(tri[0] - tri[2])}));
+        depth =
+            std::sqrt(std::max({length_sqr(vertices[1] - vertices[0]), length_sqr(vertices[2] - vertices[1]),
+                                length_sqr(vertices[0] - vertices[2])}));
         scalar radius_sqr = 0;
         for (int i = 0; i < 3; ++i) {
-            vertices[i] = tri[i] - centroid;
             vertices[i + 3] = vertices[i] - normal * depth;
             radius_sqr = std::max(radius_sqr, length_sqr(vertices[i + 3]));
         }
         bounding_radius = std::sqrt(radius_sqr);
         normals[0] = normal;
         normals[1] = -normal;
+        // Each edge lies in the triangle's plane, square to its unit normal: the cross product
+        // of the two is a unit vector already.
         for (int i = 0; i < 3; ++i) {
-            auto edge = vertices[(i + 1) % 3] - vertices[i];
-            normals[2 + i] = normalize(cross(edge, normal));
-            directions[i] = normalize(edge);
+            directions[i] = normalize(vertices[(i + 1) % 3] - vertices[i]);
+            normals[2 + i] = cross(directions[i], normal);
         }
         directions[3] = normal;
         for (std::size_t f = 0; f < 5; ++f)
             plane_constants[f] = dot(normals[f], vertices[prism_indices[prism_faces[f].first]]);
+        extruded = true;
+        return *this;
     }
 
-    triangle_prism(const triangle_prism &) = delete;
-    triangle_prism &operator=(const triangle_prism &) = delete;
+    // Side i's outward normal and plane constant (the side through edge i).
+    const vector3 &side_normal(int i) const noexcept { return extrude().normals[2 + i]; }
+    scalar side_constant(int i) const noexcept { return extrude().plane_constants[2 + i]; }
+    // How far the prism reaches behind the triangle.
+    scalar prism_depth() const noexcept { return extrude().depth; }
 
     polytope view() const noexcept {
+        extrude();
         polytope p;
         p.vertices = vertices;
         p.indices = prism_indices;
@@ -90,6 +106,14 @@ struct triangle_prism {
         p.bounding_radius = bounding_radius;
         return p;
     }
+
+private:
+    mutable bool extruded{false};
+    mutable scalar depth;
+    mutable std::array<vector3, 5> normals;
+    mutable std::array<scalar, 5> plane_constants;
+    mutable std::array<vector3, 4> directions;
+    mutable scalar bounding_radius;
 };
 
 // Cosine above which a normal is the triangle's own (0.08 degrees: rounding only).
@@ -164,8 +188,8 @@ std::size_t clip_to_triangle(const triangle_prism &prism, const vector3 *poly, s
     for (int side = 0; side < 3; ++side) {
         auto *target = side % 2 == 0 ? out : buffer;
         out_count = 0;
-        const auto &n = prism.normals[2 + side];
-        auto c = prism.plane_constants[2 + side];
+        const auto &n = prism.side_normal(side);
+        auto c = prism.side_constant(side);
         for (std::size_t i = 0; i < in_count; ++i) {
             const auto &p = in[i];
             const auto &q = in[(i + 1) % in_count];
@@ -300,11 +324,59 @@ void forced_prism(const sphere_shape &a, const triangle_prism &prism, const coll
     forced_feature(f, prism, ctx, result);
 }
 
+// The closest pair of a segment and a triangle's prism, both in the prism's frame. A segment
+// wholly in front of the triangle's plane is nearest to the triangle itself, since the prism lies
+// behind the plane; and as the height over the plane is linear along the segment, the pair holds
+// an end of the segment over the triangle, or a point of one of the triangle's edges. Any other
+// segment takes the general routine.
+detail::segment_polytope_closest closest_points_segment_prism(const polytope &prism, const vector3 &p0,
+                                                              const vector3 &p1) noexcept {
+    auto h0 = dot(prism.normals[0], p0) - prism.plane_constants[0];
+    auto h1 = dot(prism.normals[0], p1) - prism.plane_constants[0];
+    if (!(h0 >= 0 && h1 >= 0)) return detail::closest_points_segment_polytope(prism, p0, p1);
+
+    detail::segment_polytope_closest r;
+    auto best_sqr = large_scalar;
+    auto end_over_triangle = [&](const vector3 &p, scalar height, scalar t) {
+        if (height * height >= best_sqr) return;
+        for (std::size_t side = 2; side < 5; ++side)
+            if (dot(prism.normals[side], p) > prism.plane_constants[side]) return;
+        best_sqr = height * height;
+        r.t = t;
+        r.on_segment = p;
+        r.on_polytope = p - prism.normals[0] * height;
+        r.feature = {polyhedron_feature::face, 0};
+    };
+    end_over_triangle(p0, h0, 0);
+    end_over_triangle(p1, h1, 1);
+    // The front edges are the prism's edges 0 to 2: edge e runs from vertex e to (e + 1) % 3.
+    for (std::uint32_t e = 0; e < 3; ++e) {
+        auto next = (e + 1) % 3;
+        auto closest = closest_points_segment_segment(p0, p1, prism.vertices[e], prism.vertices[next]);
+        for (std::size_t i = 0; i < closest.num_points; ++i) {
+            auto d2 = distance_sqr(closest.pointA[i], closest.pointB[i]);
+            if (d2 >= best_sqr) continue;
+            best_sqr = d2;
+            r.t = closest.sA[i];
+            r.on_segment = closest.pointA[i];
+            r.on_polytope = closest.pointB[i];
+            auto s = closest.sB[i];
+            r.feature = s <= 0   ? detail::polytope_feature{polyhedron_feature::vertex, e}
+                        : s >= 1 ? detail::polytope_feature{polyhedron_feature::vertex, next}
+                                 : detail::polytope_feature{polyhedron_feature::edge, e};
+        }
+    }
+    r.distance = std::sqrt(best_sqr);
+    return r;
+}
+
 void collide_prism(const capsule_shape &a, const triangle_prism &prism, const collision_context &ctx,
                    collision_result &result) {
-    detail::collide_swapped([](const polytope &p, const capsule_shape &s, const collision_context &c,
-                               collision_result &r) { detail::collide_polytope_capsule(p, s, c, r); },
-                            a, prism.view(), ctx, result);
+    detail::collide_swapped(
+        [](const polytope &p, const capsule_shape &s, const collision_context &c, collision_result &r) {
+            detail::collide_polytope_capsule(p, s, c, r, closest_points_segment_prism);
+        },
+        a, prism.view(), ctx, result);
 }
 
 void forced_prism(const capsule_shape &a, const triangle_prism &prism, const collision_context &ctx,
@@ -388,7 +460,7 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
                 auto on_a = to_object_space(to_world_space(p.pivotA, ctx.posA, ctx.ornA), ctx.posB, ctx.ornB);
                 auto normal = mesh.get_triangle_normal(t);
                 auto distance = dot(on_a - tri[0], normal);
-                if (distance > ctx.threshold || distance < -prism.depth) continue;
+                if (distance > ctx.threshold || distance < -prism.prism_depth()) continue;
                 p.pivotB = on_a - normal * distance;
                 p.distance = distance;
                 p.normal = rotate(ctx.ornB, normal);
@@ -414,7 +486,7 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
             auto normal = mesh.get_triangle_normal(t);
             auto distance = dot(on_a - on_b, normal);
             // Only where the shape is in the triangle: near misses are the neighbours' to report.
-            if (distance > 0 || distance < -prism.depth) continue;
+            if (distance > 0 || distance < -prism.prism_depth()) continue;
             // Across an edge to a coplanar neighbour, the neighbour reports the supporting point.
             if (flat_beyond(mesh, t,
                             triangle_feature_at(t, barycentric_coordinates(on_b, tri[0], tri[1], tri[2]))))

@@ -197,7 +197,7 @@ void penetrating(const polyhedron_capsule &pc, scalar threshold, collision_resul
 namespace detail {
 
 void collide_polytope_capsule(const polytope &poly, const capsule_shape &b, const collision_context &ctx,
-                              collision_result &result) noexcept {
+                              collision_result &result, segment_polytope_closest_fn closest_fn) noexcept {
     EDYN_ASSERT(b.radius > 0 && b.half_length >= 0);
     auto inv_orn_a = conjugate(ctx.ornA);
     auto pos_ab = rotate(inv_orn_a, ctx.posB - ctx.posA);
@@ -206,7 +206,7 @@ void collide_polytope_capsule(const polytope &poly, const capsule_shape &b, cons
                           pos_ab};
     if (length(pos_ab) - pc.poly.bounding_radius - b.half_length - b.radius > ctx.threshold) return;
 
-    auto closest = detail::closest_points_segment_polytope(pc.poly, pc.seg.p0, pc.seg.p1);
+    auto closest = closest_fn(pc.poly, pc.seg.p0, pc.seg.p1);
     if (!closest.intersects && closest.distance - b.radius > ctx.threshold) return;
     // Below a micrometre the direction between the closest points is rounding noise.
     if (!closest.intersects && closest.distance > scalar(1e-6)) {

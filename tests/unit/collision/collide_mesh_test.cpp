@@ -537,3 +537,71 @@ TEST(collide_mesh_test, variant_dispatcher) {
     collide(plane, mesh_var, ctx, r);
     EXPECT_EQ(r.num_points, 0u);
 }
+
+namespace {
+
+// Distance from q to triangle (a, b, c), written out independently: the plane's when q's
+// projection falls inside, else the nearest of the three edges.
+scalar distance_point_triangle(const vector3 &q, const vector3 &a, const vector3 &b, const vector3 &c) {
+    auto n = normalize(cross(b - a, c - a));
+    auto inside = dot(cross(b - a, q - a), n) >= 0 && dot(cross(c - b, q - b), n) >= 0 &&
+                  dot(cross(a - c, q - c), n) >= 0;
+    if (inside) return std::abs(dot(q - a, n));
+    auto to_edge = [&](const vector3 &p0, const vector3 &p1) {
+        auto d = p1 - p0;
+        auto t = std::clamp(dot(q - p0, d) / dot(d, d), scalar(0), scalar(1));
+        return length(q - (p0 + d * t));
+    };
+    return std::min({to_edge(a, b), to_edge(b, c), to_edge(c, a)});
+}
+
+} // namespace
+
+// A capsule in front of a lone triangle (all its edges on the boundary, so every feature is
+// active): the least distance reported is the true one, found by walking the capsule's segment
+// in 4,000 steps, and no point is nearer than that. Covers segments over the face, beside edges
+// and vertices, parallel to the face and to an edge, and touching it.
+TEST(collide_mesh_test, capsule_in_front_of_a_triangle_finds_the_true_distance) {
+    std::mt19937 rng(17);
+    auto uniform = [&](scalar lo, scalar hi) { return std::uniform_real_distribution<scalar>(lo, hi)(rng); };
+    auto random_vec = [&](scalar r) { return vector3{uniform(-r, r), uniform(-r, r), uniform(-r, r)}; };
+    std::size_t checked = 0;
+    for (int trial = 0; trial < 600; ++trial) {
+        std::vector<vector3> v{random_vec(1), random_vec(1), random_vec(1)};
+        auto n = cross(v[1] - v[0], v[2] - v[0]);
+        if (length(n) < scalar(0.05)) continue;
+        n = normalize(n);
+        auto mesh = make_mesh(v, {0, 1, 2});
+        capsule_shape capsule{uniform(scalar(0.05), scalar(0.3)), uniform(0, scalar(0.8)),
+                              coordinate_axis::x};
+        collision_context ctx;
+        ctx.posA = (v[0] + v[1] + v[2]) / scalar(3) + random_vec(scalar(1.2)) + n * uniform(0, scalar(0.6));
+        ctx.ornA = normalize(quaternion{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)});
+        // Every few trials, the segment is laid parallel to the face or to an edge.
+        if (trial % 5 == 1 || trial % 5 == 2) {
+            auto along = trial % 5 == 1 ? normalize(cross(n, random_vec(1))) : normalize(v[1] - v[0]);
+            ctx.ornA = shortest_arc(vector3_x, along);
+        }
+        ctx.threshold = 10;
+        vector3 p0, p1;
+        capsule_ends(capsule, ctx.posA, ctx.ornA, p0, p1);
+        if (dot(p0 - v[0], n) < 0 || dot(p1 - v[0], n) < 0) continue;
+
+        auto expected = large_scalar;
+        constexpr int steps = 4000;
+        for (int i = 0; i <= steps; ++i) {
+            auto q = p0 + (p1 - p0) * (scalar(i) / steps);
+            expected = std::min(expected, distance_point_triangle(q, v[0], v[1], v[2]) - capsule.radius);
+        }
+        SCOPED_TRACE("trial " + std::to_string(trial));
+        auto r = run(capsule, mesh, ctx);
+        ASSERT_GT(r.num_points, 0u);
+        // The walk's spacing bounds how far above the true least distance it can land.
+        auto spacing = length(p1 - p0) / steps;
+        EXPECT_NEAR(min_distance(r), expected, spacing + scalar(1e-4));
+        for (std::size_t i = 0; i < r.num_points; ++i)
+            EXPECT_GE(r.point[i].distance, expected - spacing - scalar(1e-4)) << "point " << i;
+        ++checked;
+    }
+    EXPECT_GT(checked, 150u);
+}

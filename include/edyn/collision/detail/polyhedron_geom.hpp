@@ -199,8 +199,13 @@ void collide_polytopes(const polytope &a, const polytope &b, const collision_con
 // at the transform `ctx` gives it.
 void collide_polytope_sphere(const polytope &poly, const sphere_shape &b, const collision_context &ctx,
                              collision_result &result) noexcept;
-void collide_polytope_capsule(const polytope &poly, const capsule_shape &b, const collision_context &ctx,
-                              collision_result &result) noexcept;
+// The closest pair of a segment and a polytope, both in the polytope's space:
+// closest_points_segment_polytope, or a quicker routine for a polytope of a known shape.
+using segment_polytope_closest_fn = segment_polytope_closest (*)(const polytope &poly, const vector3 &p0,
+                                                                 const vector3 &p1) noexcept;
+void collide_polytope_capsule(
+    const polytope &poly, const capsule_shape &b, const collision_context &ctx, collision_result &result,
+    segment_polytope_closest_fn closest_fn = closest_points_segment_polytope) noexcept;
 void collide_cylinder_polytope(const cylinder_shape &a, const polytope &poly, const collision_context &ctx,
                                collision_result &result) noexcept;
 
