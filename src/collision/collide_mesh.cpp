@@ -337,18 +337,25 @@ detail::segment_polytope_closest closest_points_segment_prism(const polytope &pr
 
     detail::segment_polytope_closest r;
     auto best_sqr = large_scalar;
-    auto end_over_triangle = [&](const vector3 &p, scalar height, scalar t) {
-        if (height * height >= best_sqr) return;
+    auto over_triangle = [&](const vector3 &p) {
         for (std::size_t side = 2; side < 5; ++side)
-            if (dot(prism.normals[side], p) > prism.plane_constants[side]) return;
+            if (dot(prism.normals[side], p) > prism.plane_constants[side]) return false;
+        return true;
+    };
+    auto end_candidate = [&](const vector3 &p, scalar height, scalar t) {
+        if (height * height >= best_sqr) return;
         best_sqr = height * height;
         r.t = t;
         r.on_segment = p;
         r.on_polytope = p - prism.normals[0] * height;
         r.feature = {polyhedron_feature::face, 0};
     };
-    end_over_triangle(p0, h0, 0);
-    end_over_triangle(p1, h1, 1);
+    auto over0 = over_triangle(p0), over1 = over_triangle(p1);
+    if (over0) end_candidate(p0, h0, 0);
+    if (over1) end_candidate(p1, h1, 1);
+    r.distance = std::sqrt(best_sqr);
+    // With both ends over the triangle, all of the segment is: no edge comes nearer.
+    if (over0 && over1) return r;
     // The front edges are the prism's edges 0 to 2: edge e runs from vertex e to (e + 1) % 3.
     for (std::uint32_t e = 0; e < 3; ++e) {
         auto next = (e + 1) % 3;
