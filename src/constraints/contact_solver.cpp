@@ -24,6 +24,14 @@ contact_row make_row(const solver_body &a, const solver_body &b, const vector3 &
     return row;
 }
 
+// Effective mass of the row (kg); 0 when neither body can move along it. The row's angular
+// parts are the products an effective mass needs: they are not worked out twice.
+scalar row_mass(const solver_body &a, const solver_body &b, const contact_row &row) {
+    auto k =
+        a.inv_mass + b.inv_mass + dot(row.angularA, row.inv_angularA) + dot(row.angularB, row.inv_angularB);
+    return k > 0 ? scalar(1) / k : scalar(0);
+}
+
 // Relative velocity of the row's points along d.
 inline scalar row_velocity(const contact_row &row, const vector3 &d, const solver_body &a,
                            const solver_body &b) {
@@ -104,9 +112,9 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
             p.normal_row = make_row(a, b, p.normal, p.rA, p.rB);
             p.tangent_row[0] = make_row(a, b, p.tangent[0], p.rA, p.rB);
             p.tangent_row[1] = make_row(a, b, p.tangent[1], p.rA, p.rB);
-            p.normal_mass = effective_mass(a, b, p.normal, p.rA, p.rB);
-            p.tangent_mass[0] = effective_mass(a, b, p.tangent[0], p.rA, p.rB);
-            p.tangent_mass[1] = effective_mass(a, b, p.tangent[1], p.rA, p.rB);
+            p.normal_mass = row_mass(a, b, p.normal_row);
+            p.tangent_mass[0] = row_mass(a, b, p.tangent_row[0]);
+            p.tangent_mass[1] = row_mass(a, b, p.tangent_row[1]);
             auto carried = std::min(contacts.totals[i].relative_velocity, scalar(0));
             contacts.totals[i] = {};
             contacts.totals[i].relative_velocity =

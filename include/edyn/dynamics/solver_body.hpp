@@ -113,21 +113,6 @@ inline vector3 relative_velocity(const solver_body &a, const solver_body &b, con
     return a.linvel + cross(a.angvel, rA) - b.linvel - cross(b.angvel, rB);
 }
 
-/// Effective mass of the constraint row with linear direction `d` at offsets `rA` and `rB`.
-/// @param a First body.
-/// @param b Second body.
-/// @param d Unit direction of the row, world space.
-/// @param rA The point on A, from A's centre of mass, world space, in metres.
-/// @param rB The point on B, from B's centre of mass, world space, in metres.
-/// @return The effective mass, in kg; 0 when neither body can move along the row.
-inline scalar effective_mass(const solver_body &a, const solver_body &b, const vector3 &d, const vector3 &rA,
-                             const vector3 &rB) noexcept {
-    auto rnA = cross(rA, d);
-    auto rnB = cross(rB, d);
-    auto k = a.inv_mass + b.inv_mass + dot(rnA, a.inv_inertia * rnA) + dot(rnB, b.inv_inertia * rnB);
-    return k > 0 ? scalar(1) / k : scalar(0);
-}
-
 /// Effective mass of an angular row about the unit axis `d`.
 /// @param a First body.
 /// @param b Second body.
