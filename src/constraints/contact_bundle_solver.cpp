@@ -109,19 +109,32 @@ wide_row load_row(const scalar (&row)[4][3][lanes]) {
 }
 
 // Relative velocity along d, as row_velocity() in contact_solver.cpp.
+template<fixed_side F>
 inline wide row_velocity(const wide_row &row, const wide3 &d, const wide_body &a, const wide_body &b) {
-    return dot(d, a.linvel - b.linvel) + dot(row.angularA, a.angvel) - dot(row.angularB, b.angvel);
+    if constexpr (F == fixed_side::b) {
+        return dot(d, a.linvel) + dot(row.angularA, a.angvel);
+    } else if constexpr (F == fixed_side::a) {
+        return -(dot(d, b.linvel) + dot(row.angularB, b.angvel));
+    } else {
+        return dot(d, a.linvel - b.linvel) + dot(row.angularA, a.angvel) - dot(row.angularB, b.angvel);
+    }
 }
 
 // Applies the impulse along the row, as apply_row() in contact_solver.cpp.
+template<fixed_side F>
 inline void apply_row(const wide_row &row, const wide3 &d, wide impulse, wide_body &a, wide_body &b) {
-    a.linvel = a.linvel + d * (a.inv_mass * impulse);
-    a.angvel = a.angvel + row.inv_angularA * impulse;
-    b.linvel = b.linvel - d * (b.inv_mass * impulse);
-    b.angvel = b.angvel - row.inv_angularB * impulse;
+    if constexpr (F != fixed_side::a) {
+        a.linvel = a.linvel + d * (a.inv_mass * impulse);
+        a.angvel = a.angvel + row.inv_angularA * impulse;
+    }
+    if constexpr (F != fixed_side::b) {
+        b.linvel = b.linvel - d * (b.inv_mass * impulse);
+        b.angvel = b.angvel - row.inv_angularB * impulse;
+    }
 }
 
-// The velocities a partly filled slot must leave alone in its empty lanes.
+// The velocities a partly filled slot must leave alone in its empty lanes (the static side's
+// are never written back).
 struct velocities {
     wide3 linvelA, angvelA, linvelB, angvelB;
 };
@@ -130,11 +143,16 @@ inline velocities velocities_of(const wide_body &a, const wide_body &b) {
     return {a.linvel, a.angvel, b.linvel, b.angvel};
 }
 
+template<fixed_side F>
 inline void keep_unmasked(wide_mask active, const velocities &before, wide_body &a, wide_body &b) {
-    a.linvel = select(active, a.linvel, before.linvelA);
-    a.angvel = select(active, a.angvel, before.angvelA);
-    b.linvel = select(active, b.linvel, before.linvelB);
-    b.angvel = select(active, b.angvel, before.angvelB);
+    if constexpr (F != fixed_side::a) {
+        a.linvel = select(active, a.linvel, before.linvelA);
+        a.angvel = select(active, a.angvel, before.angvelA);
+    }
+    if constexpr (F != fixed_side::b) {
+        b.linvel = select(active, b.linvel, before.linvelB);
+        b.angvel = select(active, b.angvel, before.angvelB);
+    }
 }
 
 // Lanes that have a point in slot s.
@@ -144,11 +162,48 @@ inline wide_mask slot_mask(const contact_bundle &bundle, std::uint32_t s) {
 
 // Current separation of the slot's points from the bodies' motion since the step began, as
 // current_separation() in contact_solver.cpp.
+template<fixed_side F>
 inline wide current_separation(const contact_bundle_slot &slot, const wide3 &normal, const wide_body &a,
                                const wide_body &b) {
-    auto d = (a.delta_position - b.delta_position) +
-             (rotate(a.delta_rotation, wide3_load(slot.rA)) - rotate(b.delta_rotation, wide3_load(slot.rB)));
+    wide3 d;
+    if constexpr (F == fixed_side::b) {
+        d = a.delta_position + (rotate(a.delta_rotation, wide3_load(slot.rA)) - wide3_load(slot.rB));
+    } else if constexpr (F == fixed_side::a) {
+        d = (wide3_load(slot.rA) - rotate(b.delta_rotation, wide3_load(slot.rB))) - b.delta_position;
+    } else {
+        d = (a.delta_position - b.delta_position) +
+            (rotate(a.delta_rotation, wide3_load(slot.rA)) - rotate(b.delta_rotation, wide3_load(slot.rB)));
+    }
     return dot(normal, d) + wide_load(slot.adjusted_separation);
+}
+
+// The bundle's two sides, the static one left at zero (none of its terms is used).
+template<fixed_side F>
+void gather_sides(const solver_body *bodies, const contact_bundle &bundle, wide_body &a, wide_body &b) {
+    if constexpr (F != fixed_side::a) a = gather(bodies, bundle.body[0]);
+    if constexpr (F != fixed_side::b) b = gather(bodies, bundle.body[1]);
+}
+
+template<fixed_side F>
+void scatter_sides(solver_body *bodies, const contact_bundle &bundle, const wide_body &a,
+                   const wide_body &b) {
+    if constexpr (F != fixed_side::a) scatter(bodies, bundle.body[0], bundle.moves_a, a);
+    if constexpr (F != fixed_side::b) scatter(bodies, bundle.body[1], bundle.moves_b, b);
+}
+
+// Calls fn with the bundle's fixed side as a std::integral_constant.
+template<typename Fn>
+void with_fixed_side(const contact_bundle &bundle, Fn &&fn) {
+    switch (bundle.fixed_side) {
+    case fixed_side::a:
+        fn(std::integral_constant<fixed_side, fixed_side::a>{});
+        break;
+    case fixed_side::b:
+        fn(std::integral_constant<fixed_side, fixed_side::b>{});
+        break;
+    default:
+        fn(std::integral_constant<fixed_side, fixed_side::none>{});
+    }
 }
 
 void fill_lane(contact_bundle_slot &slot, std::uint32_t lane, const contact_solver_point &p) {
@@ -224,15 +279,17 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
 
     // Room for the most the packing can make of this many constraints and points, and a quarter
     // more, so that the arrays grow only when the world does, not when its colours' sizes or
-    // number change: a colour of n constraints makes at most n / 4 + 1 bundles, and, sorted as
-    // they are, its bundles' slots number at most its points / 4 + 4.
+    // number change: a colour of n constraints makes at most n / 4 + 3 bundles (one part-filled
+    // bundle per fixed side), and, sorted as they are, its bundles' slots number at most its
+    // points / 4 + 3 * 4.
+    constexpr std::size_t num_sides = 3;
     auto num_colours = begin.empty() ? std::size_t(0) : begin.size() - 1;
     auto max_points = std::size_t(contact_solver_constraint::max_points);
     auto reserve = [](auto &array, std::size_t size) {
         if (size > array.capacity()) array.reserve(size + size / 4);
     };
-    reserve(contacts.bundles, contacts.constraints.size() / lanes + num_colours);
-    reserve(contacts.bundle_slots, contacts.points.size() / lanes + max_points * num_colours);
+    reserve(contacts.bundles, contacts.constraints.size() / lanes + num_sides * num_colours);
+    reserve(contacts.bundle_slots, contacts.points.size() / lanes + num_sides * max_points * num_colours);
     reserve(contacts.singles, contacts.constraints.size());
     reserve(contacts.packing, contacts.constraints.size());
     reserve(contacts.bundle_begin, num_colours + 1);
@@ -242,14 +299,20 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
         contacts.bundle_begin.push_back(std::uint32_t(contacts.bundles.size()));
         contacts.single_begin.push_back(std::uint32_t(contacts.singles.size()));
 
-        // The colour's bundled constraints sorted by point count, most first, so that a bundle's
-        // lanes mostly have as many points as each other. Their order within a colour does not
-        // matter: they share no body that moves.
-        std::uint32_t first_of[contact_solver_constraint::max_points + 2]{};
+        // The colour's bundled constraints sorted by fixed side, then by point count, most
+        // first, so that a bundle holds contacts of one side and its lanes mostly have as many
+        // points as each other. Their order within a colour does not matter: they share no body
+        // that moves.
+        constexpr std::size_t per_side = contact_solver_constraint::max_points + 1;
+        auto bucket = [&](const contact_solver_constraint &c) {
+            return std::size_t(fixed_side_of(c)) * per_side + contact_solver_constraint::max_points -
+                   c.num_points;
+        };
+        std::uint32_t first_of[num_sides * per_side + 1]{};
         for (auto i = begin[k]; i < begin[k + 1]; ++i) {
             auto &c = contacts.constraints[i];
             if (is_bundled(c)) {
-                ++first_of[contact_solver_constraint::max_points - c.num_points + 1];
+                ++first_of[bucket(c) + 1];
             } else {
                 contacts.singles.push_back(i);
             }
@@ -259,24 +322,28 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
         contacts.packing.resize(first_of[std::size(first_of) - 1]);
         for (auto i = begin[k]; i < begin[k + 1]; ++i) {
             auto &c = contacts.constraints[i];
-            if (is_bundled(c))
-                contacts.packing[first_of[contact_solver_constraint::max_points - c.num_points]++] = i;
+            if (is_bundled(c)) contacts.packing[first_of[bucket(c)]++] = i;
         }
 
-        for (std::size_t first = 0; first < contacts.packing.size(); first += lanes) {
+        for (std::size_t first = 0; first < contacts.packing.size();) {
+            auto side = fixed_side_of(contacts.constraints[contacts.packing[first]]);
             auto &bundle = contacts.bundles.emplace_back();
+            bundle.fixed_side = side;
             bundle.first_slot = num_slots;
             bundle.num_slots = 0;
             bundle.full_slots = contact_solver_constraint::max_points;
+            std::uint32_t filled = 0;
             for (std::uint32_t i = 0; i < lanes; ++i) {
-                if (first + i < contacts.packing.size()) {
-                    auto index = contacts.packing[first + i];
-                    auto &c = contacts.constraints[index];
-                    bundle.constraint[i] = index;
-                    bundle.body[0][i] = c.body[0];
-                    bundle.body[1][i] = c.body[1];
-                    bundle.num_points[i] = c.num_points;
-                    bundle.friction[i] = c.friction;
+                auto *c = first + i < contacts.packing.size()
+                              ? &contacts.constraints[contacts.packing[first + i]]
+                              : nullptr;
+                if (c && fixed_side_of(*c) == side) {
+                    bundle.constraint[i] = contacts.packing[first + i];
+                    bundle.body[0][i] = c->body[0];
+                    bundle.body[1][i] = c->body[1];
+                    bundle.num_points[i] = c->num_points;
+                    bundle.friction[i] = c->friction;
+                    ++filled;
                 } else {
                     bundle.constraint[i] = 0;
                     bundle.body[0][i] = bundle.body[1][i] = static_solver_body;
@@ -287,6 +354,7 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
                 bundle.full_slots = std::min(bundle.full_slots, bundle.num_points[i]);
             }
             num_slots += bundle.num_slots;
+            first += filled;
         }
     }
     if (!begin.empty()) {
@@ -299,32 +367,33 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
                  [&](std::uint32_t i) { fill_bundle(contacts, i, bodies); });
 }
 
-void warm_start_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies) {
-    auto &bundle = contacts.bundles[index];
-    auto a = gather(bodies.data(), bundle.body[0]);
-    auto b = gather(bodies.data(), bundle.body[1]);
+namespace {
+
+template<fixed_side F>
+void warm_start_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::span<solver_body> bodies) {
+    wide_body a{}, b{};
+    gather_sides<F>(bodies.data(), bundle, a, b);
 
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
         auto &slot = contacts.bundle_slots[bundle.first_slot + s];
         auto partial = s >= bundle.full_slots;
         auto before = velocities_of(a, b);
-        apply_row(load_row(slot.normal_row), wide3_load(slot.normal), wide_load(slot.normal_impulse), a, b);
+        apply_row<F>(load_row(slot.normal_row), wide3_load(slot.normal), wide_load(slot.normal_impulse), a,
+                     b);
         for (int t = 0; t < 2; ++t) {
-            apply_row(load_row(slot.tangent_row[t]), wide3_load(slot.tangent[t]),
-                      wide_load(slot.tangent_impulse[t]), a, b);
+            apply_row<F>(load_row(slot.tangent_row[t]), wide3_load(slot.tangent[t]),
+                         wide_load(slot.tangent_impulse[t]), a, b);
         }
-        if (partial) keep_unmasked(slot_mask(bundle, s), before, a, b);
+        if (partial) keep_unmasked<F>(slot_mask(bundle, s), before, a, b);
     }
-
-    scatter(bodies.data(), bundle.body[0], bundle.moves_a, a);
-    scatter(bodies.data(), bundle.body[1], bundle.moves_b, b);
+    scatter_sides<F>(bodies.data(), bundle, a, b);
 }
 
-void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies,
+template<fixed_side F>
+void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::span<solver_body> bodies,
                   const bundle_pass &pass) {
-    auto &bundle = contacts.bundles[index];
-    auto a = gather(bodies.data(), bundle.body[0]);
-    auto b = gather(bodies.data(), bundle.body[1]);
+    wide_body a{}, b{};
+    gather_sides<F>(bodies.data(), bundle, a, b);
     auto zero = wide_set(0);
     auto one = wide_set(1);
     auto inv_h = wide_set(pass.inv_h);
@@ -339,7 +408,7 @@ void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<s
         auto partial = s >= bundle.full_slots;
         auto before = velocities_of(a, b);
         auto normal = wide3_load(slot.normal);
-        auto sep = current_separation(slot, normal, a, b);
+        auto sep = current_separation<F>(slot, normal, a, b);
         // Speculative where still apart; else the soft push-out in the biased pass, nothing in
         // the relax pass.
         auto apart = zero < sep;
@@ -352,13 +421,13 @@ void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<s
         }
         auto row = load_row(slot.normal_row);
         auto old_impulse = wide_load(slot.normal_impulse);
-        auto vn = row_velocity(row, normal, a, b);
+        auto vn = row_velocity<F>(row, normal, a, b);
         auto impulse = -wide_load(slot.normal_mass) * mass_scale * (vn + bias) - impulse_scale * old_impulse;
         auto new_impulse = std_max(old_impulse + impulse, zero);
-        apply_row(row, normal, new_impulse - old_impulse, a, b);
+        apply_row<F>(row, normal, new_impulse - old_impulse, a, b);
         if (partial) {
             auto active = slot_mask(bundle, s);
-            keep_unmasked(active, before, a, b);
+            keep_unmasked<F>(active, before, a, b);
             new_impulse = select(active, new_impulse, old_impulse);
         }
         wide_store(slot.normal_impulse, new_impulse);
@@ -376,20 +445,32 @@ void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<s
             auto row = load_row(slot.tangent_row[t]);
             auto tangent = wide3_load(slot.tangent[t]);
             auto old_impulse = wide_load(slot.tangent_impulse[t]);
-            auto vt = row_velocity(row, tangent, a, b);
+            auto vt = row_velocity<F>(row, tangent, a, b);
             auto new_impulse =
                 std_clamp(old_impulse - wide_load(slot.tangent_mass[t]) * vt, min_impulse, max_impulse);
-            apply_row(row, tangent, new_impulse - old_impulse, a, b);
+            apply_row<F>(row, tangent, new_impulse - old_impulse, a, b);
             if (partial) {
-                keep_unmasked(active, before, a, b);
+                keep_unmasked<F>(active, before, a, b);
                 new_impulse = select(active, new_impulse, old_impulse);
             }
             wide_store(slot.tangent_impulse[t], new_impulse);
         }
     }
 
-    scatter(bodies.data(), bundle.body[0], bundle.moves_a, a);
-    scatter(bodies.data(), bundle.body[1], bundle.moves_b, b);
+    scatter_sides<F>(bodies.data(), bundle, a, b);
+}
+
+} // namespace
+
+void warm_start_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies) {
+    auto &bundle = contacts.bundles[index];
+    with_fixed_side(bundle, [&](auto side) { warm_start_bundle<side()>(contacts, bundle, bodies); });
+}
+
+void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies,
+                  const bundle_pass &pass) {
+    auto &bundle = contacts.bundles[index];
+    with_fixed_side(bundle, [&](auto side) { solve_bundle<side()>(contacts, bundle, bodies, pass); });
 }
 
 void unpack_bundle_impulses(contact_solver_set &contacts, std::uint32_t index) {

@@ -15,7 +15,15 @@ namespace edyn::detail {
 // friction and without a material spring. (A lane without points is an empty lane.)
 bool is_bundled(const contact_solver_constraint &c) noexcept;
 
-// Packs each colour's bundled constraints four to a bundle, most points first, and lists the
+// The static side of a contact (see fixed_side): the side whose body is static_solver_body.
+inline fixed_side fixed_side_of(const contact_solver_constraint &c) noexcept {
+    if (c.body[1] == static_solver_body) return fixed_side::b;
+    if (c.body[0] == static_solver_body) return fixed_side::a;
+    return fixed_side::none;
+}
+
+// Packs each colour's bundled constraints four to a bundle, contacts of one fixed side to a
+// bundle, most points first, and lists the
 // others in `singles`; copies the points' rows, masses and impulses into the bundles' slots.
 // Call once the points are prepared.
 void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,

@@ -33,18 +33,43 @@ scalar row_mass(const solver_body &a, const solver_body &b, const contact_row &r
 }
 
 // Relative velocity of the row's points along d.
+template<fixed_side F>
 inline scalar row_velocity(const contact_row &row, const vector3 &d, const solver_body &a,
                            const solver_body &b) {
-    return dot(d, a.linvel - b.linvel) + dot(row.angularA, a.angvel) - dot(row.angularB, b.angvel);
+    if constexpr (F == fixed_side::b) {
+        return dot(d, a.linvel) + dot(row.angularA, a.angvel);
+    } else if constexpr (F == fixed_side::a) {
+        return -(dot(d, b.linvel) + dot(row.angularB, b.angvel));
+    } else {
+        return dot(d, a.linvel - b.linvel) + dot(row.angularA, a.angvel) - dot(row.angularB, b.angvel);
+    }
 }
 
-// Applies `impulse` along the row: +impulse d to A, -impulse d to B.
+// Applies `impulse` along the row: +impulse d to A, -impulse d to B (not to the static side).
+template<fixed_side F>
 inline void apply_row(const contact_row &row, const vector3 &d, scalar impulse, solver_body &a,
                       solver_body &b) {
-    a.linvel += d * (a.inv_mass * impulse);
-    a.angvel += row.inv_angularA * impulse;
-    b.linvel -= d * (b.inv_mass * impulse);
-    b.angvel -= row.inv_angularB * impulse;
+    if constexpr (F != fixed_side::a) {
+        a.linvel += d * (a.inv_mass * impulse);
+        a.angvel += row.inv_angularA * impulse;
+    }
+    if constexpr (F != fixed_side::b) {
+        b.linvel -= d * (b.inv_mass * impulse);
+        b.angvel -= row.inv_angularB * impulse;
+    }
+}
+
+// Calls fn with the constraint's fixed side as a std::integral_constant.
+template<typename Fn>
+decltype(auto) with_fixed_side(const contact_solver_constraint &c, Fn &&fn) {
+    switch (detail::fixed_side_of(c)) {
+    case fixed_side::a:
+        return fn(std::integral_constant<fixed_side, fixed_side::a>{});
+    case fixed_side::b:
+        return fn(std::integral_constant<fixed_side, fixed_side::b>{});
+    default:
+        return fn(std::integral_constant<fixed_side, fixed_side::none>{});
+    }
 }
 
 // Constraints per parallel range: enough work to outweigh handing a range to a thread.
@@ -140,11 +165,13 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
         auto &a = solved(bodies[c.body[0]], copies[0]);
         auto &b = solved(bodies[c.body[1]], copies[1]);
 
-        for (auto &p : points_of(contacts, c)) {
-            apply_row(p.normal_row, p.normal, p.normal_impulse, a, b);
-            apply_row(p.tangent_row[0], p.tangent[0], p.tangent_impulse[0], a, b);
-            apply_row(p.tangent_row[1], p.tangent[1], p.tangent_impulse[1], a, b);
-        }
+        with_fixed_side(c, [&](auto side) {
+            for (auto &p : points_of(contacts, c)) {
+                apply_row<side()>(p.normal_row, p.normal, p.normal_impulse, a, b);
+                apply_row<side()>(p.tangent_row[0], p.tangent[0], p.tangent_impulse[0], a, b);
+                apply_row<side()>(p.tangent_row[1], p.tangent[1], p.tangent_impulse[1], a, b);
+            }
+        });
 
         // Without spinning or rolling impulses there is nothing to apply (and a bundle, which
         // has none, applies nothing either).
@@ -160,23 +187,33 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
 
 namespace {
 
-// Current separation of a point from the bodies' motion since the step began.
+// Current separation of a point from the bodies' motion since the step began (the static side
+// has not moved).
+template<fixed_side F>
 scalar current_separation(const contact_solver_point &p, const solver_body &a, const solver_body &b) {
-    auto d = (a.delta_position - b.delta_position) +
-             (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
+    vector3 d;
+    if constexpr (F == fixed_side::b) {
+        d = a.delta_position + (rotate(a.delta_rotation, p.rA) - p.rB);
+    } else if constexpr (F == fixed_side::a) {
+        d = (p.rA - rotate(b.delta_rotation, p.rB)) - b.delta_position;
+    } else {
+        d = (a.delta_position - b.delta_position) +
+            (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
+    }
     return dot(p.normal, d) + p.adjusted_separation;
 }
 
 // Coulomb friction on both tangents of every point, limited by that point's normal impulse.
+template<fixed_side F>
 void solve_friction(const contact_solver_constraint &c, std::span<contact_solver_point> points,
                     solver_body &a, solver_body &b) {
     for (auto &p : points) {
         auto max_impulse = c.friction * p.normal_impulse;
         for (int t = 0; t < 2; ++t) {
-            auto vt = row_velocity(p.tangent_row[t], p.tangent[t], a, b);
+            auto vt = row_velocity<F>(p.tangent_row[t], p.tangent[t], a, b);
             auto new_impulse =
                 std::clamp(p.tangent_impulse[t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
-            apply_row(p.tangent_row[t], p.tangent[t], new_impulse - p.tangent_impulse[t], a, b);
+            apply_row<F>(p.tangent_row[t], p.tangent[t], new_impulse - p.tangent_impulse[t], a, b);
             p.tangent_impulse[t] = new_impulse;
         }
     }
@@ -222,6 +259,50 @@ softness material_softness(const contact_solver_constraint &c, const contact_sol
 
 } // namespace
 
+namespace {
+
+// One pass of one constraint's rows: normal rows, friction, then spinning and rolling friction.
+template<fixed_side F>
+void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> points, solver_body &a,
+                  solver_body &b, const detail::bundle_pass &pass, const contact_solver_settings &settings,
+                  scalar h) {
+    auto is_spring = c.stiffness < large_scalar;
+    scalar total_normal = 0;
+
+    for (auto &p : points) {
+        auto s = current_separation<F>(p, a, b);
+        scalar bias = 0, mass_scale = 1, impulse_scale = 0;
+
+        if (s > 0) {
+            // Speculative: allow closing the gap within this sub-step, no more.
+            bias = s * pass.inv_h;
+        } else if (pass.use_bias) {
+            // Overlap is pushed out by a stiff, heavily damped spring whose push-out speed is
+            // capped; a material's spring is a force of the model and is not capped.
+            auto soft = is_spring ? material_softness(c, p, h, settings) : pass.rigid;
+            bias = soft.bias_rate * s;
+            if (!is_spring) bias = std::max(bias, -pass.max_push_out_velocity);
+            mass_scale = soft.mass_scale;
+            impulse_scale = soft.impulse_scale;
+        } else if (is_spring) {
+            total_normal += p.normal_impulse;
+            continue;
+        }
+
+        auto vn = row_velocity<F>(p.normal_row, p.normal, a, b);
+        auto impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+        auto new_impulse = std::max(p.normal_impulse + impulse, scalar(0));
+        apply_row<F>(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
+        p.normal_impulse = new_impulse;
+        total_normal += new_impulse;
+    }
+
+    solve_friction<F>(c, points, a, b);
+    solve_spin_and_roll(c, a, b, total_normal);
+}
+
+} // namespace
+
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
                     const contact_solver_settings &settings, bool use_bias, task_scheduler *scheduler) {
     // A spring stiffer than a quarter of the sub-step rate cannot be integrated stably.
@@ -236,40 +317,8 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
         solver_body copies[2];
         auto &a = solved(bodies[c.body[0]], copies[0]);
         auto &b = solved(bodies[c.body[1]], copies[1]);
-        auto points = points_of(contacts, c);
-        auto is_spring = c.stiffness < large_scalar;
-        scalar total_normal = 0;
-
-        for (auto &p : points) {
-            auto s = current_separation(p, a, b);
-            scalar bias = 0, mass_scale = 1, impulse_scale = 0;
-
-            if (s > 0) {
-                // Speculative: allow closing the gap within this sub-step, no more.
-                bias = s * inv_h;
-            } else if (use_bias) {
-                // Overlap is pushed out by a stiff, heavily damped spring whose push-out speed
-                // is capped; a material's spring is a force of the model and is not capped.
-                auto soft = is_spring ? material_softness(c, p, h, settings) : rigid;
-                bias = soft.bias_rate * s;
-                if (!is_spring) bias = std::max(bias, -settings.max_push_out_velocity);
-                mass_scale = soft.mass_scale;
-                impulse_scale = soft.impulse_scale;
-            } else if (is_spring) {
-                total_normal += p.normal_impulse;
-                continue;
-            }
-
-            auto vn = row_velocity(p.normal_row, p.normal, a, b);
-            auto impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
-            auto new_impulse = std::max(p.normal_impulse + impulse, scalar(0));
-            apply_row(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
-            p.normal_impulse = new_impulse;
-            total_normal += new_impulse;
-        }
-
-        solve_friction(c, points, a, b);
-        solve_spin_and_roll(c, a, b, total_normal);
+        with_fixed_side(
+            c, [&](auto side) { solve_single<side()>(c, points_of(contacts, c), a, b, pass, settings, h); });
     };
     for_each_in_colour_order(contacts, scheduler, bundle, single);
 }
@@ -327,7 +376,8 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
         totals[i].relative_velocity = approach;
         // A point still apart bounces only when the gap closes within this sub-step, so that
         // the bounce starts at most one sub-step of travel early.
-        auto hits = approach < -threshold && current_separation(p, a, b) + approach * h <= 0;
+        auto hits =
+            approach < -threshold && current_separation<fixed_side::none>(p, a, b) + approach * h <= 0;
         target[i] = hits ? -c.restitution * approach : scalar(0);
         // The step's approach has been answered; later hits in this step are new collisions.
         if (hits) totals[i].relative_velocity = 0;
@@ -338,19 +388,20 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
     for (unsigned k = 0; k < iterations; ++k) {
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = points[i];
-            auto vn = row_velocity(p.normal_row, p.normal, a, b);
+            auto vn = row_velocity<fixed_side::none>(p.normal_row, p.normal, a, b);
             auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
-            apply_row(p.normal_row, p.normal, new_impulse - normal[i], a, b);
+            apply_row<fixed_side::none>(p.normal_row, p.normal, new_impulse - normal[i], a, b);
             normal[i] = new_impulse;
         }
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = points[i];
             auto max_impulse = c.friction * normal[i];
             for (int t = 0; t < 2; ++t) {
-                auto vt = row_velocity(p.tangent_row[t], p.tangent[t], a, b);
+                auto vt = row_velocity<fixed_side::none>(p.tangent_row[t], p.tangent[t], a, b);
                 auto new_impulse =
                     std::clamp(tangent[i][t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
-                apply_row(p.tangent_row[t], p.tangent[t], new_impulse - tangent[i][t], a, b);
+                apply_row<fixed_side::none>(p.tangent_row[t], p.tangent[t], new_impulse - tangent[i][t], a,
+                                            b);
                 tangent[i][t] = new_impulse;
             }
         }

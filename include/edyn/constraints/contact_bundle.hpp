@@ -9,6 +9,17 @@ namespace edyn {
 /// Number of contact constraints a bundle holds side by side, one per lane.
 inline constexpr std::size_t contact_bundle_lanes = 4;
 
+/// Which body of a contact is the static body (static_solver_body), whose terms the contact's
+/// rows leave out: it never moves, its velocities and motion since the step began are zero.
+/// A contact against a static body, the commonest kind on the ground or a terrain, then does
+/// about half the work. The one-at-a-time passes and the bundles both follow it, so that a
+/// contact gives the same bits in either.
+enum class fixed_side : std::uint8_t {
+    none, ///< Both bodies count (neither is the static body).
+    a,    ///< Body A is the static body.
+    b     ///< Body B is the static body.
+};
+
 /// Four contact constraints of one colour packed side by side, lane by lane, so that the
 /// contact solver works on all four at once with vector instructions (see contact_solver_set).
 /// They share no body that moves, so solving them together is solving them one after another.
@@ -35,6 +46,9 @@ struct contact_bundle {
     /// a lane is empty. Slots from here on are masked lane by lane.
     std::uint32_t full_slots{0};
     scalar friction[contact_bundle_lanes]{}; ///< Each lane's friction coefficient.
+    /// The static side of every lane's contact (a bundle holds contacts of one kind; its empty
+    /// lanes have the static body on both sides).
+    edyn::fixed_side fixed_side{edyn::fixed_side::none};
 };
 
 /// The k-th point of every lane of a contact_bundle: what the solver's passes read and write,

@@ -110,8 +110,9 @@ TEST(constraint_colouring, places_each_colour_together_in_the_order_asked) {
 
 namespace {
 
-// A random pile-like contact set: each contact joins two bodies (some the static one or a
-// kinematic one) with up to four points, slightly overlapping, bodies moving at random.
+// A random pile-like contact set: each contact joins two bodies (half of them the static one, as
+// A or as B, some a kinematic one) with up to four points, slightly overlapping, bodies moving at
+// random.
 struct random_contacts {
     std::vector<solver_body> bodies;
     contact_solver_set contacts;
@@ -127,6 +128,12 @@ random_contacts make_contacts(std::size_t num_contacts, unsigned seed, bool colo
         set.bodies[i].angvel = {unit(rng), unit(rng), unit(rng)};
     }
     auto pairs = random_pairs(num_contacts, set.bodies.size(), seed);
+    // A quarter of the contacts against the static body as B and a quarter as A, as on the
+    // ground: their rows leave the static side out (fixed_side).
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (k % 4 == 1 && pairs[k].a != static_solver_body) pairs[k].b = static_solver_body;
+        if (k % 4 == 2 && pairs[k].b != static_solver_body) pairs[k].a = static_solver_body;
+    }
 
     constraint_colouring colouring;
     colouring.reset(set.bodies);
