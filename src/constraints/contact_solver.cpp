@@ -140,10 +140,8 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
             p.normal_mass = row_mass(a, b, p.normal_row);
             p.tangent_mass[0] = row_mass(a, b, p.tangent_row[0]);
             p.tangent_mass[1] = row_mass(a, b, p.tangent_row[1]);
-            auto carried = std::min(contacts.totals[i].relative_velocity, scalar(0));
             contacts.totals[i] = {};
-            contacts.totals[i].relative_velocity =
-                std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), carried);
+            contacts.totals[i].relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
         }
 
         c.total_spin_impulse = 0;
@@ -360,7 +358,7 @@ namespace {
 bool solve_restitution_individually(const contact_solver_constraint &c,
                                     std::span<contact_solver_point> points,
                                     std::span<contact_point_totals> totals, solver_body &a, solver_body &b,
-                                    scalar threshold, scalar h, unsigned iterations) {
+                                    scalar threshold, scalar h, unsigned iterations, bounce_moment moment) {
     scalar target[contact_solver_constraint::max_points];
     scalar normal[contact_solver_constraint::max_points]{};
     scalar tangent[contact_solver_constraint::max_points][2]{};
@@ -368,16 +366,24 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
 
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &p = points[i];
-        // The approach speed is the fastest seen since the step began (or carried over from an
-        // earlier step): in between, the speculative contact may have braked the point so that
-        // it lands exactly on the surface.
-        auto approach =
-            std::min(dot(p.normal, relative_velocity(a, b, p.rA, p.rB)), totals[i].relative_velocity);
+        // The approach speed is the fastest seen since the step began: in between, the
+        // speculative contact may have braked the point so that it lands exactly on the surface.
+        auto closing = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
+        auto approach = std::min(closing, totals[i].relative_velocity);
         totals[i].relative_velocity = approach;
-        // A point still apart bounces only when the gap closes within this sub-step, so that
-        // the bounce starts at most one sub-step of travel early.
-        auto hits =
-            approach < -threshold && current_separation<fixed_side::none>(p, a, b) + approach * h <= 0;
+        auto hits = false;
+        if (approach < -threshold) {
+            if (moment == bounce_moment::sub_step) {
+                // A point still apart bounces only when the gap closes within this sub-step, so
+                // that the bounce starts at most one sub-step of travel early.
+                hits = current_separation<fixed_side::none>(p, a, b) + approach * h <= 0;
+            } else {
+                // At the end of the step: a point the contact braked short of the surface
+                // (closing the gap in one more sub-step) bounces now, at most that sub-step
+                // early, rather than in the next step from a speed that only this step knew.
+                hits = closing < 0 && p.normal_impulse > 0;
+            }
+        }
         target[i] = hits ? -c.restitution * approach : scalar(0);
         // The step's approach has been answered; later hits in this step are new collisions.
         if (hits) totals[i].relative_velocity = 0;
@@ -420,7 +426,7 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
 
 unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> bodies,
                            const contact_solver_settings &settings, scalar h, unsigned iterations,
-                           unsigned individual_iterations) {
+                           unsigned individual_iterations, bounce_moment moment) {
     if (iterations == 0 || individual_iterations == 0) return 0;
 
     unsigned passes = 0;
@@ -431,7 +437,7 @@ unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> 
             any |= solve_restitution_individually(
                 c, points_of(contacts, c), std::span(contacts.totals).subspan(c.first_point, c.num_points),
                 bodies[c.body[0]], bodies[c.body[1]], settings.restitution_threshold, h,
-                individual_iterations);
+                individual_iterations, moment);
         }
         if (!any) break;
     }

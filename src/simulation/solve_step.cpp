@@ -125,7 +125,6 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
         auto &cp = manifold.point[manifold.ids[i]];
         auto &p = world.contacts.points[c.first_point + i];
         p = {};
-        world.contacts.totals[c.first_point + i].relative_velocity = cp.warm_start.approach;
         p.rA = cp.positionA - posA;
         p.rB = cp.positionB - posB;
         p.normal = cp.normal;
@@ -227,6 +226,8 @@ void solve_constraints(world_state &world, const settings &settings) {
         }
         accumulate_contact_impulses(contacts, scheduler);
     }
+    solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
+                      settings.num_individual_restitution_iterations, bounce_moment::step_end);
 }
 
 namespace {
@@ -279,11 +280,6 @@ void write_back(registry &registry, world_state &world, scalar dt) {
                 cp.warm_start.friction = {p.tangent_impulse[0], p.tangent_impulse[1]};
                 cp.warm_start.spin = c.spin_impulse * share;
                 cp.warm_start.roll = {c.roll_impulse[0] * share, c.roll_impulse[1] * share};
-                // An approach the step braked but did not answer with a bounce is carried over
-                // while the point still approaches.
-                auto closing = dot(p.normal, relative_velocity(world.bodies[c.body[0]],
-                                                               world.bodies[c.body[1]], p.rA, p.rB));
-                cp.warm_start.approach = closing < 0 ? t.relative_velocity : scalar(0);
                 cp.normal_impulse = t.normal_impulse;
                 cp.friction_impulse = {t.tangent_impulse[0], t.tangent_impulse[1]};
                 cp.normal_restitution_impulse = t.restitution_impulse;

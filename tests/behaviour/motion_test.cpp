@@ -55,6 +55,45 @@ TEST_F(contact_motion, bounce_height_ratio_is_restitution_squared) {
     }
 }
 
+// The step that brakes a falling ball short of the ground answers its bounce itself: nothing
+// of it is left for the next step but the ball's motion. A world rebuilt from the ball's
+// position and velocities alone (as a networked client rebuilds the server's) then takes the
+// same next step as the world it came from, on every step of the fall, bounce and rise. (When
+// the approach was carried to the next step in the contact, the rebuilt ball, which has no
+// contact yet, bounced from the braked speed instead.)
+TEST_F(contact_motion, a_world_rebuilt_from_the_bodies_motion_bounces_the_same) {
+    for (scalar height : {scalar(0.4), scalar(1), scalar(1.3), scalar(2)}) {
+        registry original;
+        attach(original, edyn::test::test_config());
+        scenes::make_ground(original, scalar(0.5), 0);
+        auto def = edyn::test::sphere_def(scalar(0.25), {0, height + scalar(0.25), 0});
+        def.material->restitution = scalar(0.8);
+        auto ball = make_rigidbody(original, def);
+        auto bounced = false;
+        for (int i = 0; i < 200 && !(bounced && original.get<linvel>(ball).y < 0); ++i) {
+            registry rebuilt;
+            attach(rebuilt, edyn::test::test_config());
+            scenes::make_ground(rebuilt, scalar(0.5), 0);
+            auto copy_def = def;
+            copy_def.position = original.get<position>(ball);
+            copy_def.orientation = original.get<orientation>(ball);
+            copy_def.linvel = original.get<linvel>(ball);
+            copy_def.angvel = original.get<angvel>(ball);
+            auto copy = make_rigidbody(rebuilt, copy_def);
+            edyn::test::step(original);
+            edyn::test::step(rebuilt);
+            bounced |= original.get<linvel>(ball).y > 0;
+            ASSERT_NEAR(rebuilt.get<linvel>(copy).y, original.get<linvel>(ball).y, scalar(1e-3))
+                << "dropped from " << height << " m, step " << i + 1;
+            ASSERT_NEAR(rebuilt.get<position>(copy).y, original.get<position>(ball).y, scalar(1e-5))
+                << "dropped from " << height << " m, step " << i + 1;
+            detach(rebuilt);
+        }
+        EXPECT_TRUE(bounced) << "dropped from " << height << " m";
+        detach(original);
+    }
+}
+
 TEST_F(contact_motion, sliding_box_stops_after_v_squared_over_2_mu_g) {
     scenes::make_ground(reg, scalar(0.4), 0);
     auto def = edyn::test::box_def({scalar(0.5), scalar(0.5), scalar(0.5)}, {0, scalar(0.5), 0});

@@ -64,11 +64,7 @@ struct contact_point {
         std::array<scalar, 2> friction{0, 0}; ///< Friction impulses along the two tangents (N·s).
         scalar spin{0};                       ///< Spinning friction angular impulse (N·m·s).
         std::array<scalar, 2> roll{0, 0};     ///< Rolling friction angular impulses (N·m·s).
-        /// Normal speed (negative, m/s) at which the point was approaching when the speculative
-        /// contact braked it short of the surface, not yet answered by a bounce: the restitution
-        /// solver bounces from this speed, not the braked one, when the point touches.
-        scalar approach{0};
-    } warm_start; ///< Warm-starting impulses (engine internal).
+    } warm_start;                             ///< Warm-starting impulses (engine internal).
 
     /// Friction coefficient mixed from both bodies' materials for this point (dimensionless).
     ///

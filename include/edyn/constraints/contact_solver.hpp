@@ -56,10 +56,9 @@ struct contact_solver_point {
 /// What a point needs only once per sub-step or step: restitution and the impulses reported
 /// to the user. Kept apart from contact_solver_point, at the same index.
 struct contact_point_totals {
-    /// Normal relative velocity when the step began, or the approach carried over from earlier
-    /// steps (contact_point::warm_start.approach) where that is faster: set it to the carried
-    /// approach (0 for none) before prepare_contacts.
-    /// In m/s, negative when approaching.
+    /// The fastest normal approach of the point seen in the step not yet answered by a bounce:
+    /// its relative normal velocity when the step began (prepare_contacts), lowered by each
+    /// restitution pass, 0 once bounced. In m/s, negative when approaching.
     scalar relative_velocity{0};
     /// Sum of the restitution solver's normal impulses on the point over the step (N s).
     scalar restitution_impulse{0};
@@ -245,13 +244,25 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
 /// @param scheduler Threads to spread the work over; null runs it on the calling thread.
 void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler = nullptr);
 
-/// Restitution, run at the start of each sub-step before the contact solve: a point approaching
-/// faster than the threshold that touches, or will within the sub-step h, gets an impulse making
-/// it separate at restitution times its approach speed. Manifolds are solved one at a time for
-/// `individual_iterations`, the whole set up to `iterations` times, until no point is hit, so
-/// that a shock travels along a chain of bodies. Returns the number of passes that found a hit.
-/// Runs on the calling thread. Contacts without restitution are skipped; friction acts during
-/// each bounce. The impulses are added to the points' restitution totals.
+/// When solve_restitution looks for points to bounce.
+enum class bounce_moment {
+    /// At the start of a sub-step, before the contact solve: points that touch, or will within
+    /// the sub-step h.
+    sub_step,
+    /// At the end of the step, after the last sub-step: points the contact braked short of the
+    /// surface and that still approach. Their bounce is answered in the step that saw their
+    /// speed, so that the next step needs nothing but the bodies' state (a world restored from
+    /// positions and velocities alone, as a networked client's is, bounces the same).
+    step_end
+};
+
+/// Restitution: a point approaching faster than the threshold, found as `moment` says, gets an
+/// impulse making it separate at restitution times the fastest approach speed seen in the step.
+/// Manifolds are solved one at a time for `individual_iterations`, the whole set up to
+/// `iterations` times, until no point is hit, so that a shock travels along a chain of bodies.
+/// Returns the number of passes that found a hit. Runs on the calling thread. Contacts without
+/// restitution are skipped; friction acts during each bounce. The impulses are added to the
+/// points' restitution totals.
 /// @param contacts The step's contacts, prepared.
 /// @param bodies The step's solver bodies.
 /// @param settings The contact settings (restitution threshold).
@@ -259,10 +270,11 @@ void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *s
 /// @param iterations Most passes over the whole set; 0 turns the restitution solver off.
 /// @param individual_iterations Iterations of each manifold's isolated solve; 0 turns the
 /// restitution solver off.
+/// @param moment Which points are looked at: see bounce_moment.
 /// @return The number of passes that found a hit (0 when it is off).
 unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> bodies,
                            const contact_solver_settings &settings, scalar h, unsigned iterations,
-                           unsigned individual_iterations);
+                           unsigned individual_iterations, bounce_moment moment = bounce_moment::sub_step);
 
 } // namespace edyn
 
