@@ -26,6 +26,9 @@ void set_drive(edyn::registry &client, edyn::entity local, const edyn::vector3 &
         if (current->force == force) return;
         client.patch<drive>(local, [&](drive &d) { d.force = force; });
     } else {
+        // No drive yet and none asked for: nothing to send, and the server's body is not woken
+        // on a step that depends on when the client got to know it.
+        if (force == edyn::vector3_zero) return;
         client.emplace<drive>(local, drive{{}, force});
     }
     if (client.all_of<edyn::sleeping_tag>(local)) edyn::wake_up_entity(client, local);

@@ -139,16 +139,23 @@ void receive_time(registry &registry, client_context &ctx, const packet::time_re
         return;
     }
     ctx.pending_request_id = 0;
-    // The reply left the server about half a round trip ago; each sample is off by that half's
-    // jitter, so the offset is the median of the last few, which one late reply cannot move.
-    auto offset = response.timestamp + ctx.round_trip_time / 2 - get_simulation_time(registry);
+    // The server's time was read somewhere between the request leaving and the reply arriving;
+    // taken at the midpoint, a sample is off by half the difference of the two legs' delays,
+    // which is at most half its round trip beyond the shortest. So of the samples kept the one
+    // with the shortest round trip is the best (the minimum-delay filter of NTP): its legs were
+    // both near the link's least delay, however the delays wander. Of samples with the same
+    // round trip (times here are counted in steps) the oldest stays the best, so that the offset
+    // does not flip between them: each change moves the client's lead.
+    auto local_now = get_simulation_time(registry);
+    auto sample = client_context::clock_sample{response.timestamp - (ctx.time_request_sent + local_now) / 2,
+                                               local_now - ctx.time_request_sent};
     auto &samples = ctx.offset_samples;
-    if (!samples.empty() && std::abs(offset - ctx.clock_offset) > 0.25) samples.clear(); // a new clock
-    samples.push_back(offset);
+    if (!samples.empty() && std::abs(sample.offset - ctx.clock_offset) > 0.25) samples.clear(); // a new clock
+    samples.push_back(sample);
     if (samples.size() > max_offset_samples) samples.erase(samples.begin());
-    auto sorted = samples;
-    std::sort(sorted.begin(), sorted.end());
-    ctx.clock_offset = sorted[sorted.size() / 2];
+    ctx.clock_offset = std::min_element(samples.begin(), samples.end(), [](auto &a, auto &b) {
+                           return a.round_trip < b.round_trip - 1e-9;
+                       })->offset;
     ctx.synchronised = true;
 }
 
@@ -175,16 +182,23 @@ void apply_server_settings(registry &registry, const packet::server_settings &s)
     set_solver_individual_restitution_iterations(registry, s.num_individual_restitution_iterations);
 }
 
+// An entry is recorded when any of the client's inputs changed, and holds all of them: the
+// entry at or before a time is the whole input state then, from which an extrapolation starts
+// (an input set only after that time is absent from it, as it was on the server).
 void record_inputs(registry &registry, client_context &ctx, network_registry &types, double now) {
+    auto owned_input = [&](std::size_t i, entity e) {
+        return types.types[i].input && registry.valid(e) && ctx.local_to_remote.find(e) != null &&
+               types.types[i].has(registry, e);
+    };
+    auto changed = false;
+    for (auto i = types.first_program_type; i < types.types.size() && !changed; ++i)
+        for (auto e : ctx.authored.entities())
+            if (owned_input(i, e) && types.changed_at(i, e) >= ctx.last_input_record) changed = true;
     auto writer = pool_writer(types, registry, [&ctx](entity e) { return ctx.local_to_remote.find(e); });
-    for (auto i = types.first_program_type; i < types.types.size(); ++i) {
-        auto &t = types.types[i];
-        if (!t.input) continue;
-        for (auto e : ctx.authored.entities()) {
-            if (registry.valid(e) && ctx.local_to_remote.find(e) != null && t.has(registry, e) &&
-                types.changed_at(i, e) >= ctx.last_input_record)
-                writer.add(e, i);
-        }
+    if (changed) {
+        for (auto i = types.first_program_type; i < types.types.size(); ++i)
+            for (auto e : ctx.authored.entities())
+                if (owned_input(i, e)) writer.add(e, i);
     }
     ctx.last_input_record = types.now;
     if (!writer.empty()) {
@@ -320,9 +334,9 @@ void update_network_client(registry &registry) {
     if (ctx.pending_request_id == 0 && (local_now >= ctx.next_time_request || !ctx.synchronised)) {
         ctx.pending_request_id = ctx.next_request_id++;
         ctx.time_request_sent = local_now;
-        // Quickly at first, until the median has its samples.
-        auto interval = ctx.offset_samples.size() < max_offset_samples ? time_request_interval / 5
-                                                                       : time_request_interval;
+        // Quickly at first, until the first few samples are in.
+        auto interval = ctx.offset_samples.size() < quick_offset_samples ? time_request_interval / 5
+                                                                         : time_request_interval;
         ctx.next_time_request = local_now + interval;
         ctx.packet_signal.publish({packet::time_request{ctx.pending_request_id}});
     }

@@ -22,14 +22,15 @@ namespace edyn::client_detail {
 
 // A change is sent in this many consecutive snapshots, so that one lost packet loses nothing.
 inline constexpr double change_repeats = 3;
-// Each input is sent by this many consecutive updates (frames), whatever the snapshot rate: a
-// lost one changes what the server simulates, and a copy must follow soon after, within the
-// playout delay.
-inline constexpr int input_repeats = 5;
 // Actions and recorded inputs are kept this long (seconds of server time).
 inline constexpr double history_length = 1;
 inline constexpr double time_request_interval = 1;
-inline constexpr std::size_t max_offset_samples = 9;
+// Clock samples: asked for five times as often until this many arrived...
+inline constexpr std::size_t quick_offset_samples = 9;
+// ...and the last this many kept (a minute at one a second): the clocks of client and server
+// run at the same rate, so an old sample is as good as a new one, and a long window keeps the
+// best (shortest round trip) one for long.
+inline constexpr std::size_t max_offset_samples = 60;
 // An entity a snapshot names before its create_entity arrived is asked for again after this.
 inline constexpr double entity_request_interval = 0.5;
 inline constexpr int max_lead_steps = 4;
@@ -61,11 +62,14 @@ struct client_context {
     // Server time = local simulation time + clock_offset, once a time response arrived.
     bool synchronised{false};
     double clock_offset{0};
-    std::vector<double> offset_samples; // the last max_offset_samples, oldest first
-    // clock_offset + playout_delay in whole steps: how far the client's time runs ahead of its
-    // local simulation time. It moves only when the estimate drifts a step or more away, so that
-    // the client's time never jumps back and forth (inputs stamped with a time earlier than one
-    // already applied would be ignored by the server).
+    // One reply of the server's clock: the offset it gives and the round trip it took.
+    struct clock_sample {
+        double offset;
+        double round_trip;
+    };
+    std::vector<clock_sample> offset_samples; // the last max_offset_samples, oldest first
+    // clock_offset + playout_delay in whole steps, rounded up: how far the client's time runs
+    // ahead of its local simulation time (see update_lead).
     long long clock_lead_steps{0};
     std::uint32_t next_request_id{1};
     std::uint32_t pending_request_id{0};
@@ -140,12 +144,16 @@ inline double client_time(const registry &registry, const client_context &ctx) {
     return get_simulation_time(registry) + double(ctx.clock_lead_steps) * double(get_fixed_dt(registry));
 }
 
-// Moves clock_lead_steps to the current estimate when it is a step or more away from it (rounding up:
-// a late input is lost, an early one only waits).
+// Keeps clock_lead_steps at the current estimate rounded up to a whole step: a lead short of it
+// makes inputs arrive after their step (lost); a longer one only makes them wait, and the server
+// makes the playout delay longer when they arrive with too little time to spare. Moving down
+// makes the client's time repeat a step (inputs stamped with a time already sent are copies);
+// moving up makes it skip steps, on which the server keeps the inputs before them. The estimate
+// moves seldom: the playout delay only grows, and the clock offset changes only with a better
+// sample (see receive_time).
 inline void update_lead(const registry &registry, client_context &ctx) {
     auto target = (ctx.clock_offset + ctx.playout_delay) / double(get_fixed_dt(registry));
-    if (std::abs(target - double(ctx.clock_lead_steps)) >= 1)
-        ctx.clock_lead_steps = std::llround(std::ceil(target));
+    ctx.clock_lead_steps = std::llround(std::ceil(target - 1e-6));
 }
 
 // Applies pools with the registry's change records muted: values from the server are not the

@@ -41,13 +41,15 @@ void start_extrapolation(registry &registry, client_context &ctx, network_regist
     auto input = std::make_unique<extrapolation_input>();
     input->settings = get_settings(registry);
     input->types.types = types.types;
-    // The client's world as it is now.
+    // The client's world as it is now, but for its own inputs: the recorded ones give their
+    // state at the snapshot's time.
     auto writer = pool_writer(types, registry);
     for (auto e : registry.view<networked_tag>()) {
         writer.include(e);
+        auto own = ctx.authored.contains(e);
         for (std::uint16_t i = 0; i < types.types.size(); ++i) {
             auto &t = types.types[i];
-            if (i == network_index::motion || t.action) continue;
+            if (i == network_index::motion || t.action || (t.input && own)) continue;
             if (t.has(registry, e)) writer.add(e, i);
         }
     }

@@ -16,6 +16,11 @@
 
 namespace edyn {
 
+// Each input is sent by this many consecutive updates (frames) of the client, whatever the
+// snapshot rate: a lost one changes what the server simulates, and a copy must follow soon
+// after, within the playout delay the server sets.
+inline constexpr int input_repeats = 5;
+
 // Indices of edyn's own types in the list.
 namespace network_index {
 inline constexpr std::uint16_t body = 0;   // rigidbody_def: creates the rigid body

@@ -27,6 +27,14 @@ constexpr std::uint8_t rest_refresh = 4;
 constexpr std::size_t max_buffered_snapshots = 128;
 // Most entities one entity_request may ask for.
 constexpr std::size_t max_requested_entities = 1024;
+// Lost packets in a row that an input survives, at the least: the playout delay leaves room for
+// as many later copies of it (a growth adds a step more). More cover makes the delay longer, and
+// with it how far the clients extrapolate.
+constexpr int input_loss_cover = 1;
+static_assert(input_loss_cover < input_repeats);
+// The playout margin starts at this many steps and grows to this many at most.
+constexpr double initial_playout_margin_steps = 2;
+constexpr double max_playout_margin_steps = 10;
 
 struct buffered_snapshot {
     double timestamp;
@@ -47,6 +55,11 @@ struct server_client_state {
     double next_snapshot_time{0};
     // Added to half the round trip to make the playout delay; grows when snapshots arrive late.
     double playout_margin{-1};
+    // A growth of the margin reaches the client's packets about a round trip later: until then,
+    // packets it sent before it heard of it are as late as the one that made it grow, and may
+    // make it grow only to what they need beyond the margin they were sent with.
+    double margin_before_growth{0};
+    double growth_settles{-std::numeric_limits<double>::infinity()};
     double playout_sent{-1};
     // The encoding of each known body's motion last sent to the client (a hash of it), and how
     // many more snapshots repeat it, by entity index.
@@ -309,7 +322,7 @@ void send_snapshot(registry &registry, server_context &ctx, const network_regist
 void update_playout_delay(registry &registry, server_context &ctx, entity client, remote_client &rc,
                           server_client_state &state) {
     auto dt = double(get_fixed_dt(registry));
-    if (state.playout_margin < 0) state.playout_margin = 2 * dt;
+    if (state.playout_margin < 0) state.playout_margin = initial_playout_margin_steps * dt;
     rc.playout_delay = rc.round_trip_time / 2 + state.playout_margin;
     if (std::abs(rc.playout_delay - state.playout_sent) > 0.001) {
         state.playout_sent = rc.playout_delay;
@@ -420,15 +433,31 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
     }
     // Client times fall on the server's steps: a snapshot is late when its step has run (a copy
     // of inputs already applied was dropped above). How early the newest snapshots arrive keeps
-    // the playout delay long enough: one that arrives with less than half a step to spare makes
-    // it longer by what was missing, at once, so that the client's lead (and with it the steps
-    // its inputs fall on) changes seldom.
+    // the playout delay long enough: one that arrives with less than the slack wanted makes it
+    // longer by what was missing, at once, so that the client's lead (and with it the steps its
+    // inputs fall on) changes seldom. The slack wanted is half a step plus input_loss_cover
+    // steps: each input goes in input_repeats packets a frame apart, so that it is still on time
+    // when that many of them in a row are lost.
     auto dt = double(get_fixed_dt(registry));
-    auto slack = snapshot.timestamp - get_simulation_time(registry);
+    auto now = get_simulation_time(registry);
+    auto slack = snapshot.timestamp - now;
+    if (state.playout_margin < 0) state.playout_margin = initial_playout_margin_steps * dt;
     if (slack < -dt / 2) rc.rejected.late += 1;
     if (snapshot.timestamp > state.newest_received) {
         state.newest_received = snapshot.timestamp;
-        if (slack < dt / 2) state.playout_margin = std::min(state.playout_margin + (dt / 2 - slack), 10 * dt);
+        auto wanted = dt * (0.5 + double(input_loss_cover));
+        if (slack < wanted) {
+            if (now > state.growth_settles) {
+                state.margin_before_growth = state.playout_margin;
+                state.growth_settles = now + rc.round_trip_time + state.playout_margin + wanted + 2 * dt;
+            }
+            // A step more than was missing, so that the next packet only slightly later than
+            // this one does not make it grow again (each growth makes the client skip a step of
+            // its inputs).
+            auto needed =
+                std::min(state.margin_before_growth + (wanted + dt - slack), max_playout_margin_steps * dt);
+            state.playout_margin = std::max(state.playout_margin, needed);
+        }
     }
     buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools), inputs});
     if (buffer.size() > max_buffered_snapshots) buffer.erase(buffer.begin());
