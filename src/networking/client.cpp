@@ -133,26 +133,30 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
 }
 
 void receive_time(registry &registry, client_context &ctx, const packet::time_response &response) {
-    if (response.id != ctx.pending_request_id || !std::isfinite(response.timestamp)) return;
+    auto &pending = ctx.pending_time_requests;
+    auto request = std::find_if(pending.begin(), pending.end(), [&](auto &p) { return p.id == response.id; });
+    if (request == pending.end() || !std::isfinite(response.timestamp)) return;
     if (!plausible_server_time(response.timestamp)) {
         rejections(registry).out_of_range += 1;
         return;
     }
-    ctx.pending_request_id = 0;
+    auto sent = request->sent;
+    pending.erase(request);
     // The server's time was read somewhere between the request leaving and the reply arriving;
     // taken at the midpoint, a sample is off by half the difference of the two legs' delays,
-    // which is at most half its round trip beyond the shortest. So of the samples kept the one
-    // with the shortest round trip is the best (the minimum-delay filter of NTP): its legs were
-    // both near the link's least delay, however the delays wander. Of samples with the same
-    // round trip (times here are counted in steps) the oldest stays the best, so that the offset
-    // does not flip between them: each change moves the client's lead.
+    // which is at most half its round trip beyond the shortest. So of the samples the one with
+    // the shortest round trip is the best (the minimum-delay filter of NTP): its legs were both
+    // near the link's least delay, however the delays wander. Of samples with the same round trip
+    // (times here are counted in steps) the first stays the best.
     auto local_now = get_simulation_time(registry);
-    auto sample = client_context::clock_sample{response.timestamp - (ctx.time_request_sent + local_now) / 2,
-                                               local_now - ctx.time_request_sent};
+    auto sample = client_context::clock_sample{response.timestamp - (sent + local_now) / 2, local_now - sent};
     auto &samples = ctx.offset_samples;
-    if (!samples.empty() && std::abs(sample.offset - ctx.clock_offset) > 0.25) samples.clear(); // a new clock
+    if (samples.size() >= offset_samples_wanted) {
+        // The offset is settled; a sample far from it is a new clock, which starts over.
+        if (std::abs(sample.offset - ctx.clock_offset) <= 0.25) return;
+        samples.clear();
+    }
     samples.push_back(sample);
-    if (samples.size() > max_offset_samples) samples.erase(samples.begin());
     ctx.clock_offset = std::min_element(samples.begin(), samples.end(), [](auto &a, auto &b) {
                            return a.round_trip < b.round_trip - 1e-9;
                        })->offset;
@@ -328,17 +332,19 @@ void update_network_client(registry &registry) {
     decay_discontinuities(registry, ctx);
 
     // A request whose reply has not come within two round trips (a quarter second at least)
-    // is taken as lost and made again.
+    // is taken as lost. Until the offset has its samples a request goes every update, then one
+    // every time_request_interval.
     auto retry = std::max(2 * ctx.round_trip_time, 0.25);
-    if (ctx.pending_request_id != 0 && local_now >= ctx.time_request_sent + retry) ctx.pending_request_id = 0;
-    if (ctx.pending_request_id == 0 && (local_now >= ctx.next_time_request || !ctx.synchronised)) {
-        ctx.pending_request_id = ctx.next_request_id++;
-        ctx.time_request_sent = local_now;
-        // Quickly at first, until the first few samples are in.
-        auto interval = ctx.offset_samples.size() < quick_offset_samples ? time_request_interval / 5
-                                                                         : time_request_interval;
-        ctx.next_time_request = local_now + interval;
-        ctx.packet_signal.publish({packet::time_request{ctx.pending_request_id}});
+    auto &pending = ctx.pending_time_requests;
+    pending.erase(
+        std::remove_if(pending.begin(), pending.end(), [&](auto &p) { return local_now >= p.sent + retry; }),
+        pending.end());
+    auto settling = ctx.offset_samples.size() < offset_samples_wanted;
+    if (pending.size() < max_pending_time_requests && (settling || local_now >= ctx.next_time_request)) {
+        auto id = ctx.next_request_id++;
+        pending.push_back({id, local_now});
+        ctx.next_time_request = local_now + time_request_interval;
+        ctx.packet_signal.publish({packet::time_request{id}});
     }
 
     // Actions recorded last time were consumed by the steps run since.

@@ -25,12 +25,14 @@ inline constexpr double change_repeats = 3;
 // Actions and recorded inputs are kept this long (seconds of server time).
 inline constexpr double history_length = 1;
 inline constexpr double time_request_interval = 1;
-// Clock samples: asked for five times as often until this many arrived...
-inline constexpr std::size_t quick_offset_samples = 9;
-// ...and the last this many kept (a minute at one a second): the clocks of client and server
-// run at the same rate, so an old sample is as good as a new one, and a long window keeps the
-// best (shortest round trip) one for long.
-inline constexpr std::size_t max_offset_samples = 60;
+// Clock samples: the clock offset comes from the first this many, asked for one a frame; later
+// ones, one every time_request_interval, only tell a new clock (a server restarted). The clocks
+// of client and server run at the same rate, so the offset does not change, and keeping it
+// keeps the client's lead still (each move up skips steps of its inputs); how late the client's
+// packets arrive after all, the server answers with a longer playout delay.
+inline constexpr std::size_t offset_samples_wanted = 9;
+// Time requests awaiting a reply at once, at most.
+inline constexpr std::size_t max_pending_time_requests = 16;
 // An entity a snapshot names before its create_entity arrived is asked for again after this.
 inline constexpr double entity_request_interval = 0.5;
 inline constexpr int max_lead_steps = 4;
@@ -67,13 +69,17 @@ struct client_context {
         double offset;
         double round_trip;
     };
-    std::vector<clock_sample> offset_samples; // the last max_offset_samples, oldest first
+    std::vector<clock_sample> offset_samples; // the first offset_samples_wanted, in arrival order
     // clock_offset + playout_delay in whole steps, rounded up: how far the client's time runs
     // ahead of its local simulation time (see update_lead).
     long long clock_lead_steps{0};
     std::uint32_t next_request_id{1};
-    std::uint32_t pending_request_id{0};
-    double time_request_sent{0};
+    // Time requests sent and not answered yet: id and local time sent.
+    struct pending_time_request {
+        std::uint32_t id;
+        double sent;
+    };
+    std::vector<pending_time_request> pending_time_requests;
     double next_time_request{-std::numeric_limits<double>::infinity()};
     double next_snapshot_time{-std::numeric_limits<double>::infinity()};
 
@@ -149,8 +155,8 @@ inline double client_time(const registry &registry, const client_context &ctx) {
 // makes the playout delay longer when they arrive with too little time to spare. Moving down
 // makes the client's time repeat a step (inputs stamped with a time already sent are copies);
 // moving up makes it skip steps, on which the server keeps the inputs before them. The estimate
-// moves seldom: the playout delay only grows, and the clock offset changes only with a better
-// sample (see receive_time).
+// moves seldom: the playout delay only grows, and the clock offset is settled from the first
+// samples (see receive_time).
 inline void update_lead(const registry &registry, client_context &ctx) {
     auto target = (ctx.clock_offset + ctx.playout_delay) / double(get_fixed_dt(registry));
     ctx.clock_lead_steps = std::llround(std::ceil(target - 1e-6));

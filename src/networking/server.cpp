@@ -27,10 +27,11 @@ constexpr std::uint8_t rest_refresh = 4;
 constexpr std::size_t max_buffered_snapshots = 128;
 // Most entities one entity_request may ask for.
 constexpr std::size_t max_requested_entities = 1024;
-// Lost packets in a row that an input survives, at the least: the playout delay leaves room for
-// as many later copies of it (a growth adds a step more). More cover makes the delay longer, and
-// with it how far the clients extrapolate.
-constexpr int input_loss_cover = 1;
+// Lost packets in a row that an input survives: its copies go a frame apart, and the playout
+// delay leaves its first packet as many steps to spare (at 10 % loss an input is then missed
+// once in ten thousand). More cover makes the delay longer, and with it how far the clients
+// extrapolate.
+constexpr int input_loss_cover = 3;
 static_assert(input_loss_cover < input_repeats);
 // The playout margin starts at this many steps and grows to this many at most.
 constexpr double initial_playout_margin_steps = 2;
@@ -60,6 +61,10 @@ struct server_client_state {
     // make it grow only to what they need beyond the margin they were sent with.
     double margin_before_growth{0};
     double growth_settles{-std::numeric_limits<double>::infinity()};
+    // What the newest snapshot before the last one lacked of the slack wanted (0 if nothing): a
+    // packet held up on its way alone is covered by the copies after it, so the margin grows only
+    // when two newest ones in a row come short, by the lesser lack.
+    double last_lack{0};
     double playout_sent{-1};
     // The encoding of each known body's motion last sent to the client (a hash of it), and how
     // many more snapshots repeat it, by entity index.
@@ -433,9 +438,9 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
     }
     // Client times fall on the server's steps: a snapshot is late when its step has run (a copy
     // of inputs already applied was dropped above). How early the newest snapshots arrive keeps
-    // the playout delay long enough: one that arrives with less than the slack wanted makes it
-    // longer by what was missing, at once, so that the client's lead (and with it the steps its
-    // inputs fall on) changes seldom. The slack wanted is half a step plus input_loss_cover
+    // the playout delay long enough: two in a row that arrive with less than the slack wanted
+    // make it longer by what was missing, at once, so that the client's lead (and with it the
+    // steps its inputs fall on) changes seldom. The slack wanted is half a step plus input_loss_cover
     // steps: each input goes in input_repeats packets a frame apart, so that it is still on time
     // when that many of them in a row are lost.
     auto dt = double(get_fixed_dt(registry));
@@ -445,17 +450,20 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
     if (slack < -dt / 2) rc.rejected.late += 1;
     if (snapshot.timestamp > state.newest_received) {
         state.newest_received = snapshot.timestamp;
-        auto wanted = dt * (0.5 + double(input_loss_cover));
-        if (slack < wanted) {
+        // Client times and the server's fall on its steps: half a step less against rounding.
+        auto wanted = dt * (double(input_loss_cover) - 0.5);
+        auto lack = std::max(wanted - slack, 0.0);
+        auto both = std::min(lack, state.last_lack);
+        state.last_lack = lack;
+        if (both > 0) {
             if (now > state.growth_settles) {
                 state.margin_before_growth = state.playout_margin;
                 state.growth_settles = now + rc.round_trip_time + state.playout_margin + wanted + 2 * dt;
             }
             // A step more than was missing, so that the next packet only slightly later than
-            // this one does not make it grow again (each growth makes the client skip a step of
+            // these does not make it grow again (each growth makes the client skip a step of
             // its inputs).
-            auto needed =
-                std::min(state.margin_before_growth + (wanted + dt - slack), max_playout_margin_steps * dt);
+            auto needed = std::min(state.margin_before_growth + both + dt, max_playout_margin_steps * dt);
             state.playout_margin = std::max(state.playout_margin, needed);
         }
     }
