@@ -170,7 +170,7 @@ TEST(network_session, inputs_reach_the_server_in_asynchronous_mode) {
 // moment the client set its input: the input must act from its own time on in the
 // extrapolation, as on the server, not from the snapshot's. (When the extrapolation took the
 // client's present input as the state at the snapshot's time, the box ran ahead by the whole
-// extrapolation: 30 cm off in the first tenth of a second.)
+// extrapolation: up to 45 cm off.)
 TEST(network_session, an_input_acts_from_its_own_time_in_the_client_s_extrapolation) {
     net_harness h(&setup);
     make_ground(h.server);
