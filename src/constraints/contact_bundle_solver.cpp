@@ -160,21 +160,18 @@ inline wide_mask slot_mask(const contact_bundle &bundle, std::uint32_t s) {
     return wide_set(scalar(s)) < wide_from_counts(bundle.num_points);
 }
 
-// Current separation of the slot's points from the bodies' motion since the step began, as
-// current_separation() in contact_solver.cpp.
+// The bodies' relative motion at the slot's points since the step began, as point_motion() in
+// contact_solver.cpp.
 template<fixed_side F>
-inline wide current_separation(const contact_bundle_slot &slot, const wide3 &normal, const wide_body &a,
-                               const wide_body &b) {
-    wide3 d;
+inline wide3 point_motion(const contact_bundle_slot &slot, const wide_body &a, const wide_body &b) {
     if constexpr (F == fixed_side::b) {
-        d = a.delta_position + (rotate(a.delta_rotation, wide3_load(slot.rA)) - wide3_load(slot.rB));
+        return a.delta_position + (rotate(a.delta_rotation, wide3_load(slot.rA)) - wide3_load(slot.rB));
     } else if constexpr (F == fixed_side::a) {
-        d = (wide3_load(slot.rA) - rotate(b.delta_rotation, wide3_load(slot.rB))) - b.delta_position;
+        return (wide3_load(slot.rA) - rotate(b.delta_rotation, wide3_load(slot.rB))) - b.delta_position;
     } else {
-        d = (a.delta_position - b.delta_position) +
-            (rotate(a.delta_rotation, wide3_load(slot.rA)) - rotate(b.delta_rotation, wide3_load(slot.rB)));
+        return (a.delta_position - b.delta_position) + (rotate(a.delta_rotation, wide3_load(slot.rA)) -
+                                                        rotate(b.delta_rotation, wide3_load(slot.rB)));
     }
-    return dot(normal, d) + wide_load(slot.adjusted_separation);
 }
 
 // The bundle's two sides, the static one left at zero (none of its terms is used).
@@ -220,6 +217,7 @@ void fill_lane(contact_bundle_slot &slot, std::uint32_t lane, const contact_solv
     };
     put(slot.rA, p.rA);
     put(slot.rB, p.rB);
+    put(slot.adjusted_anchor_gap, p.adjusted_anchor_gap);
     put(slot.normal, p.normal);
     put(slot.tangent[0], p.tangent[0]);
     put(slot.tangent[1], p.tangent[1]);
@@ -401,6 +399,11 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
     auto rigid_mass_scale = wide_set(pass.rigid.mass_scale);
     auto rigid_impulse_scale = wide_set(pass.rigid.impulse_scale);
     auto min_bias = wide_set(-pass.max_push_out_velocity);
+    auto max_bias = wide_set(pass.max_push_out_velocity);
+    auto anchor_bias_rate = wide_set(pass.anchor.bias_rate);
+    auto anchor_mass_scale = wide_set(pass.anchor.mass_scale);
+    auto anchor_impulse_scale = wide_set(pass.anchor.impulse_scale);
+    wide3 motion[contact_solver_constraint::max_points];
 
     // Normal rows of every point, then friction, as the one-at-a-time pass does.
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
@@ -408,7 +411,8 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         auto partial = s >= bundle.full_slots;
         auto before = velocities_of(a, b);
         auto normal = wide3_load(slot.normal);
-        auto sep = current_separation<F>(slot, normal, a, b);
+        motion[s] = point_motion<F>(slot, a, b);
+        auto sep = dot(normal, motion[s]) + wide_load(slot.adjusted_separation);
         // Speculative where still apart; else the soft push-out in the biased pass, nothing in
         // the relax pass.
         auto apart = zero < sep;
@@ -446,8 +450,17 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
             auto tangent = wide3_load(slot.tangent[t]);
             auto old_impulse = wide_load(slot.tangent_impulse[t]);
             auto vt = row_velocity<F>(row, tangent, a, b);
-            auto new_impulse =
-                std_clamp(old_impulse - wide_load(slot.tangent_mass[t]) * vt, min_impulse, max_impulse);
+            auto mass_scale = one, impulse_scale = zero;
+            if (pass.use_bias) {
+                // Friction anchors, as solve_friction() in contact_solver.cpp.
+                auto slid = dot(tangent, wide3_load(slot.adjusted_anchor_gap) + motion[s]);
+                vt = vt + std_clamp(anchor_bias_rate * slid, min_bias, max_bias);
+                mass_scale = anchor_mass_scale;
+                impulse_scale = anchor_impulse_scale;
+            }
+            auto new_impulse = std_clamp(old_impulse - wide_load(slot.tangent_mass[t]) * mass_scale * vt -
+                                             impulse_scale * old_impulse,
+                                         min_impulse, max_impulse);
             apply_row<F>(row, tangent, new_impulse - old_impulse, a, b);
             if (partial) {
                 keep_unmasked<F>(active, before, a, b);

@@ -34,8 +34,9 @@ void warm_start_bundle(contact_solver_set &contacts, std::uint32_t bundle, std::
 
 // What one solve pass shares with every bundle.
 struct bundle_pass {
-    scalar inv_h;   // 1 / the sub-step.
-    softness rigid; // The rigid contacts' softness for the sub-step.
+    scalar inv_h;    // 1 / the sub-step.
+    softness rigid;  // The rigid contacts' softness for the sub-step.
+    softness anchor; // The friction anchors' softness for the sub-step.
     scalar max_push_out_velocity;
     bool use_bias; // The biased pass, or the relax pass.
 };

@@ -185,32 +185,52 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
 
 namespace {
 
-// Current separation of a point from the bodies' motion since the step began (the static side
-// has not moved).
+// Where the point on A is now, seen from the point on B, less where it was when the step began:
+// the bodies' relative motion at the point (the static side has not moved).
+template<fixed_side F>
+vector3 point_motion(const contact_solver_point &p, const solver_body &a, const solver_body &b) {
+    if constexpr (F == fixed_side::b) {
+        return a.delta_position + (rotate(a.delta_rotation, p.rA) - p.rB);
+    } else if constexpr (F == fixed_side::a) {
+        return (p.rA - rotate(b.delta_rotation, p.rB)) - b.delta_position;
+    } else {
+        return (a.delta_position - b.delta_position) +
+               (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
+    }
+}
+
+// Current separation of a point, from its motion since the step began.
+inline scalar current_separation(const contact_solver_point &p, const vector3 &motion) {
+    return dot(p.normal, motion) + p.adjusted_separation;
+}
+
 template<fixed_side F>
 scalar current_separation(const contact_solver_point &p, const solver_body &a, const solver_body &b) {
-    vector3 d;
-    if constexpr (F == fixed_side::b) {
-        d = a.delta_position + (rotate(a.delta_rotation, p.rA) - p.rB);
-    } else if constexpr (F == fixed_side::a) {
-        d = (p.rA - rotate(b.delta_rotation, p.rB)) - b.delta_position;
-    } else {
-        d = (a.delta_position - b.delta_position) +
-            (rotate(a.delta_rotation, p.rA) - rotate(b.delta_rotation, p.rB));
-    }
-    return dot(p.normal, d) + p.adjusted_separation;
+    return current_separation(p, point_motion<F>(p, a, b));
 }
 
 // Coulomb friction on both tangents of every point, limited by that point's normal impulse.
+// In the biased pass (`motion` given: each point's since the step began) the rows are also a
+// soft spring (settings' friction_anchor_hertz) that pulls the surfaces back to where they stuck.
 template<fixed_side F>
 void solve_friction(const contact_solver_constraint &c, std::span<contact_solver_point> points,
-                    solver_body &a, solver_body &b) {
-    for (auto &p : points) {
+                    solver_body &a, solver_body &b, const detail::bundle_pass &pass, const vector3 *motion) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        auto &p = points[i];
         auto max_impulse = c.friction * p.normal_impulse;
         for (int t = 0; t < 2; ++t) {
             auto vt = row_velocity<F>(p.tangent_row[t], p.tangent[t], a, b);
-            auto new_impulse =
-                std::clamp(p.tangent_impulse[t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
+            scalar mass_scale = 1, impulse_scale = 0;
+            if (motion) {
+                auto slid = dot(p.tangent[t], p.adjusted_anchor_gap + motion[i]);
+                vt += std::clamp(pass.anchor.bias_rate * slid, -pass.max_push_out_velocity,
+                                 pass.max_push_out_velocity);
+                mass_scale = pass.anchor.mass_scale;
+                impulse_scale = pass.anchor.impulse_scale;
+            }
+            auto new_impulse = std::clamp(p.tangent_impulse[t] - p.tangent_mass[t] * mass_scale * vt -
+                                              impulse_scale * p.tangent_impulse[t],
+                                          -max_impulse, max_impulse);
             apply_row<F>(p.tangent_row[t], p.tangent[t], new_impulse - p.tangent_impulse[t], a, b);
             p.tangent_impulse[t] = new_impulse;
         }
@@ -266,9 +286,12 @@ void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> 
                   scalar h) {
     auto is_spring = c.stiffness < large_scalar;
     scalar total_normal = 0;
+    vector3 motion[contact_solver_constraint::max_points];
 
-    for (auto &p : points) {
-        auto s = current_separation<F>(p, a, b);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        auto &p = points[i];
+        motion[i] = point_motion<F>(p, a, b);
+        auto s = current_separation(p, motion[i]);
         scalar bias = 0, mass_scale = 1, impulse_scale = 0;
 
         if (s > 0) {
@@ -295,7 +318,7 @@ void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> 
         total_normal += new_impulse;
     }
 
-    solve_friction<F>(c, points, a, b);
+    solve_friction<F>(c, points, a, b, pass, pass.use_bias ? motion : nullptr);
     solve_spin_and_roll(c, a, b, total_normal);
 }
 
@@ -308,7 +331,9 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
     auto rigid = make_softness(hertz, settings.contact_damping_ratio, h);
     auto inv_h = scalar(1) / h;
 
-    detail::bundle_pass pass{inv_h, rigid, settings.max_push_out_velocity, use_bias};
+    auto anchor = make_softness(std::min(settings.friction_anchor_hertz, settings.max_hertz_ratio / h),
+                                settings.contact_damping_ratio, h);
+    detail::bundle_pass pass{inv_h, rigid, anchor, settings.max_push_out_velocity, use_bias};
     auto bundle = [&](std::uint32_t i) { detail::solve_bundle(contacts, i, bodies, pass); };
     auto single = [&](std::uint32_t k) {
         auto &c = contacts.constraints[k];

@@ -71,13 +71,12 @@ TEST_F(stacking, pyramid_of_210_boxes_with_sleeping_off_stands_for_ten_seconds) 
         ASSERT_TRUE(isfinite(pos(e)));
         ASSERT_FALSE(reg.all_of<sleeping_tag>(e));
     }
-    // The target is below 1 cm (Jolt's pyramid drifts 2.7 cm, Bullet's 25 cm); the solver
-    // does not meet it yet: the top box creeps out of the pyramid's plane, steadily after the
-    // first 2 s, and had moved 6.6 cm at 10 s when this bound was set. The bound is that figure
-    // and a fifth more, so that the creep cannot grow unnoticed; lower it as the solver improves.
-    const scalar measured_when_set = scalar(0.066), bound = measured_when_set * scalar(1.2);
+    // Below 1 cm (Jolt's pyramid drifts 2.7 cm, Bullet's 25 cm). Measured: 4.4 mm, nearly all of
+    // it the springs' compression under the rows above; 1.2 mm sideways at most for any box.
+    // Without static friction's anchors (contact_solver_settings::friction_anchor_hertz) the
+    // top box crept out of the pyramid's plane at about 1 cm/s after the first 2 s, 6.6 cm in all.
     auto moved = length(pos(top) - start);
-    EXPECT_LT(moved, bound) << "top box moved " << moved << " m, bound " << bound << " m (target 0.01 m)";
+    EXPECT_LT(moved, standing_still) << "top box moved " << moved << " m";
 }
 
 // Asleep, like the first pyramid above; the tower awake is measured further down.
@@ -104,7 +103,8 @@ TEST_F(stacking, tower_of_30_boxes_falls_asleep_standing) {
 
 // A pyramid four times the size: the top settles by the springs' compression and does not creep.
 // Awake: with sleeping on it falls asleep at 7 s, and would stand from then on whatever the
-// solver did. Measured awake: the top 1.3 cm sideways and 1.4 cm down at 10 s.
+// solver did. Measured awake at 10 s: no box more than 3.6 mm sideways (1.3 cm before static
+// friction's anchors), and the top 1.8 cm down.
 TEST_F(stacking, pyramid_of_820_boxes_with_sleeping_off_does_not_creep) {
     scenes::make_ground(reg);
     auto boxes = scenes::make_pyramid(reg, 40);
@@ -114,19 +114,19 @@ TEST_F(stacking, pyramid_of_820_boxes_with_sleeping_off_does_not_creep) {
     run_for(10);
     auto now = pos(top);
     auto sideways = length(vector3{now.x - start.x, 0, now.z - start.z});
-    EXPECT_LT(sideways, scalar(0.02)) << "top box crept sideways by " << sideways << " m";
+    EXPECT_LT(sideways, standing_still) << "top box crept sideways by " << sideways << " m";
     EXPECT_NEAR(now.y, start.y, scalar(0.03)) << "top box sank " << start.y - now.y << " m";
 }
 
-// The tower the contact damping was tuned on, awake: it does not stand. Its top leans away
-// ever faster, 4 cm at 5 s and 21.6 cm at 10 s when this bound was set, and would topple. The
-// target is the 1 cm the sleeping tower is held to; until the solver meets it, the bound is
-// the measured lean and a fifth, so that a worse solver shows.
+// The tower the contact damping was tuned on, awake: it does not stand yet. Its top leans
+// away, 6.3 cm at 10 s when this bound was set (21.6 cm, and ever faster, before static
+// friction's anchors). The target is the 1 cm the sleeping tower is held to; until the solver
+// meets it, the bound is the measured lean and a fifth, so that a worse solver shows.
 TEST_F(stacking, tower_of_30_boxes_with_sleeping_off_leans_no_further_than_when_measured) {
     scenes::make_ground(reg);
     auto boxes = scenes::make_tower(reg, 30);
     auto worst = run_awake(boxes, 10);
-    const scalar measured_when_set = scalar(0.216), bound = measured_when_set * scalar(1.2);
+    const scalar measured_when_set = scalar(0.063), bound = measured_when_set * scalar(1.2);
     EXPECT_LT(worst.horizontal, bound) << "a box moved sideways by " << worst.horizontal << " m, bound "
                                        << bound << " m (target " << standing_still << " m)";
 }
@@ -138,16 +138,13 @@ TEST_F(stacking, tower_of_15_mixed_boxes_with_sleeping_off_stands_for_ten_second
     auto worst = run_awake(boxes, 10);
     // The soft contacts give under the load, 15 of them in series, the lowest under 59 kg: as
     // they take it in the first tenth of a second the top box dips by up to 3.2 cm, then
-    // rests 1.8 cm low (measured) and holds that height. Sideways the boxes creep, 1.6 cm at
-    // 10 s when this was set and still growing: the target is 1 cm, and the bound that figure
-    // and a fifth.
-    const scalar sink_measured = scalar(0.032), creep_measured = scalar(0.016);
+    // rests 1.8 cm low (measured) and holds that height. Sideways no box moves more than 1.4 mm
+    // (measured; 1.6 cm and growing before static friction's anchors).
+    const scalar sink_measured = scalar(0.032);
     EXPECT_LT(worst.vertical, sink_measured * scalar(1.2))
         << "a box moved up or down by " << worst.vertical << " m, measured " << sink_measured
         << " m when set";
-    EXPECT_LT(worst.horizontal, creep_measured * scalar(1.2))
-        << "a box crept sideways by " << worst.horizontal << " m, measured " << creep_measured
-        << " m when set (target " << standing_still << " m)";
+    EXPECT_LT(worst.horizontal, standing_still) << "a box crept sideways by " << worst.horizontal << " m";
     // Nothing fell off: each box still rests on the one below, well inside its top face.
     for (std::size_t i = 1; i < boxes.size(); ++i) {
         auto below = pos(boxes[i - 1]), above = pos(boxes[i]);

@@ -32,7 +32,8 @@ struct contact_row {
 /// tens of thousands of points, far more than the caches hold). Geometry is captured at the
 /// start of the step (narrowphase output); the current separation is recovered from the
 /// bodies' accumulated motion.
-/// The caller sets `rA`, `rB`, `normal`, `adjusted_separation` and last step's impulses;
+/// The caller sets `rA`, `rB`, `normal`, `adjusted_separation`, `adjusted_anchor_gap` and last
+/// step's impulses;
 /// prepare_contacts() computes the rest.
 struct contact_solver_point {
     /// @var rA
@@ -45,6 +46,11 @@ struct contact_solver_point {
     /// Separation minus dot(normal, rA - rB) (m): with the bodies' motion since the step began
     /// it gives the current separation (negative: overlap).
     scalar adjusted_separation{0};
+    /// Where static friction holds the point: its anchor on A minus its anchor on B along the
+    /// surfaces when the step began (contact_point::anchor_gap), minus rA - rB (m). Dotted with
+    /// a tangent, with the bodies' motion since then, it gives how far the surfaces slid from
+    /// where they stuck, which the biased pass's friction rows undo.
+    vector3 adjusted_anchor_gap{vector3_zero};
     scalar normal_mass{0};           ///< Effective mass along the normal (kg).
     scalar tangent_mass[2]{0, 0};    ///< Effective mass along each tangent (kg).
     scalar normal_impulse{0};        ///< Normal impulse of the sub-step (N s), not negative.
@@ -177,6 +183,15 @@ struct contact_solver_settings {
     /// sub-steps that cap is 90 Hz, the default, so a stiffer value takes effect only with more
     /// sub-steps or a smaller fixed dt.
     scalar contact_hertz{90};
+    /// Stiffness with which static friction holds a point where it stuck, as a spring frequency
+    /// in Hz, damped with contact_damping_ratio and capped like contact_hertz. In the biased
+    /// pass the friction rows pull the surfaces back by how far they slid since the pair's points
+    /// were last found (contact_solver_point::adjusted_anchor_gap), so that a body at rest does
+    /// not creep by what the velocity rows leave over each sub-step; friction's limit still
+    /// applies. Lower than contact_hertz because a body resting on many points feels the sum of
+    /// their springs: at 90 Hz the top box of a pyramid jitters, at 45 Hz it rests.
+    /// 0 turns the hold off. Default 45.
+    scalar friction_anchor_hertz{45};
     /// Damping ratio of the contact spring. Measured with the 30-box tower and the 40-wide
     /// pyramid over 10 s: ratios of 1 to 2 leave the top box within 3 mm (tower) and 1.4 cm
     /// (pyramid, mostly the springs' compression), while 5 to 10 let stacks wobble and creep by

@@ -178,6 +178,9 @@ random_contacts make_contacts(std::size_t num_contacts, unsigned seed, bool colo
             p.rB = {u(contact_rng) / 2, scalar(0.5), u(contact_rng) / 2};
             p.normal = normal;
             p.adjusted_separation = scalar(0.01) * u(contact_rng) - dot(p.normal, p.rA - p.rB);
+            // Surfaces slid by up to 2 mm from where they stuck, for the friction anchors.
+            vector3 slid{scalar(0.002) * u(contact_rng), 0, scalar(0.002) * u(contact_rng)};
+            p.adjusted_anchor_gap = slid - (p.rA - p.rB);
             p.normal_impulse = scalar(0.1) * (u(contact_rng) + 1);
         }
     }
