@@ -129,10 +129,11 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
         p.rB = cp.positionB - posB;
         p.normal = cp.normal;
         p.adjusted_separation = cp.distance - dot(cp.normal, p.rA - p.rB);
-        // Static friction holds a point where its pivots lie: the narrowphase keeps them on the
-        // bodies while it reuses the pair's points (can_reuse_contacts), so how far they lie
-        // apart along the surfaces is how far the surfaces slid since then.
-        auto apart = cp.positionA - cp.positionB;
+        // Static friction holds a point that has lasted where its pivots lie: the narrowphase
+        // keeps them on the bodies while it reuses the pair's points (can_reuse_contacts), so how
+        // far they lie apart along the surfaces is how far the surfaces slid since then. A young
+        // point is held only against this step's sliding (see contact_anchor_min_lifetime).
+        auto apart = cp.lifetime >= contact_anchor_min_lifetime ? cp.positionA - cp.positionB : cp.normal;
         p.adjusted_anchor_gap = (apart - cp.normal * dot(apart, cp.normal)) - (p.rA - p.rB);
         p.normal_impulse = cp.warm_start.normal;
         p.tangent_impulse[0] = cp.warm_start.friction[0];

@@ -171,6 +171,14 @@ struct contact_solver_set {
     contact_solver_point *add(const contact_solver_constraint &c, std::uint32_t num_points);
 };
 
+/// Steps a contact point must have lasted (contact_point::lifetime) before static friction holds
+/// it where its surfaces stuck across steps (contact_solver_settings::friction_anchor_hertz);
+/// half a second at 60 Hz. Younger points are held only against the sliding of the current step.
+/// The first moments of a contact, an impact or a tumble, are then decided as in a world rebuilt
+/// from the bodies' positions and velocities alone, as a network client's extrapolation is
+/// (a few steps long), while bodies that have come to rest stay where they are.
+inline constexpr std::uint32_t contact_anchor_min_lifetime = 30;
+
 /// Tuning of the soft-step contact solver, shared by all contacts of a step. These are the
 /// global contact stiffness and damping, the defaults for every contact: a contact whose mixed
 /// material has a finite stiffness (material_base::stiffness) is instead a spring of that
@@ -186,11 +194,11 @@ struct contact_solver_settings {
     /// Stiffness with which static friction holds a point where it stuck, as a spring frequency
     /// in Hz, damped with contact_damping_ratio and capped like contact_hertz. In the biased
     /// pass the friction rows pull the surfaces back by how far they slid since the pair's points
-    /// were last found (contact_solver_point::adjusted_anchor_gap), so that a body at rest does
-    /// not creep by what the velocity rows leave over each sub-step; friction's limit still
-    /// applies. Lower than contact_hertz because a body resting on many points feels the sum of
-    /// their springs: at 90 Hz the top box of a pyramid jitters, at 45 Hz it rests.
-    /// 0 turns the hold off. Default 45.
+    /// were last found (contact_solver_point::adjusted_anchor_gap; since the step began for
+    /// points younger than contact_anchor_min_lifetime), so that a body at rest does not creep
+    /// by what the velocity rows leave over each sub-step; friction's limit still applies. Lower than
+    /// contact_hertz because a body resting on many points feels the sum of their springs: at 90 Hz the top
+    /// box of a pyramid jitters, at 45 Hz it rests. 0 turns the hold off. Default 45.
     scalar friction_anchor_hertz{45};
     /// Damping ratio of the contact spring. Measured with the 30-box tower and the 40-wide
     /// pyramid over 10 s: ratios of 1 to 2 leave the top box within 3 mm (tower) and 1.4 cm
