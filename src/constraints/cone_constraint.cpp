@@ -22,11 +22,6 @@ void validate_constraint(const cone_constraint &c) {
     check_constraint_non_negative(type, "bump_stop_stiffness", c.bump_stop_stiffness);
 }
 
-scalar cone_half_angle(scalar tan0, scalar tan1, scalar cos_phi, scalar sin_phi) noexcept {
-    auto p = tan1 * cos_phi, q = tan0 * sin_phi;
-    return std::atan(tan0 * tan1 / std::sqrt(p * p + q * q));
-}
-
 namespace {
 
 // The cone's row: C is the angle between the point's direction and the wall, measured in the
@@ -37,8 +32,7 @@ struct cone_row {
     bool valid;
 };
 
-cone_row current_row(const cone_constraint_solver &s, const solver_body &a, const solver_body &b) noexcept {
-    auto pose = current_pose(s.anchor, a, b);
+cone_row current_row(const cone_constraint_solver &s, const joint_pose &pose, const solver_body &a) noexcept {
     auto frame = rotate_frame(a.delta_rotation, s.frame);
     auto r = -pose.d; // apex to the point
     auto e0 = frame.column(0), e1 = frame.column(1), e2 = frame.column(2);
@@ -47,16 +41,20 @@ cone_row current_row(const cone_constraint_solver &s, const solver_body &a, cons
     auto len = length(r);
     // At the apex or on the axis the wall is as far as the cone is wide: nothing to do.
     if (!(len > scalar(1e-6)) || !(rho > scalar(1e-6) * len)) return {{}, 0, false};
-    auto cos_phi = y / rho, sin_phi = z / rho;
-    auto alpha = cone_half_angle(s.span_tan[0], s.span_tan[1], cos_phi, sin_phi);
-    auto theta = std::atan2(rho, x);
+    // The wall's half-angle alpha in the point's direction about the axis is the polar radius of
+    // the ellipse of semi-axes tan0, tan1: tan alpha = k rho / m with k = tan0 tan1 and
+    // m = |(tan1 y, tan0 z)|. The point's own angle from the axis is theta = atan2(rho, x), and
+    // alpha - theta is the argument of (m + i k rho)(x - i rho): one arctangent.
+    auto k = s.span_tan[0] * s.span_tan[1];
+    auto m = std::sqrt(square(s.span_tan[1] * y) + square(s.span_tan[0] * z));
+    auto C = std::atan2(rho * (k * x - m), x * m + k * rho * rho);
     // d theta / d r = (cos theta u - sin theta e0) / |r| with u the radial direction; C = alpha
     // - theta grows along n. The point is B's pivot; A's lever arm reaches the same point, since
     // the cone turns with A.
     // (sin theta = rho / |r| and cos theta = x / |r|.)
     auto u = (e1 * y + e2 * z) / rho;
     auto n = (e0 * rho - u * x) / (len * len);
-    return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), alpha - theta, true};
+    return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), C, true};
 }
 
 } // namespace
@@ -79,29 +77,34 @@ cone_constraint_solver make_constraint_solver(const registry &registry, const co
         a.angvel = registry.get<angvel>(c.body[0]);
         b.linvel = registry.get<linvel>(c.body[1]);
         b.angvel = registry.get<angvel>(c.body[1]);
-        auto row = current_row(s, a, b);
+        auto row = current_row(s, current_pose(s.anchor, a, b), a);
         if (row.valid) s.start_rate = row_velocity(row.j, a, b);
     }
     return s;
 }
 
+void refresh_geometry(cone_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
+    auto row = current_row(s, s.anchor.pose, bodies[s.anchor.body[0]]);
+    s.wall = row.j;
+    s.wall_angle = row.C;
+    s.wall_valid = row.valid;
+}
+
 void warm_start(cone_constraint_solver &s, std::span<solver_body> bodies) noexcept {
-    auto &a = bodies[s.anchor.body[0]];
-    auto &b = bodies[s.anchor.body[1]];
-    auto row = current_row(s, a, b);
-    if (!row.valid) {
+    if (!s.wall_valid) {
         s.impulse = s.bump_stop_impulse = 0;
         return;
     }
-    apply_row_impulse(row.j, a, b, s.impulse + s.bump_stop_impulse);
+    apply_row_impulse(s.wall, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]],
+                      s.impulse + s.bump_stop_impulse);
 }
 
 void solve(cone_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto row = current_row(s, a, b);
-    if (!row.valid) return;
+    if (!s.wall_valid) return;
+    const cone_row row{s.wall, s.wall_angle, true};
 
     if (s.bump_stop_angle > 0 && s.bump_stop_stiffness > 0) {
         if (row.C < s.bump_stop_angle) {

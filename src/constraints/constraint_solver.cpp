@@ -101,6 +101,20 @@ constraint_solve_context make_constraint_solve_context(const constraint_solver_s
     return ctx;
 }
 
+void refresh_joint_geometry(constraint_solver_state &state, std::span<const solver_body> bodies) {
+    // Each joint writes only its own state: any order gives the same result.
+    for_each_batch(state, [&](auto &batch) {
+        parallel_for(state.scheduler, std::size_t(0), batch.solvers.size(), joints_per_task,
+                     [&](std::size_t i) {
+                         auto &s = batch.solvers[i];
+                         if constexpr (requires { s.anchor; }) {
+                             refresh_pose(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]]);
+                         }
+                         if constexpr (requires { refresh_geometry(s, bodies); }) refresh_geometry(s, bodies);
+                     });
+    });
+}
+
 void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies) {
     for_each_in_colour_order(state, [&](auto &s) { warm_start(s, bodies); });
 }

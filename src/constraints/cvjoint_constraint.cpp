@@ -92,19 +92,14 @@ cvjoint_constraint_solver make_constraint_solver(const registry &registry, const
     return s;
 }
 
-namespace {
-
-struct cv_pose {
-    vector3 axis; // twist rate axis
-    scalar twist;
-};
-
-cv_pose current_cv(const cvjoint_constraint_solver &s, const solver_body &a, const solver_body &b) noexcept {
-    auto frameA = rotate_frame(a.delta_rotation, s.frameA);
-    auto frameB = rotate_frame(b.delta_rotation, s.frameB);
-    return {cvjoint_twist_axis(frameA.column(0), frameB.column(0)),
-            unwrap_angle(s.twist, cvjoint_twist(frameA, frameB))};
+void refresh_geometry(cvjoint_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
+    auto frameA = rotate_frame(bodies[s.anchor.body[0]].delta_rotation, s.frameA);
+    auto frameB = rotate_frame(bodies[s.anchor.body[1]].delta_rotation, s.frameB);
+    s.twist_axis = cvjoint_twist_axis(frameA.column(0), frameB.column(0));
+    s.present_twist = unwrap_angle(s.twist, cvjoint_twist(frameA, frameB));
 }
+
+namespace {
 
 // A twist limit hit with restitution, solved as an isolated collision of the limit and the
 // pivot, iterated from zero impulses until they agree.
@@ -148,40 +143,40 @@ void solve_bend_friction(cvjoint_constraint_solver &s, const vector3 &twist_axis
 void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
+    auto &pose = s.anchor.pose;
     update_point_mass(s.anchor, a, b, pose);
-    auto cv = current_cv(s, a, b);
+    auto &axis = s.twist_axis;
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
-    apply_row_impulse(angular_jacobian(-cv.axis), a, b, s.twist_impulse);
-    apply_angular_impulse(a, b, cv.axis * (s.friction_impulse + s.spring_impulse) + s.bend_friction_impulse);
-    warm_start_angular_limit(s.limit, cv.axis, a, b);
+    apply_row_impulse(angular_jacobian(-axis), a, b, s.twist_impulse);
+    apply_angular_impulse(a, b, axis * (s.friction_impulse + s.spring_impulse) + s.bend_friction_impulse);
+    warm_start_angular_limit(s.limit, axis, a, b);
 }
 
 void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto cv = current_cv(s, a, b);
-    auto row = angular_jacobian(cv.axis); // its rate is minus the twist rate
+    const auto &axis = s.twist_axis;
+    const auto twist = s.present_twist;
+    auto row = angular_jacobian(axis); // its rate is minus the twist rate
 
-    if (s.bend_friction_torque > 0) solve_bend_friction(s, cv.axis, a, b, ctx);
+    if (s.bend_friction_torque > 0) solve_bend_friction(s, axis, a, b, ctx);
     if (s.locked) {
-        solve_equality_row(angular_jacobian(-cv.axis), cv.twist - s.limit.min, s.twist_impulse, a, b, ctx);
+        solve_equality_row(angular_jacobian(-axis), twist - s.limit.min, s.twist_impulse, a, b, ctx);
     } else {
         if (s.friction_torque > 0)
             solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);
         if (s.stiffness > 0 || s.damping > 0) {
-            solve_spring_row(row, s.rest_angle - cv.twist, s.stiffness, s.damping, s.spring_impulse, a, b,
-                             ctx);
+            solve_spring_row(row, s.rest_angle - twist, s.stiffness, s.damping, s.spring_impulse, a, b, ctx);
         }
         scalar bounce[2];
-        if (detect_limit_hits(s.limit, cv.axis, cv.twist, a, b, ctx, bounce)) {
-            solve_twist_bounce(s, cv.axis, bounce, a, b, ctx);
+        if (detect_limit_hits(s.limit, axis, twist, a, b, ctx, bounce)) {
+            solve_twist_bounce(s, axis, bounce, a, b, ctx);
         }
-        solve_angular_limit(s.limit, cv.axis, cv.twist, a, b, ctx);
+        solve_angular_limit(s.limit, axis, twist, a, b, ctx);
     }
     solve_point_block(s.anchor, s.impulse, a, b, ctx);
-    if (!ctx.use_bias) s.twist = current_cv(s, a, b).twist;
+    if (!ctx.use_bias) s.twist = twist;
 }
 
 void store_impulses(const cvjoint_constraint_solver &s, cvjoint_constraint &c) noexcept {

@@ -17,19 +17,17 @@ bool pivot_direction(const vector3 &d, vector3 &direction, scalar &length) noexc
     return true;
 }
 
-bool current_pivot_axis(const joint_anchor &anchor, const solver_body &a, const solver_body &b,
-                        pivot_axis &axis) noexcept {
-    axis.pose = current_pose(anchor, a, b);
+bool current_pivot_axis(const joint_anchor &anchor, pivot_axis &axis) noexcept {
+    axis.pose = anchor.pose;
     return pivot_direction(axis.pose.d, axis.direction, axis.length);
 }
 
 void warm_start_pivot_axis(const joint_anchor &anchor, scalar impulse,
                            std::span<solver_body> bodies) noexcept {
-    auto &a = bodies[anchor.body[0]];
-    auto &b = bodies[anchor.body[1]];
     pivot_axis axis;
-    if (!current_pivot_axis(anchor, a, b, axis)) return;
-    apply_impulse(a, b, axis.direction * impulse, axis.pose.rA, axis.pose.rB);
+    if (!current_pivot_axis(anchor, axis)) return;
+    apply_impulse(bodies[anchor.body[0]], bodies[anchor.body[1]], axis.direction * impulse, axis.pose.rA,
+                  axis.pose.rB);
 }
 
 distance_constraint_solver make_constraint_solver(const registry &registry, const distance_constraint &c,
@@ -50,7 +48,7 @@ void solve(distance_constraint_solver &s, std::span<solver_body> bodies,
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     pivot_axis axis;
-    if (!current_pivot_axis(s.anchor, a, b, axis)) return;
+    if (!current_pivot_axis(s.anchor, axis)) return;
     auto row_ctx = ctx;
     if (ctx.rigid_pivots) row_ctx.use_bias = false;
     solve_equality_row(linear_jacobian(axis.direction, axis.pose.rA, axis.pose.rB), axis.length - s.distance,

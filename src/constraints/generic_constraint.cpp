@@ -69,7 +69,7 @@ struct generic_rows {
 generic_rows current_rows(const generic_constraint_solver &s, const solver_body &a,
                           const solver_body &b) noexcept {
     generic_rows rows;
-    auto pose = current_pose(s.anchor, a, b);
+    auto &pose = s.anchor.pose;
     auto frameA = rotate_frame(a.delta_rotation, s.frameA);
     auto frameB = rotate_frame(b.delta_rotation, s.frameB);
     // Linear: q = dot(pB - pA, e) with e turning with A, so A's lever reaches pivot B.
@@ -120,7 +120,7 @@ void warm_start(generic_constraint_solver &s, std::span<solver_body> bodies) noe
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto rows = current_rows(s, a, b);
-    auto pose = current_pose(s.anchor, a, b);
+    auto &pose = s.anchor.pose;
     if (s.linear_block) update_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.linear_block_impulse, pose.rA, pose.rB);
     apply_angular_impulse(a, b, s.angular_block_impulse);

@@ -148,18 +148,6 @@ hinge_constraint_solver make_constraint_solver(const registry &registry, const h
 
 namespace {
 
-struct hinge_pose {
-    matrix3x3 frameA;
-    vector3 axisB;
-    scalar angle;
-};
-
-hinge_pose current_hinge(const hinge_constraint_solver &s, const solver_body &a, const solver_body &b) {
-    auto frameA = rotate_frame(a.delta_rotation, s.frameA);
-    auto frameB = rotate_frame(b.delta_rotation, s.frameB);
-    return {frameA, frameB.column(0), unwrap_angle(s.angle, relative_angle(frameA, frameB))};
-}
-
 // A limit hit with restitution is solved as an isolated collision: the bounce row, the axis
 // and the pivot iterated together from zero impulses until they agree, so that the bounce is
 // the rate the hinge leaves the limit with (the angular row alone does not see that the pivot
@@ -169,8 +157,7 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     constexpr int iterations = 32;
     auto rigid = ctx;
     rigid.use_bias = false;
-    auto hinge = current_hinge(s, a, b);
-    auto axis = hinge.frameA.column(0);
+    auto axis = s.present_frameA.column(0);
     // The limit's warm-started push is part of the approach being answered: take it back, or
     // the limit row would remove it from the bounce once the hinge separates.
     const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
@@ -183,23 +170,31 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     vector3 point_impulse = vector3_zero;
     for (int k = 0; k < iterations; ++k) {
         solve_limit_bounce(axis, bounce, limit_impulse, a, b);
-        solve_axis_alignment(hinge.frameA, hinge.axisB, align_impulse, a, b, rigid);
+        solve_axis_alignment(s.present_frameA, s.present_axisB, align_impulse, a, b, rigid);
         solve_point_block(s.anchor, point_impulse, a, b, rigid);
     }
 }
 
 } // namespace
 
+void refresh_geometry(hinge_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
+    auto frameA = rotate_frame(bodies[s.anchor.body[0]].delta_rotation, s.frameA);
+    auto frameB = rotate_frame(bodies[s.anchor.body[1]].delta_rotation, s.frameB);
+    s.present_frameA = frameA;
+    s.present_axisB = frameB.column(0);
+    s.present_angle = unwrap_angle(s.angle, relative_angle(frameA, frameB));
+}
+
 void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
+    auto &pose = s.anchor.pose;
     update_point_mass(s.anchor, a, b, pose);
-    auto hinge = current_hinge(s, a, b);
-    auto axis = hinge.frameA.column(0);
+    auto axis = s.present_frameA.column(0);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     for (int i = 0; i < 2; ++i) {
-        apply_angular_impulse(a, b, cross(hinge.frameA.column(i + 1), hinge.axisB) * s.align_impulse[i]);
+        apply_angular_impulse(a, b,
+                              cross(s.present_frameA.column(i + 1), s.present_axisB) * s.align_impulse[i]);
     }
     // Friction and spring rows act on the rate dot(axis, wA - wB).
     apply_angular_impulse(a, b, axis * (s.friction_impulse + s.spring_impulse));
@@ -210,25 +205,24 @@ void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto hinge = current_hinge(s, a, b);
-    auto axis = hinge.frameA.column(0);
+    auto axis = s.present_frameA.column(0);
+    auto angle = s.present_angle;
     auto row = angular_jacobian(axis);
 
     // Motion-resisting rows first; the limits and the joint itself have the final word.
     if (s.friction_torque > 0) solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);
     if (s.stiffness > 0 || s.damping > 0) {
         // The row's rate is minus the angle's rate, so its position error is rest - angle.
-        solve_spring_row(row, s.rest_angle - hinge.angle, s.stiffness, s.damping, s.spring_impulse, a, b,
-                         ctx);
+        solve_spring_row(row, s.rest_angle - angle, s.stiffness, s.damping, s.spring_impulse, a, b, ctx);
     }
     scalar bounce[2];
-    if (detect_limit_hits(s.limit, axis, hinge.angle, a, b, ctx, bounce)) {
+    if (detect_limit_hits(s.limit, axis, angle, a, b, ctx, bounce)) {
         solve_hinge_bounce(s, bounce, a, b, ctx);
     }
-    solve_angular_limit(s.limit, axis, hinge.angle, a, b, ctx);
-    solve_axis_alignment(hinge.frameA, hinge.axisB, s.align_impulse, a, b, ctx);
+    solve_angular_limit(s.limit, axis, angle, a, b, ctx);
+    solve_axis_alignment(s.present_frameA, s.present_axisB, s.align_impulse, a, b, ctx);
     solve_point_block(s.anchor, s.impulse, a, b, ctx);
-    if (!ctx.use_bias) s.angle = current_hinge(s, a, b).angle;
+    if (!ctx.use_bias) s.angle = angle;
 }
 
 void store_impulses(const hinge_constraint_solver &s, hinge_constraint &c) noexcept {

@@ -23,7 +23,7 @@ point_constraint_solver make_constraint_solver(const registry &registry, const p
 void warm_start(point_constraint_solver &s, std::span<solver_body> bodies) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto pose = current_pose(s.anchor, a, b);
+    auto &pose = s.anchor.pose;
     update_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     apply_angular_impulse(a, b, s.friction_impulse);
@@ -33,7 +33,7 @@ void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body
                        const constraint_solve_context &ctx) noexcept {
     // Solved as a block with the inverse of K, the pivots' relative velocity change per unit
     // impulse (anchor.point_mass, see update_point_mass), so the three directions do not fight.
-    auto pose = current_pose(anchor, a, b);
+    auto &pose = anchor.pose;
     auto mass = anchor.point_mass;
     if (length_sqr(pose.d) > large_point_separation_sqr) {
         // Pivots far apart move far when corrected: the mass is recomputed, not reused.

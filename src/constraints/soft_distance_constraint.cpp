@@ -33,7 +33,7 @@ void solve(soft_distance_constraint_solver &s, std::span<solver_body> bodies,
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     pivot_axis axis;
-    if (!current_pivot_axis(s.anchor, a, b, axis)) return;
+    if (!current_pivot_axis(s.anchor, axis)) return;
     solve_spring_row(linear_jacobian(axis.direction, axis.pose.rA, axis.pose.rB), axis.length - s.distance,
                      s.stiffness, s.damping, s.impulse, a, b, ctx);
 }

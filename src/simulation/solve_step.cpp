@@ -214,6 +214,7 @@ void solve_constraints(world_state &world, const settings &settings) {
     // one; joints and restitution on the calling thread.
     auto *scheduler = world.scheduler.get();
     prepare_contacts(contacts, bodies, scheduler);
+    refresh_joint_geometry(world.joints, bodies);
 
     for (unsigned i = 0; i < substeps; ++i) {
         integrate_velocities(bodies, h, scheduler);
@@ -226,6 +227,9 @@ void solve_constraints(world_state &world, const settings &settings) {
         solve_contacts(contacts, bodies, h, settings.contact, true, scheduler);
         integrate_positions(bodies, h, scheduler);
         project_joint_positions(world.joints, bodies, settings.joint);
+        // Only integration and projection move bodies: the joints' rows measured now serve every
+        // velocity pass until the next sub-step's integration.
+        refresh_joint_geometry(world.joints, bodies);
         for (unsigned k = 0; k < settings.num_relax_iterations; ++k) {
             solve_joint_constraints(world.joints, bodies, relax);
             solve_contacts(contacts, bodies, h, settings.contact, false, scheduler);

@@ -54,15 +54,6 @@ inline constexpr const char *constraint_type_name<cone_constraint> = "cone_const
 /// `bump_stop_angle` or `bump_stop_stiffness` is negative or not finite.
 void validate_constraint(const cone_constraint &c);
 
-/// The cone's half-angle in the direction (cos phi, sin phi) of its cross-section, for spans
-/// whose tangents are tan0 and tan1: the polar radius of the ellipse of semi-axes tan0, tan1.
-/// @param tan0 Tangent of the span towards the frame's second column (phi = 0); positive.
-/// @param tan1 Tangent of the span towards the frame's third column (phi = pi/2); positive.
-/// @param cos_phi Cosine of the direction's angle phi in the cross-section.
-/// @param sin_phi Sine of phi.
-/// @return The half-angle in that direction (radians).
-scalar cone_half_angle(scalar tan0, scalar tan1, scalar cos_phi, scalar sin_phi) noexcept;
-
 /// A cone_constraint as the solver sees it during a step.
 struct cone_constraint_solver {
     using component = cone_constraint; ///< The component this solver is made from.
@@ -80,6 +71,15 @@ struct cone_constraint_solver {
     /// Measured only with restitution on.
     scalar start_rate{0};
     bool bounced{false}; ///< Whether the wall already bounced this step: a step answers one approach.
+    /// @var wall
+    /// The wall's row at the bodies' present poses (refresh_geometry()).
+    /// @var wall_angle
+    /// Angle from the point's direction to the wall there (radians, positive inside).
+    /// @var wall_valid
+    /// False while the point is at the apex or on the axis, where there is no row.
+    jacobian wall{};
+    scalar wall_angle{0};
+    bool wall_valid{false};
     /// @var impulse
     /// Wall impulse of the sub-step (N m s), not negative.
     /// @var bump_stop_impulse
@@ -96,6 +96,10 @@ struct cone_constraint_solver {
 /// @return The solver state.
 cone_constraint_solver make_constraint_solver(const registry &registry, const cone_constraint &c,
                                               constraint_body_indices indices);
+/// Measures the wall's row at the bodies' present poses, after they have moved.
+/// @param s The solver state, its anchor's pose already refreshed.
+/// @param bodies The step's solver bodies.
+void refresh_geometry(cone_constraint_solver &s, std::span<const solver_body> bodies) noexcept;
 /// Re-applies the accumulated impulses to the bodies, at the start of each sub-step; drops them
 /// while the point is at the apex or on the axis.
 /// @param s The solver state.

@@ -28,6 +28,18 @@ struct constraint_solve_context {
     scalar restitution_threshold{0};
 };
 
+/// Current pivots: lever arms from the centres of mass and d = pivot A - pivot B.
+/// Computed by current_pose() from a joint_anchor and the bodies' motion so far in the step.
+struct joint_pose {
+    /// @var rA
+    /// Current pivot A relative to body A's centre of mass, world space (m).
+    /// @var rB
+    /// Current pivot B relative to body B's centre of mass, world space (m).
+    /// @var d
+    /// Current pivot A minus pivot B, world space (m): zero when a ball joint is satisfied.
+    vector3 rA, rB, d;
+};
+
 /// A joint's pivots as seen when the step begins. Every sub-step recovers the current pivots
 /// from the bodies' accumulated motion, so errors are measured exactly without the registry.
 /// Made by make_joint_anchor() when the solver gathers the joints.
@@ -47,18 +59,10 @@ struct joint_anchor {
     matrix3x3 point_mass{matrix3x3_zero};
     /// Whether `point_mass` holds an inverse: false when K is singular (neither body moves).
     bool point_mass_valid{false};
-};
-
-/// Current pivots: lever arms from the centres of mass and d = pivot A - pivot B.
-/// Computed by current_pose() from a joint_anchor and the bodies' motion so far in the step.
-struct joint_pose {
-    /// @var rA
-    /// Current pivot A relative to body A's centre of mass, world space (m).
-    /// @var rB
-    /// Current pivot B relative to body B's centre of mass, world space (m).
-    /// @var d
-    /// Current pivot A minus pivot B, world space (m): zero when a ball joint is satisfied.
-    vector3 rA, rB, d;
+    /// The pivots at the bodies' present poses, kept by refresh_pose(). Only integration and
+    /// position projection move bodies, so the solver refreshes it after them and the velocity
+    /// passes between (relax, the next sub-step's warm start and biased pass) all read it.
+    joint_pose pose{vector3_zero, vector3_zero, vector3_zero};
 };
 
 /// The pivots of a joint now: its anchor moved and turned by each body's motion accumulated
@@ -72,6 +76,14 @@ inline joint_pose current_pose(const joint_anchor &j, const solver_body &a, cons
     auto rB = rotate(b.delta_rotation, j.rB);
     auto d = j.separation + (a.delta_position - b.delta_position) + (rA - j.rA) - (rB - j.rB);
     return {rA, rB, d};
+}
+
+/// Sets `j.pose` to current_pose(): to be called whenever the bodies have moved.
+/// @param j The joint's pivots.
+/// @param a The solver body of the joint's first body.
+/// @param b The solver body of the joint's second body.
+inline void refresh_pose(joint_anchor &j, const solver_body &a, const solver_body &b) noexcept {
+    j.pose = current_pose(j, a, b);
 }
 
 /// One row of a constraint: its velocity is dot(linA, vA) + dot(angA, wA) + dot(linB, vB) +

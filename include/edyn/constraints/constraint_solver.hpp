@@ -115,6 +115,14 @@ void gather_constraints(const registry &registry, constraint_solver_state &state
 constraint_solve_context make_constraint_solve_context(const constraint_solver_settings &settings, scalar h,
                                                        bool use_bias) noexcept;
 
+/// Measures every joint's pivots (`joint_anchor::pose`) and angles at the bodies' present
+/// poses: called before the first sub-step and after each sub-step's position projection, the
+/// only times the bodies move, so that the velocity passes measure nothing themselves.
+/// Each joint on the state's scheduler when it has one.
+/// @param state The joints gathered this step.
+/// @param bodies The step's solver bodies.
+void refresh_joint_geometry(constraint_solver_state &state, std::span<const solver_body> bodies);
+
 /// Re-applies the accumulated impulses, at the start of each sub-step.
 /// Colour by colour, each colour's joints on the state's scheduler when it has one.
 /// @param state The joints gathered this step.

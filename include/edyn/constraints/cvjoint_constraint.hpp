@@ -121,7 +121,13 @@ struct cvjoint_constraint_solver {
     /// @var frameB
     /// Body B's frame in world space, at the start of the step.
     matrix3x3 frameA, frameB;
-    scalar twist{0};   ///< Twist (radians, unwrapped), updated after each relax pass.
+    scalar twist{0}; ///< Twist (radians, unwrapped), updated after each relax pass.
+    /// @var twist_axis
+    /// Axis of the twist's rate at the bodies' present poses (refresh_geometry()).
+    /// @var present_twist
+    /// Twist at the bodies' present poses (radians, unwrapped from `twist`).
+    vector3 twist_axis{vector3_zero};
+    scalar present_twist{0};
     bool locked{true}; ///< Whether the twist limits are equal, so that the twist is held.
     /// @var friction_torque
     /// Twist friction torque (N m).
@@ -149,6 +155,10 @@ struct cvjoint_constraint_solver {
 /// @return The solver state.
 cvjoint_constraint_solver make_constraint_solver(const registry &registry, const cvjoint_constraint &c,
                                                  constraint_body_indices indices);
+/// Measures the twist and its axis at the bodies' present poses, after they have moved.
+/// @param s The solver state.
+/// @param bodies The step's solver bodies.
+void refresh_geometry(cvjoint_constraint_solver &s, std::span<const solver_body> bodies) noexcept;
 /// Re-applies the accumulated impulses to the bodies, at the start of each sub-step.
 /// @param s The solver state.
 /// @param bodies The step's solver bodies.

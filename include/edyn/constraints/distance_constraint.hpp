@@ -90,20 +90,17 @@ struct pivot_axis {
     scalar length;     ///< Distance between the pivots (m).
 };
 
-/// The pivots of a distance-like joint now, with their direction and distance.
-/// False when the pivots coincide and no direction exists.
-/// @param anchor The joint's pivots at the start of the step.
-/// @param a Body A's solver state.
-/// @param b Body B's solver state.
+/// The pivots of a distance-like joint at the bodies' present poses (`anchor.pose`), with their
+/// direction and distance. False when the pivots coincide and no direction exists.
+/// @param anchor The joint's pivots, its pose refreshed since the bodies last moved.
 /// @param axis Receives the pose and length; the direction only when the function returns true.
 /// @return Whether a direction exists.
-bool current_pivot_axis(const joint_anchor &anchor, const solver_body &a, const solver_body &b,
-                        pivot_axis &axis) noexcept;
+bool current_pivot_axis(const joint_anchor &anchor, pivot_axis &axis) noexcept;
 
 /// Re-applies an impulse along the current direction between the pivots (distance and soft
 /// distance joints).
 /// Does nothing while the pivots coincide.
-/// @param anchor The joint's pivots at the start of the step.
+/// @param anchor The joint's pivots, its pose refreshed since the bodies last moved.
 /// @param impulse The impulse along the direction from pivot B to pivot A (N s).
 /// @param bodies The step's solver bodies.
 void warm_start_pivot_axis(const joint_anchor &anchor, scalar impulse,

@@ -103,7 +103,10 @@ scalar relative_angle(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept
 /// @param raw The angle measured now, in [-pi, pi].
 /// @return The angle equal to `raw` modulo a full turn that is closest to `previous`.
 inline scalar unwrap_angle(scalar previous, scalar raw) noexcept {
-    return previous + normalize_angle(raw - previous);
+    // Within half a turn of the previous angle, the common case, the raw angle itself.
+    auto change = raw - previous;
+    if (change >= -pi && change < pi) return raw;
+    return previous + normalize_angle(change);
 }
 
 /// Limits, bump stops and limit restitution of an angle whose rate is dot(axis, wB - wA)
@@ -184,6 +187,15 @@ struct hinge_constraint_solver {
     /// Body B's frame in world space, at the start of the step.
     matrix3x3 frameA, frameB;
     scalar angle{0}; ///< Hinge angle (radians, unwrapped), updated after each relax pass.
+    /// @var present_frameA
+    /// Body A's frame at the bodies' present poses (refresh_geometry()).
+    /// @var present_axisB
+    /// Body B's hinge axis there.
+    /// @var present_angle
+    /// The hinge angle there (radians, unwrapped from `angle`).
+    matrix3x3 present_frameA{matrix3x3_identity};
+    vector3 present_axisB{vector3_zero};
+    scalar present_angle{0};
     /// @var friction_torque
     /// Friction torque about the axis (N m).
     /// @var damping
@@ -208,6 +220,10 @@ struct hinge_constraint_solver {
 /// @return The solver state.
 hinge_constraint_solver make_constraint_solver(const registry &registry, const hinge_constraint &c,
                                                constraint_body_indices indices);
+/// Measures the hinge's frame, axis and angle at the bodies' present poses, after they have moved.
+/// @param s The solver state.
+/// @param bodies The step's solver bodies.
+void refresh_geometry(hinge_constraint_solver &s, std::span<const solver_body> bodies) noexcept;
 /// Re-applies the accumulated impulses to the bodies, at the start of each sub-step.
 /// @param s The solver state.
 /// @param bodies The step's solver bodies.

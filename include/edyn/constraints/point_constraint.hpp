@@ -85,7 +85,7 @@ inline void project_positions(point_constraint_solver &s, std::span<solver_body>
 /// joint): impulse accumulates the linear impulse of the sub-step.
 /// Carries no position bias when `ctx.rigid_pivots` is set (position projection corrects the
 /// drift instead); does nothing when the block cannot be inverted.
-/// @param anchor The joint's pivots at the start of the step.
+/// @param anchor The joint's pivots, its pose refreshed since the bodies last moved.
 /// @param impulse The block's linear impulse of the sub-step (N s, world space), updated.
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
