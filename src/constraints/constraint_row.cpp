@@ -81,6 +81,10 @@ void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &i
 
 namespace {
 
+// Pivots within a tenth of a micrometre, the rounding of a float position a metre from the
+// origin, are left as they are: a resting joint needs no correction.
+constexpr scalar projection_tolerance_sqr = scalar(1e-14);
+
 // The orientation q turned by the small rotation vector dw (radians): the first-order update
 // q + (dw, 0) q / 2, normalised, which is the exact rotation to within |dw|^3 / 12 rad. Position
 // corrections turn bodies by a fraction of a joint's error over its lever arm, well under
@@ -139,9 +143,9 @@ void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar 
     auto pose = current_pose(anchor, a, b);
     // A separation past a centimetre means large corrections, which turn the bodies enough to
     // make the reused mass diverge: it is recomputed for such a joint.
-    if (refresh_mass || length_sqr(pose.d) > large_point_separation_sqr)
-        update_point_mass(anchor, a, b, pose);
-    if (!anchor.point_mass_valid) return;
+    auto separation_sqr = length_sqr(pose.d);
+    if (refresh_mass || separation_sqr > large_point_separation_sqr) update_point_mass(anchor, a, b, pose);
+    if (!anchor.point_mass_valid || separation_sqr <= projection_tolerance_sqr) return;
     apply_position_impulse(a, b, -(anchor.point_mass * pose.d) * fraction, pose.rA, pose.rB, inv_h);
 }
 
