@@ -31,6 +31,9 @@ void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_bod
 
 void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                      const constraint_solve_context &ctx, scalar bounce_velocity) noexcept {
+    // An open limit holding no impulse, which the motion does not close within the sub-step,
+    // has nothing to do (the common case, far from the limit): its effective mass is not needed.
+    if (bounce_velocity <= 0 && C > 0 && impulse == 0 && row_velocity(j, a, b) + C * ctx.inv_h >= 0) return;
     auto mass = row_effective_mass(j, a, b);
     if (mass == 0) return;
     scalar bias = 0, mass_scale = 1, impulse_scale = 0;
@@ -123,13 +126,29 @@ void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, co
 
 } // namespace
 
+namespace {
+
+// -[r] I [r] for a symmetric I: entry (i, j) is (e_i x r) . I (e_j x r), symmetric, built from
+// the rows of [r] without a full matrix product.
+matrix3x3 lever_inertia(const vector3 &r, const matrix3x3 &inv_inertia) noexcept {
+    const vector3 s[3]{{0, -r.z, r.y}, {r.z, 0, -r.x}, {-r.y, r.x, 0}};
+    const vector3 u[3]{inv_inertia * s[0], inv_inertia * s[1], inv_inertia * s[2]};
+    auto k00 = dot(s[0], u[0]), k01 = dot(s[0], u[1]), k02 = dot(s[0], u[2]);
+    auto k11 = dot(s[1], u[1]), k12 = dot(s[1], u[2]), k22 = dot(s[2], u[2]);
+    return {{{k00, k01, k02}, {k01, k11, k12}, {k02, k12, k22}}};
+}
+
+} // namespace
+
 bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_pose &pose,
                         matrix3x3 &inverse_k) noexcept {
-    auto sA = skew_matrix(pose.rA), sB = skew_matrix(pose.rB);
-    auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) - sA * a.inv_inertia * sA -
-             sB * b.inv_inertia * sB;
-    bool valid = std::abs(determinant(k)) > scalar(1e-12);
-    inverse_k = valid ? inverse(k) : matrix3x3_zero;
+    auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) +
+             lever_inertia(pose.rA, a.inv_inertia) + lever_inertia(pose.rB, b.inv_inertia);
+    // The inverse from the cofactors, whose first dot product is the determinant.
+    auto c0 = cross(k[1], k[2]), c1 = cross(k[2], k[0]), c2 = cross(k[0], k[1]);
+    auto det = dot(k[0], c0);
+    bool valid = std::abs(det) > scalar(1e-12);
+    inverse_k = valid ? matrix3x3_columns(c0, c1, c2) * (scalar(1) / det) : matrix3x3_zero;
     return valid;
 }
 
@@ -138,13 +157,13 @@ void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_
     anchor.point_mass_valid = inverse_point_mass(a, b, pose, anchor.point_mass);
 }
 
-void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction, scalar inv_h,
-                   bool refresh_mass) noexcept {
+void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
+                   scalar inv_h) noexcept {
     auto pose = current_pose(anchor, a, b);
     // A separation past a centimetre means large corrections, which turn the bodies enough to
     // make the reused mass diverge: it is recomputed for such a joint.
     auto separation_sqr = length_sqr(pose.d);
-    if (refresh_mass || separation_sqr > large_point_separation_sqr) update_point_mass(anchor, a, b, pose);
+    if (separation_sqr > large_point_separation_sqr) update_point_mass(anchor, a, b, pose);
     if (!anchor.point_mass_valid || separation_sqr <= projection_tolerance_sqr) return;
     apply_position_impulse(a, b, -(anchor.point_mass * pose.d) * fraction, pose.rA, pose.rB, inv_h);
 }

@@ -130,15 +130,14 @@ void project_joint_positions(constraint_solver_state &state, std::span<solver_bo
     if (settings.position_projection <= 0) return;
     // Each joint's projection moves bodies that other joints share: in a chain one pass leaves
     // the error spread along it, and a few passes gather it out.
+    // Every pass reuses the effective mass of the sub-step's warm start: K changes little over
+    // one sub-step's motion (see project_point).
     for (unsigned pass = 0; pass < settings.position_projection_iterations; ++pass) {
-        // The first pass after the integration recomputes each joint's effective mass; the
-        // later ones reuse it (their corrections are small, and K changes little with them).
-        auto refresh_mass = pass == 0;
         for_each_in_colour_order(state, [&](auto &s) {
             if constexpr (requires {
-                              project_positions(s, bodies, settings.position_projection, state.inv_h, true);
+                              project_positions(s, bodies, settings.position_projection, state.inv_h);
                           }) {
-                project_positions(s, bodies, settings.position_projection, state.inv_h, refresh_mass);
+                project_positions(s, bodies, settings.position_projection, state.inv_h);
             }
         });
     }

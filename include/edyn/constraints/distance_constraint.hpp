@@ -71,7 +71,7 @@ void store_impulses(const distance_constraint_solver &s, distance_constraint &c)
 /// @param fraction Share of the length error removed, in [0, 1].
 /// @param inv_h 1 / h of the sub-step (1/s).
 inline void project_positions(distance_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
-                              scalar inv_h, bool /*refresh_mass*/) noexcept {
+                              scalar inv_h) noexcept {
     project_distance(s.anchor, s.distance, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction,
                      inv_h);
 }

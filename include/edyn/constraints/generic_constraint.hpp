@@ -144,12 +144,10 @@ void store_impulses(const generic_constraint_solver &s, generic_constraint &c) n
 /// @param bodies The step's solver bodies.
 /// @param fraction Share of the pivots' separation removed, in [0, 1].
 /// @param inv_h 1 / h of the sub-step (1/s).
-/// @param refresh_mass Whether the pivots' effective mass is recomputed first (see project_point()).
 inline void project_positions(generic_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
-                              scalar inv_h, bool refresh_mass) noexcept {
+                              scalar inv_h) noexcept {
     if (s.linear_block)
-        project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h,
-                      refresh_mass);
+        project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
 }
 
 } // namespace edyn

@@ -98,3 +98,79 @@ TEST(constraint_row, current_pose_follows_the_bodies_motion) {
     EXPECT_NEAR(pose.d.x, -1, 1e-6);
     EXPECT_NEAR(pose.d.y, 0, 1e-6);
 }
+
+TEST(constraint_row, refresh_pose_keeps_the_pose_the_velocity_passes_read) {
+    joint_anchor anchor;
+    anchor.rA = {0, scalar(0.5), 0};
+    anchor.rB = {scalar(-0.25), 0, 0};
+    anchor.separation = {scalar(0.01), 0, 0};
+    solver_body a, b;
+    a.delta_rotation = quaternion_axis_angle(normalize(vector3{1, 2, 3}), scalar(0.3));
+    a.delta_position = {scalar(0.1), 0, scalar(-0.2)};
+    b.delta_rotation = quaternion_axis_angle(vector3_y, scalar(-0.7));
+    refresh_pose(anchor, a, b);
+    auto pose = current_pose(anchor, a, b);
+    EXPECT_EQ(anchor.pose.rA, pose.rA);
+    EXPECT_EQ(anchor.pose.rB, pose.rB);
+    EXPECT_EQ(anchor.pose.d, pose.d);
+}
+
+TEST(constraint_row, point_mass_inverts_the_pivots_response_to_an_impulse) {
+    // Bodies with full, non-diagonal inverse inertias and oblique lever arms.
+    solver_body a, b;
+    a.inv_mass = scalar(0.5);
+    b.inv_mass = scalar(0.2);
+    auto ra = to_matrix3x3(quaternion_axis_angle(normalize(vector3{1, 1, 0}), scalar(0.6)));
+    auto rb = to_matrix3x3(quaternion_axis_angle(normalize(vector3{0, 1, 2}), scalar(-1.1)));
+    a.inv_inertia = ra * diagonal_matrix(vector3{2, 3, 5}) * transpose(ra);
+    b.inv_inertia = rb * diagonal_matrix(vector3{1, 4, scalar(0.5)}) * transpose(rb);
+    joint_pose pose{
+        {scalar(0.3), scalar(-0.4), scalar(0.2)}, {scalar(-0.1), scalar(0.5), scalar(0.35)}, vector3_zero};
+    matrix3x3 inverse_k;
+    ASSERT_TRUE(inverse_point_mass(a, b, pose, inverse_k));
+    // K is the change of the pivots' relative velocity per unit impulse, measured by applying
+    // unit impulses to the bodies.
+    for (int i = 0; i < 3; ++i) {
+        vector3 p = vector3_zero;
+        p[i] = 1;
+        auto sa = a, sb = b;
+        auto before = relative_velocity(sa, sb, pose.rA, pose.rB);
+        apply_impulse(sa, sb, inverse_k * p, pose.rA, pose.rB);
+        auto change = relative_velocity(sa, sb, pose.rA, pose.rB) - before;
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(change[k], k == i ? 1 : 0, 1e-5) << "impulse " << i << ", axis " << k;
+        }
+    }
+    // Neither body moves: no inverse.
+    solver_body fixed_a, fixed_b;
+    EXPECT_FALSE(inverse_point_mass(fixed_a, fixed_b, pose, inverse_k));
+}
+
+TEST(constraint_row, an_open_limit_the_motion_does_not_reach_does_nothing) {
+    auto a = unit_body(1, 0);
+    auto b = unit_body(0, 0);
+    auto j = linear_jacobian(vector3_y, vector3_zero, vector3_zero);
+    auto ctx = relax_context(scalar(0.01));
+    // 1 cm away, closing at 0.5 m/s: 5 mm in the sub-step, so the limit is not reached.
+    a.linvel = {0, scalar(-0.5), 0};
+    scalar impulse = 0;
+    solve_limit_row(j, scalar(0.01), impulse, a, b, ctx);
+    EXPECT_EQ(impulse, 0);
+    EXPECT_EQ(a.linvel.y, scalar(-0.5));
+    // Holding an impulse from earlier passes, the same open limit gives it back until the gap
+    // closes exactly within the sub-step (1 m/s), keeping the rest.
+    impulse = 2;
+    solve_limit_row(j, scalar(0.01), impulse, a, b, ctx);
+    EXPECT_NEAR(impulse, scalar(1.5), 1e-5);
+    EXPECT_NEAR(a.linvel.y, -1, 1e-5);
+}
+
+TEST(constraint_row, unwrap_angle_continues_past_half_a_turn) {
+    // Within half a turn of the last angle: the measured angle itself, bit for bit.
+    EXPECT_EQ(unwrap_angle(scalar(0.5), scalar(0.7)), scalar(0.7));
+    EXPECT_EQ(unwrap_angle(scalar(-3), scalar(-2.5)), scalar(-2.5));
+    // Across the cut at +-pi, and several turns on.
+    EXPECT_NEAR(unwrap_angle(3, -3), 2 * pi - 3, 1e-5);
+    EXPECT_NEAR(unwrap_angle(-3, 3), 3 - 2 * pi, 1e-5);
+    EXPECT_NEAR(unwrap_angle(scalar(4) * pi + scalar(0.1), scalar(0.2)), scalar(4) * pi + scalar(0.2), 1e-5);
+}
