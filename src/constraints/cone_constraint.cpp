@@ -104,11 +104,12 @@ void solve(cone_constraint_solver &s, std::span<solver_body> bodies,
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     if (!s.wall_valid) return;
-    const cone_row row{s.wall, s.wall_angle, true};
+    const auto &wall = s.wall;
+    const auto angle = s.wall_angle;
 
     if (s.bump_stop_angle > 0 && s.bump_stop_stiffness > 0) {
-        if (row.C < s.bump_stop_angle) {
-            solve_spring_row(row.j, row.C - s.bump_stop_angle, s.bump_stop_stiffness, 0, s.bump_stop_impulse,
+        if (angle < s.bump_stop_angle) {
+            solve_spring_row(wall, angle - s.bump_stop_angle, s.bump_stop_stiffness, 0, s.bump_stop_impulse,
                              a, b, ctx, true);
         } else {
             s.bump_stop_impulse = 0;
@@ -120,22 +121,22 @@ void solve(cone_constraint_solver &s, std::span<solver_body> bodies,
         // with the approach speed it had before the wall started braking it. Checked in both
         // passes: the relax pass after the step's last integration would otherwise brake the
         // approach speculatively, and the next step would see no speed left to bounce with.
-        auto rate = row_velocity(row.j, a, b);
+        auto rate = row_velocity(wall, a, b);
         auto approach = std::min(rate, s.start_rate);
-        if (approach < -ctx.restitution_threshold && row.C + rate * ctx.h <= 0) {
+        if (approach < -ctx.restitution_threshold && angle + rate * ctx.h <= 0) {
             s.bounced = true;
             // The warm-started push is part of the approach being answered.
-            apply_row_impulse(row.j, a, b, -s.impulse);
+            apply_row_impulse(wall, a, b, -s.impulse);
             s.impulse = 0;
-            auto mass = row_effective_mass(row.j, a, b);
+            auto mass = row_effective_mass(wall, a, b);
             auto bounce = -s.restitution * approach;
-            auto p = std::max(mass * (bounce - row_velocity(row.j, a, b)), scalar(0));
+            auto p = std::max(mass * (bounce - row_velocity(wall, a, b)), scalar(0));
             // Not accumulated in the wall's impulse, which would take it back once separating.
-            apply_row_impulse(row.j, a, b, p);
+            apply_row_impulse(wall, a, b, p);
             return;
         }
     }
-    solve_limit_row(row.j, row.C, s.impulse, a, b, ctx);
+    solve_limit_row(wall, angle, s.impulse, a, b, ctx);
 }
 
 void store_impulses(const cone_constraint_solver &s, cone_constraint &c) noexcept {

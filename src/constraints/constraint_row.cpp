@@ -124,10 +124,6 @@ void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, co
     }
 }
 
-} // namespace
-
-namespace {
-
 // -[r] I [r] for a symmetric I: entry (i, j) is (e_i x r) . I (e_j x r), symmetric, built from
 // the rows of [r] without a full matrix product.
 matrix3x3 lever_inertia(const vector3 &r, const matrix3x3 &inv_inertia) noexcept {

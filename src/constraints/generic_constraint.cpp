@@ -59,16 +59,9 @@ generic_constraint_solver make_constraint_solver(const registry &registry, const
 
 namespace {
 
-// Each degree of freedom's coordinate and the row whose velocity is its rate.
-struct generic_rows {
-    jacobian j[6];
-    scalar q[6];
-    vector3 rotation; // world space rotation vector taking frame A to frame B
-};
-
 generic_rows current_rows(const generic_constraint_solver &s, const solver_body &a,
                           const solver_body &b) noexcept {
-    generic_rows rows;
+    generic_rows rows{};
     auto &pose = s.anchor.pose;
     auto frameA = rotate_frame(a.delta_rotation, s.frameA);
     auto frameB = rotate_frame(b.delta_rotation, s.frameB);
@@ -116,10 +109,14 @@ void solve_angular_block(const vector3 &rotation, vector3 &impulse, solver_body 
 
 } // namespace
 
+void refresh_geometry(generic_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
+    s.rows = current_rows(s, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]]);
+}
+
 void warm_start(generic_constraint_solver &s, std::span<solver_body> bodies) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto rows = current_rows(s, a, b);
+    auto &rows = s.rows;
     auto &pose = s.anchor.pose;
     if (s.linear_block) update_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.linear_block_impulse, pose.rA, pose.rB);
@@ -136,7 +133,7 @@ void solve(generic_constraint_solver &s, std::span<solver_body> bodies,
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     // The rows depend on the bodies' poses only, which solving velocities does not change.
-    auto rows = current_rows(s, a, b);
+    const auto &rows = s.rows;
     // Angular rows first, then linear: the pivots have the final word.
     for (int n = 0; n < 6; ++n) {
         auto i = (n + 3) % 6;

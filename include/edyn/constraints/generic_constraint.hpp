@@ -88,6 +88,14 @@ inline constexpr const char *constraint_type_name<generic_constraint> = "generic
 /// not finite. The message names the field, e.g. "angular[2].min".
 void validate_constraint(const generic_constraint &c);
 
+/// Each degree of freedom's coordinate and the row whose velocity is its rate, at the bodies'
+/// present poses (refresh_geometry()).
+struct generic_rows {
+    jacobian j[6];    ///< The rows, linear then angular.
+    scalar q[6];      ///< The coordinates (m, then radians in frame A's axes).
+    vector3 rotation; ///< World space rotation vector taking frame A to frame B.
+};
+
 /// A generic_constraint as the solver sees it during a step; rows 0-2 are linear, 3-5 angular.
 struct generic_constraint_solver {
     using component = generic_constraint; ///< The component this solver is made from.
@@ -112,6 +120,7 @@ struct generic_constraint_solver {
     scalar limit_impulse[6][2]; ///< Impulses of the lower and upper limits of each row.
     scalar spring_impulse[6];   ///< Impulses of each row's spring and damper.
     scalar friction_impulse[6]; ///< Impulses of each row's friction.
+    generic_rows rows{};        ///< The rows at the bodies' present poses (refresh_geometry()).
 };
 
 /// Prepares a generic constraint for this step's solve: pivots and frames in world space,
@@ -122,6 +131,10 @@ struct generic_constraint_solver {
 /// @return The solver state.
 generic_constraint_solver make_constraint_solver(const registry &registry, const generic_constraint &c,
                                                  constraint_body_indices indices);
+/// Measures the rows and coordinates at the bodies' present poses, after they have moved.
+/// @param s The solver state, its anchor's pose already refreshed.
+/// @param bodies The step's solver bodies.
+void refresh_geometry(generic_constraint_solver &s, std::span<const solver_body> bodies) noexcept;
 /// Re-applies the accumulated impulses to the bodies, at the start of each sub-step.
 /// @param s The solver state.
 /// @param bodies The step's solver bodies.
