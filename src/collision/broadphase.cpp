@@ -2,6 +2,7 @@
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/should_collide.hpp"
 #include "edyn/ecs/registry.hpp"
+#include "edyn/parallel/parallel_for.hpp"
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -47,6 +48,12 @@ vector3 predicted_displacement(const AABB &aabb, const vector3 &displacement, sc
     if (len_sqr > cap * cap) return displacement * (cap / std::sqrt(len_sqr));
     return displacement;
 }
+
+// Work per parallel range in update(): proxies whose motion is looked at, records whose fat AABBs
+// are compared, queued proxies whose pairs are searched.
+constexpr std::size_t proxies_per_task = 256;
+constexpr std::size_t records_per_task = 512;
+constexpr std::size_t searches_per_task = 32;
 
 } // namespace
 
@@ -192,52 +199,72 @@ void broadphase::destroy_record(registry &registry, std::size_t index) {
     if (registry.valid(manifold)) registry.destroy(manifold);
 }
 
-void broadphase::destroy_separated(registry &registry) {
+void broadphase::destroy_separated(registry &registry, task_scheduler *scheduler) {
     auto moved = [&](const manifold_record &rec, int i) {
         return !rec.is_static[i] && reinserted[rec.node[i]] != 0;
     };
+    separated.resize(records.size());
+    parallel_for(scheduler, std::size_t(0), records.size(), records_per_task, [&](std::size_t i) {
+        auto &rec = records[i];
+        separated[i] = (moved(rec, 0) || moved(rec, 1)) &&
+                       !intersect(tree_of(rec.is_static[0]).get_fat_aabb(rec.node[0]),
+                                  tree_of(rec.is_static[1]).get_fat_aabb(rec.node[1]));
+    });
 
     for (std::size_t i = 0; i < records.size();) {
-        auto &rec = records[i];
-        if (!moved(rec, 0) && !moved(rec, 1)) {
+        if (!separated[i]) {
             ++i;
             continue;
         }
-        auto &fat0 = tree_of(rec.is_static[0]).get_fat_aabb(rec.node[0]);
-        auto &fat1 = tree_of(rec.is_static[1]).get_fat_aabb(rec.node[1]);
-        if (intersect(fat0, fat1)) {
-            ++i;
-        } else {
-            // The last record moves into `i` and is visited next.
-            destroy_record(registry, i);
-        }
+        // The last record, and its flag, move into `i` and are visited next.
+        separated[i] = separated.back();
+        separated.pop_back();
+        destroy_record(registry, i);
     }
 }
 
-void broadphase::collect_new_pairs(entity e) {
-    auto *loc = find(e);
-    if (loc == nullptr) return; // removed since it was queued
-    auto &p = get_proxy(*loc);
-    if (!p.queued) return; // queued twice
-    p.queued = false;
-
-    auto is_static = loc->is_static;
-    auto fat = tree_of(is_static).get_fat_aabb(p.node);
-
-    for (int t = 0; t < (is_static ? 1 : 2); ++t) {
+void broadphase::search_pairs(const pair_search &search, std::vector<new_pair> &out) const {
+    auto fat = tree_of(search.is_static).get_fat_aabb(search.node);
+    for (int t = 0; t < (search.is_static ? 1 : 2); ++t) {
         auto &other_tree = trees[t];
         other_tree.query(fat, [&](dynamic_tree::node_id id) {
             auto other = other_tree.get_payload(id);
+            auto e = search.body;
             if (other == e || record_of_pair.contains(pair_key(e, other))) return;
-            new_pair pair{{e, other}, {p.node, id}, {is_static, t == 1}};
+            new_pair pair{{e, other}, {search.node, id}, {search.is_static, t == 1}};
             if (to_integral(other) < to_integral(e)) {
                 std::swap(pair.body[0], pair.body[1]);
                 std::swap(pair.node[0], pair.node[1]);
                 std::swap(pair.is_static[0], pair.is_static[1]);
             }
-            pairs_scratch.push_back(pair);
+            out.push_back(pair);
         });
     }
+}
+
+void broadphase::collect_new_pairs(task_scheduler *scheduler) {
+    searches.clear();
+    for (auto e : queue) {
+        auto *loc = find(e);
+        if (loc == nullptr) continue; // removed since it was queued
+        auto &p = get_proxy(*loc);
+        if (!p.queued) continue; // queued twice
+        p.queued = false;
+        searches.push_back({e, p.node, loc->is_static});
+    }
+    queue.clear();
+
+    // Each block of searches fills its own list; create_manifolds sorts what they found.
+    auto num_blocks = (searches.size() + searches_per_task - 1) / searches_per_task;
+    if (found.size() < num_blocks) found.resize(num_blocks);
+    parallel_for(scheduler, std::size_t(0), num_blocks, 1, [&](std::size_t b) {
+        found[b].clear();
+        auto last = std::min((b + 1) * searches_per_task, searches.size());
+        for (auto i = b * searches_per_task; i < last; ++i)
+            search_pairs(searches[i], found[b]);
+    });
+    for (std::size_t b = 0; b < num_blocks; ++b)
+        pairs_scratch.insert(pairs_scratch.end(), found[b].begin(), found[b].end());
 }
 
 void broadphase::create_manifolds(registry &registry) {
@@ -270,39 +297,53 @@ void broadphase::create_manifolds(registry &registry) {
     pairs_scratch.clear();
 }
 
-void broadphase::update(registry &registry) {
-    EDYN_ASSERT(!updating, "broadphase::update: called recursively");
-    update_guard guard(updating);
+void broadphase::move_proxies(registry &registry, task_scheduler *scheduler) {
     auto &tree = trees[0];
-    moved_nodes.clear();
-
-    for (auto &p : dynamic_proxies) {
+    // Which proxies left their fat AABBs is found at once...
+    motions.resize(dynamic_proxies.size());
+    parallel_for(scheduler, std::size_t(0), dynamic_proxies.size(), proxies_per_task, [&](std::size_t i) {
+        auto &p = dynamic_proxies[i];
+        auto &motion = motions[i];
+        motion.reinsert = false;
         auto *aabb = registry.try_get<AABB>(p.body);
         EDYN_ASSERT(aabb != nullptr, "broadphase::update: dynamic proxy without an AABB component");
-        if (aabb == nullptr) continue;
+        if (aabb == nullptr) return;
 
         auto center = aabb_center(*aabb);
-        auto displacement = predicted_displacement(*aabb, center - p.center, tree.margin());
+        motion.aabb = *aabb;
+        motion.displacement = predicted_displacement(*aabb, center - p.center, tree.margin());
+        motion.reinsert = tree.needs_move(p.node, *aabb, motion.displacement);
         p.center = center;
+    });
 
-        if (!tree.move(p.node, *aabb, displacement)) continue;
+    // ...then those are reinserted, in the proxies' order.
+    moved_nodes.clear();
+    for (std::size_t i = 0; i < dynamic_proxies.size(); ++i) {
+        auto &motion = motions[i];
+        if (!motion.reinsert) continue;
+        auto &p = dynamic_proxies[i];
+        tree.move(p.node, motion.aabb, motion.displacement);
         moved_nodes.push_back(p.node);
         if (!p.queued) {
             p.queued = true;
             queue.push_back(p.body);
         }
     }
+}
 
-    reinserted.resize(tree.capacity());
+void broadphase::update(registry &registry, task_scheduler *scheduler) {
+    EDYN_ASSERT(!updating, "broadphase::update: called recursively");
+    update_guard guard(updating);
+    move_proxies(registry, scheduler);
+
+    reinserted.resize(trees[0].capacity());
     for (auto node : moved_nodes)
         reinserted[node] = 1;
-    destroy_separated(registry);
+    destroy_separated(registry, scheduler);
     for (auto node : moved_nodes)
         reinserted[node] = 0;
 
-    for (auto e : queue)
-        collect_new_pairs(e);
-    queue.clear();
+    collect_new_pairs(scheduler);
     create_manifolds(registry);
 }
 

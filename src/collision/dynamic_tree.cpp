@@ -105,20 +105,20 @@ void dynamic_tree::destroy(node_id id) {
     --leaf_count;
 }
 
-bool dynamic_tree::move(node_id id, const AABB &aabb, const vector3 &displacement) {
-    EDYN_ASSERT(is_leaf_id(id), "dynamic_tree::move: not a leaf");
+bool dynamic_tree::needs_move(node_id id, const AABB &aabb, const vector3 &displacement) const noexcept {
+    EDYN_ASSERT(is_leaf_id(id), "dynamic_tree::needs_move: not a leaf");
     auto &fat = nodes[id].aabb;
-    auto wanted = fatten(aabb, displacement);
+    if (!contains(fat, aabb)) return true;
+    // Still enclosed. Reinsert anyway when the fat box is far larger than what the current
+    // motion asks for (e.g. after a fast body slowed down), or it keeps spurious pairs.
+    auto largest = inset(fatten(aabb, displacement), vector3_one * (fat_margin * 4));
+    return !contains(largest, fat);
+}
 
-    if (contains(fat, aabb)) {
-        // Still enclosed. Reinsert anyway when the fat box is far larger than what the current
-        // motion asks for (e.g. after a fast body slowed down), or it keeps spurious pairs.
-        auto largest = inset(wanted, vector3_one * (fat_margin * 4));
-        if (contains(largest, fat)) return false;
-    }
-
+bool dynamic_tree::move(node_id id, const AABB &aabb, const vector3 &displacement) {
+    if (!needs_move(id, aabb, displacement)) return false;
     remove_leaf(id);
-    nodes[id].aabb = wanted;
+    nodes[id].aabb = fatten(aabb, displacement);
     insert_leaf(id);
     return true;
 }

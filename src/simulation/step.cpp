@@ -17,7 +17,7 @@ void run_step(registry &registry) {
     if (settings.pre_step_callback) settings.pre_step_callback(registry);
 
     // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones.
-    world.broadphase.update(registry);
+    world.broadphase.update(registry, world.scheduler.get());
     //    Paged meshes load the pages bodies are over and near, and unload those left behind.
     update_paged_meshes(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.

@@ -5,6 +5,7 @@
 #include "edyn/collision/pair_map.hpp"
 #include "edyn/collision/should_collide.hpp"
 #include "edyn/ecs/fwd.hpp"
+#include "edyn/parallel/task_scheduler.hpp"
 #include <array>
 #include <cstdint>
 #include <type_traits>
@@ -76,9 +77,15 @@ public:
     /// Moves every dynamic proxy to the AABB component of its entity, destroys the manifolds
     /// whose bodies' fat AABBs no longer overlap and creates manifolds for new overlapping pairs
     /// that should collide.
+    ///
+    /// What only reads (which proxies left their fat AABBs, which pairs separated, the new pairs'
+    /// search) runs on the scheduler's threads when one is given; the tree and the registry
+    /// change on the calling thread, in the same order whatever the number of threads.
     /// @param registry The registry holding the bodies' AABB components; manifold entities are
     ///        created and destroyed in it.
-    void update(registry &registry);
+    /// @param scheduler Threads to spread the reading over; null runs it all on the calling
+    ///        thread.
+    void update(registry &registry, task_scheduler *scheduler = nullptr);
 
     /// The manifold entity of a pair of bodies, in either order.
     /// @param first One body.
@@ -135,16 +142,32 @@ private:
         bool is_static[2];
     };
 
+    // A dynamic proxy's motion in the current update.
+    struct proxy_motion {
+        AABB aabb;
+        vector3 displacement;
+        bool reinsert;
+    };
+
+    // A queued proxy whose pairs are looked for.
+    struct pair_search {
+        entity body;
+        dynamic_tree::node_id node;
+        bool is_static;
+    };
+
     static std::uint64_t pair_key(entity a, entity b) noexcept;
     const locator *find(entity e) const noexcept;
     proxy &get_proxy(const locator &loc) noexcept;
     dynamic_tree &tree_of(bool is_static) noexcept { return trees[is_static ? 1 : 0]; }
     const dynamic_tree &tree_of(bool is_static) const noexcept { return trees[is_static ? 1 : 0]; }
     void destroy_record(registry &registry, std::size_t index);
-    void destroy_separated(registry &registry);
+    void move_proxies(registry &registry, task_scheduler *scheduler);
+    void destroy_separated(registry &registry, task_scheduler *scheduler);
     void destroy_pairs_of(registry &registry, entity e, bool is_static, AABB fat,
                           should_collide_func_t keep_if);
-    void collect_new_pairs(entity e);
+    void collect_new_pairs(task_scheduler *scheduler);
+    void search_pairs(const pair_search &search, std::vector<new_pair> &out) const;
     void create_manifolds(registry &registry);
 
     // Dynamic proxies, then static ones.
@@ -163,6 +186,12 @@ private:
     // pairs can have separated.
     std::vector<dynamic_tree::node_id> moved_nodes;
     std::vector<std::uint8_t> reinserted;
+    // Scratch of update(), kept from one to the next: each dynamic proxy's motion, whether each
+    // record separated, the searches of the queued proxies and what each block of them found.
+    std::vector<proxy_motion> motions;
+    std::vector<std::uint8_t> separated;
+    std::vector<pair_search> searches;
+    std::vector<std::vector<new_pair>> found;
     bool updating{false};
 };
 

@@ -101,6 +101,13 @@ public:
     /// @return Whether the leaf was reinserted (its fat AABB changed).
     bool move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero);
 
+    /// Whether move() with these arguments would reinsert the leaf; changes nothing, so that
+    /// many leaves can be asked at once from several threads.
+    /// @param id A leaf's id.
+    /// @param aabb The leaf's new tight AABB (m).
+    /// @param displacement Expected motion per step (m), as move() takes it.
+    bool needs_move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero) const noexcept;
+
     /// Calls `fn(node_id)` for each leaf whose fat AABB intersects `aabb`.
     /// @param aabb The query box (m); touching counts.
     /// @param fn Callable taking a node_id; it may return bool: false stops the query.

@@ -142,6 +142,35 @@ TEST(dynamic_tree_test, move_reinserts_only_when_leaving_fat_aabb) {
     EXPECT_EQ(tree.validate(), "");
 }
 
+// needs_move() answers what move() would do, without doing it.
+TEST(dynamic_tree_test, needs_move_tells_whether_move_reinserts) {
+    dynamic_tree tree(scalar(0.1));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<scalar> step(-0.2f, 0.2f);
+    std::vector<std::pair<dynamic_tree::node_id, AABB>> leaves;
+    for (int i = 0; i < 50; ++i) {
+        AABB box{{scalar(i), 0, 0}, {scalar(i) + 1, 1, 1}};
+        leaves.emplace_back(tree.create(box, edyn::make_entity(std::uint32_t(i + 1), 0)), box);
+    }
+    int reinserted = 0, kept = 0;
+    for (int round = 0; round < 20; ++round) {
+        for (auto &[id, box] : leaves) {
+            vector3 d{step(rng), step(rng), step(rng)};
+            // Now and then a leaf stops, so that its fat box is too large for its motion.
+            if (round % 5 == 4) d = edyn::vector3_zero;
+            box = {box.min + d, box.max + d};
+            auto fat = tree.get_fat_aabb(id);
+            auto needs = tree.needs_move(id, box, d);
+            EXPECT_EQ(tree.get_fat_aabb(id).min, fat.min) << "needs_move changed the tree";
+            EXPECT_EQ(tree.move(id, box, d), needs);
+            (needs ? reinserted : kept) += 1;
+        }
+    }
+    EXPECT_GT(reinserted, 100);
+    EXPECT_GT(kept, 100);
+    EXPECT_EQ(tree.validate(), "");
+}
+
 TEST(dynamic_tree_test, move_stretches_along_displacement) {
     dynamic_tree tree(scalar(0.1));
     auto id = tree.create({{0, 0, 0}, {1, 1, 1}}, edyn::make_entity(1, 0));
