@@ -233,7 +233,8 @@ void fill_lane(contact_bundle_slot &slot, std::uint32_t lane, const contact_solv
     put_row(slot.tangent_row[1], p.tangent_row[1]);
 }
 
-// Fills the bundle's slots from its constraints' points; lanes without a point get zeros.
+// Fills the bundle's slots from its constraints' points; lanes without a point get zeros, and
+// so do the slots' totals.
 void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<const solver_body> bodies) {
     auto &bundle = contacts.bundles[index];
     bundle.moves_a = bundle.moves_b = 0;
@@ -248,6 +249,7 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
     }();
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
         auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        contacts.bundle_totals[bundle.first_slot + s] = {}; // every sub-step adds to them
         for (std::uint32_t i = 0; i < lanes; ++i) {
             if (s < bundle.num_points[i]) {
                 auto &c = contacts.constraints[bundle.constraint[i]];
@@ -288,6 +290,7 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
     };
     reserve(contacts.bundles, contacts.constraints.size() / lanes + num_sides * num_colours);
     reserve(contacts.bundle_slots, contacts.points.size() / lanes + num_sides * max_points * num_colours);
+    reserve(contacts.bundle_totals, contacts.bundle_slots.capacity());
     reserve(contacts.singles, contacts.constraints.size());
     reserve(contacts.packing, contacts.constraints.size());
     reserve(contacts.bundle_begin, num_colours + 1);
@@ -361,6 +364,7 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
     }
 
     contacts.bundle_slots.resize(num_slots);
+    contacts.bundle_totals.resize(num_slots);
     parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), bundles_per_task,
                  [&](std::uint32_t i) { fill_bundle(contacts, i, bodies); });
 }
@@ -486,6 +490,20 @@ void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<s
     with_fixed_side(bundle, [&](auto side) { solve_bundle<side()>(contacts, bundle, bodies, pass); });
 }
 
+void accumulate_bundle_impulses(contact_solver_set &contacts, std::uint32_t index) {
+    auto &bundle = contacts.bundles[index];
+    for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
+        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        auto &totals = contacts.bundle_totals[bundle.first_slot + s];
+        auto add = [](scalar *total, const scalar *impulse) {
+            wide_store(total, wide_load(total) + wide_load(impulse));
+        };
+        add(totals.normal_impulse, slot.normal_impulse);
+        add(totals.tangent_impulse[0], slot.tangent_impulse[0]);
+        add(totals.tangent_impulse[1], slot.tangent_impulse[1]);
+    }
+}
+
 void unpack_bundle_impulses(contact_solver_set &contacts, std::uint32_t index) {
     auto &bundle = contacts.bundles[index];
     for (std::uint32_t i = 0; i < lanes; ++i) {
@@ -497,6 +515,11 @@ void unpack_bundle_impulses(contact_solver_set &contacts, std::uint32_t index) {
             p.normal_impulse = slot.normal_impulse[i];
             p.tangent_impulse[0] = slot.tangent_impulse[0][i];
             p.tangent_impulse[1] = slot.tangent_impulse[1][i];
+            auto &totals = contacts.bundle_totals[bundle.first_slot + s];
+            auto &t = contacts.totals[c.first_point + s];
+            t.normal_impulse = totals.normal_impulse[i];
+            t.tangent_impulse[0] = totals.tangent_impulse[0][i];
+            t.tangent_impulse[1] = totals.tangent_impulse[1][i];
         }
     }
 }

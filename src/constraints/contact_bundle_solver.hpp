@@ -45,7 +45,10 @@ struct bundle_pass {
 void solve_bundle(contact_solver_set &contacts, std::uint32_t bundle, std::span<solver_body> bodies,
                   const bundle_pass &pass);
 
-// Copies the bundle's impulses back into its constraints' points.
+// Adds the bundle's impulses of the sub-step to its step totals.
+void accumulate_bundle_impulses(contact_solver_set &contacts, std::uint32_t bundle);
+
+// Copies the bundle's impulses and step totals back into its constraints' points and totals.
 void unpack_bundle_impulses(contact_solver_set &contacts, std::uint32_t bundle);
 
 } // namespace edyn::detail

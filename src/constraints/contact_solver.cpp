@@ -3,8 +3,13 @@
 #include "edyn/constraints/constraint_row.hpp"
 #include "edyn/parallel/parallel_for.hpp"
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <thread>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace edyn {
 
@@ -77,27 +82,84 @@ constexpr std::size_t contacts_per_task = 64;
 // Bundles or single constraints per parallel range within a colour.
 constexpr std::size_t colour_items_per_task = 16;
 
+// Number of bundles and single constraints of colour k.
+std::uint32_t colour_items(const contact_solver_set &contacts, std::size_t k) {
+    return contacts.bundle_begin[k + 1] - contacts.bundle_begin[k] + contacts.single_begin[k + 1] -
+           contacts.single_begin[k];
+}
+
+// Cuts every colour's items into blocks of colour_items_per_task, numbered colour after colour:
+// colour k's blocks are [block_begin[k], block_begin[k + 1]).
+void number_colour_blocks(contact_solver_set &contacts) {
+    contacts.block_begin.clear();
+    std::uint32_t blocks = 0;
+    for (std::size_t k = 0; k + 1 < contacts.bundle_begin.size(); ++k) {
+        contacts.block_begin.push_back(blocks);
+        blocks += (colour_items(contacts, k) + colour_items_per_task - 1) / colour_items_per_task;
+    }
+    contacts.block_begin.push_back(blocks);
+}
+
+// Spins until `done` reaches `target`, yielding the thread after a while.
+void wait_until(const std::atomic<std::uint32_t> &done, std::uint32_t target) {
+    for (unsigned spins = 0; done.load(std::memory_order_acquire) < target; ++spins) {
+        if (spins < 256) {
+#if defined(__SSE2__)
+            _mm_pause();
+#endif
+        } else {
+            std::this_thread::yield();
+        }
+    }
+}
+
 // Calls bundle(i) for every bundle i and single(k) for every constraint k solved on its own,
 // colour after colour, each colour's at once on the scheduler's threads; then the overflow, in
 // order on the calling thread.
+//
+// All colours are one task: each of its threads claims the next block (in the order of
+// number_colour_blocks) and, before working on it, waits until every block of the earlier
+// colours is done. So a pass costs one hand-over to the scheduler, not one per colour. Blocks are
+// claimed in order, so a thread only ever waits for blocks that running threads have claimed: the
+// pass cannot stall, however few of its ranges the scheduler runs at once.
 template<typename Bundle, typename Single>
 void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Bundle &&bundle,
                               Single &&single) {
-    auto &begin = contacts.colour_begin;
-    for (std::size_t k = 0; k + 1 < begin.size(); ++k) {
-        auto first_bundle = contacts.bundle_begin[k];
-        auto num_bundles = contacts.bundle_begin[k + 1] - first_bundle;
-        auto first_single = contacts.single_begin[k];
-        auto num_items = num_bundles + contacts.single_begin[k + 1] - first_single;
-        parallel_for(scheduler, 0u, num_items, colour_items_per_task, [&](std::uint32_t i) {
-            if (i < num_bundles) {
-                bundle(first_bundle + i);
-            } else {
-                single(contacts.singles[first_single + i - num_bundles]);
+    auto item = [&](std::size_t k, std::uint32_t i) {
+        auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
+        if (i < num_bundles) {
+            bundle(contacts.bundle_begin[k] + i);
+        } else {
+            single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
+        }
+    };
+    auto &blocks = contacts.block_begin;
+    auto num_blocks = blocks.empty() ? 0u : blocks.back();
+    auto threads = scheduler ? scheduler->concurrency() : 1u;
+    if (threads > 1 && num_blocks > 1) {
+        std::atomic<std::uint32_t> next_block{0}, blocks_done{0};
+        parallel_for(scheduler, 0u, threads, 1, [&](std::uint32_t) {
+            std::size_t k = 0;
+            for (auto b = next_block.fetch_add(1, std::memory_order_relaxed); b < num_blocks;
+                 b = next_block.fetch_add(1, std::memory_order_relaxed)) {
+                while (blocks[k + 1] <= b)
+                    ++k;
+                wait_until(blocks_done, blocks[k]);
+                auto first = (b - blocks[k]) * std::uint32_t(colour_items_per_task);
+                auto last = std::min(first + std::uint32_t(colour_items_per_task), colour_items(contacts, k));
+                for (auto i = first; i < last; ++i)
+                    item(k, i);
+                blocks_done.fetch_add(1, std::memory_order_release);
             }
         });
+    } else {
+        for (std::size_t k = 0; k + 1 < blocks.size(); ++k) {
+            for (std::uint32_t i = 0, n = colour_items(contacts, k); i < n; ++i)
+                item(k, i);
+        }
     }
     auto size = static_cast<std::uint32_t>(contacts.constraints.size());
+    auto &begin = contacts.colour_begin;
     for (auto k = begin.empty() ? 0u : begin.back(); k < size; ++k) {
         single(k);
     }
@@ -152,6 +214,12 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
         }
     });
     detail::pack_contact_bundles(contacts, bodies, scheduler);
+    number_colour_blocks(contacts);
+
+    contacts.bouncy.clear();
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if (contacts.constraints[k].restitution > 0) contacts.bouncy.push_back(k);
+    }
 }
 
 void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
@@ -360,20 +428,19 @@ void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *s
         c.total_roll_impulse[0] += c.roll_impulse[0];
         c.total_roll_impulse[1] += c.roll_impulse[1];
     };
-    // The bundled constraints' impulses come back from their bundles on the way.
+    // The bundled constraints' totals are kept in their bundles, side by side.
     parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
-                 [&](std::uint32_t i) {
-                     detail::unpack_bundle_impulses(contacts, i);
-                     auto &bundle = contacts.bundles[i];
-                     for (std::size_t lane = 0; lane < contact_bundle_lanes; ++lane) {
-                         if (bundle.num_points[lane] > 0) add(contacts.constraints[bundle.constraint[lane]]);
-                     }
-                 });
+                 [&](std::uint32_t i) { detail::accumulate_bundle_impulses(contacts, i); });
     parallel_for(scheduler, std::size_t(0), contacts.singles.size(), contacts_per_task,
                  [&](std::size_t j) { add(contacts.constraints[contacts.singles[j]]); });
     auto &begin = contacts.colour_begin;
     parallel_for(scheduler, begin.empty() ? 0u : begin.back(), std::uint32_t(contacts.constraints.size()),
                  contacts_per_task, [&](std::uint32_t k) { add(contacts.constraints[k]); });
+}
+
+void unpack_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler) {
+    parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
+                 [&](std::uint32_t i) { detail::unpack_bundle_impulses(contacts, i); });
 }
 
 namespace {
@@ -457,8 +524,8 @@ unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> 
     unsigned passes = 0;
     for (; passes < iterations; ++passes) {
         bool any = false;
-        for (auto &c : contacts.constraints) {
-            if (c.restitution <= 0) continue;
+        for (auto k : contacts.bouncy) {
+            auto &c = contacts.constraints[k];
             any |= solve_restitution_individually(
                 c, points_of(contacts, c), std::span(contacts.totals).subspan(c.first_point, c.num_points),
                 bodies[c.body[0]], bodies[c.body[1]], settings.restitution_threshold, h,

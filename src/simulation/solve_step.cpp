@@ -236,6 +236,7 @@ void solve_constraints(world_state &world, const settings &settings) {
         }
         accumulate_contact_impulses(contacts, scheduler);
     }
+    unpack_contact_impulses(contacts, scheduler);
     solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
                       settings.num_individual_restitution_iterations, bounce_moment::step_end);
 }

@@ -75,6 +75,15 @@ struct contact_bundle_slot {
     scalar tangent_row[2][4][3][contact_bundle_lanes];
 };
 
+/// The step totals of a contact_bundle_slot's impulses, kept apart from the slot, which the
+/// solver's passes read, as contact_point_totals is kept apart from contact_solver_point.
+struct contact_bundle_totals {
+    /// Sum over the step's sub-steps of the normal impulse (N s).
+    scalar normal_impulse[contact_bundle_lanes];
+    /// Sum over the step's sub-steps of the friction impulse along each tangent (N s).
+    scalar tangent_impulse[2][contact_bundle_lanes];
+};
+
 } // namespace edyn
 
 #endif // EDYN_CONSTRAINTS_CONTACT_BUNDLE_HPP

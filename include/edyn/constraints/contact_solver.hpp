@@ -134,11 +134,13 @@ struct contact_solver_set {
     std::vector<std::uint32_t> colour_begin;
     /// The coloured constraints as prepare_contacts() packs them, four to a bundle, colour by
     /// colour: colour k's bundles are [bundle_begin[k], bundle_begin[k + 1]). Between
-    /// prepare_contacts() and accumulate_contact_impulses() a bundled constraint's impulses live
+    /// prepare_contacts() and unpack_contact_impulses() a bundled constraint's impulses live
     /// in its bundle's slots, not in its points.
     std::vector<contact_bundle> bundles;
     /// The bundles' point slots, indexed by contact_bundle::first_slot.
     std::vector<contact_bundle_slot> bundle_slots;
+    /// The step totals of each of bundle_slots, at the same index.
+    std::vector<contact_bundle_totals> bundle_totals;
     /// Where each colour's bundles begin in `bundles`, one entry per colour and one past the end.
     std::vector<std::uint32_t> bundle_begin;
     /// The coloured constraints solved one at a time (those with spinning or rolling friction or a
@@ -146,6 +148,12 @@ struct contact_solver_set {
     std::vector<std::uint32_t> singles;
     /// Where each colour's constraints begin in `singles`, as `bundle_begin`.
     std::vector<std::uint32_t> single_begin;
+    /// The colours' bundles and single constraints cut into blocks for the scheduler's threads,
+    /// numbered colour after colour: colour k's are [block_begin[k], block_begin[k + 1]).
+    std::vector<std::uint32_t> block_begin;
+    /// The constraints with restitution, in order: those solve_restitution() looks at. Listed
+    /// by prepare_contacts().
+    std::vector<std::uint32_t> bouncy;
     /// Scratch of prepare_contacts(): one colour's bundled constraints, most points first.
     std::vector<std::uint32_t> packing;
 
@@ -157,9 +165,12 @@ struct contact_solver_set {
         colour_begin.clear();
         bundles.clear();
         bundle_slots.clear();
+        bundle_totals.clear();
         bundle_begin.clear();
         singles.clear();
         single_begin.clear();
+        block_begin.clear();
+        bouncy.clear();
     }
     /// Appends `c` with `num_points` default points and returns the first of them.
     /// Sets the new constraint's `first_point` and `num_points` and grows `totals` alongside.
@@ -262,10 +273,17 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
 /// Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
 /// every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
 /// from the last one's, warm starting), so their sum is what the contact gave over the step.
-/// Also copies the bundled constraints' impulses back into their points.
+/// The bundled constraints' totals are kept in their bundles until unpack_contact_impulses().
 /// @param contacts The step's contacts.
 /// @param scheduler Threads to spread the work over; null runs it on the calling thread.
 void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler = nullptr);
+
+/// Copies the bundled constraints' impulses and step totals from their bundles back into their
+/// points and totals; call once after the last sub-step, before anything reads them (the
+/// step-end restitution, the write-back).
+/// @param contacts The step's contacts.
+/// @param scheduler Threads to spread the work over; null runs it on the calling thread.
+void unpack_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler = nullptr);
 
 /// When solve_restitution looks for points to bounce.
 enum class bounce_moment {
