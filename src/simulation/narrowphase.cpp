@@ -145,26 +145,30 @@ void run_narrowphase(registry &registry, world_state &world) {
     // reproducible order.
     std::reverse(world.manifolds.begin(), world.manifolds.end());
 
-    // Collision first, each manifold on its own (in parallel when a scheduler is there)...
+    // Collision first, each manifold on its own (in parallel when a scheduler is there), and the
+    // materials of its new points...
     auto dt = registry.ctx().get<settings>().fixed_dt;
     auto &manifold_pool = registry.storage<contact_manifold>();
     world.manifold_changes.resize(world.manifolds.size());
     auto collide_one = [&](std::size_t i) {
         auto &manifold = manifold_pool.get(world.manifolds[i]);
-        world.manifold_changes[i] = collide_manifold(registry, manifold, dt);
+        auto &changes = world.manifold_changes[i];
+        changes = collide_manifold(registry, manifold, dt);
+        fill_materials(registry, manifold, changes);
     };
     parallel_for(world.scheduler.get(), std::size_t(0), world.manifolds.size(), manifolds_per_task,
                  collide_one);
 
-    // ...then what the registry shares, in the manifolds' order: materials, events, islands.
+    // ...then what the registry shares, in the manifolds' order: events and islands. Only the
+    // manifolds whose points came or went have any.
     for (std::size_t i = 0; i < world.manifolds.size(); ++i) {
-        auto manifold_entity = world.manifolds[i];
-        auto &manifold = manifold_pool.get(manifold_entity);
         auto &changes = world.manifold_changes[i];
-        fill_materials(registry, manifold, changes);
+        if (changes.num_created == 0 && changes.num_destroyed == 0) continue;
+        auto manifold_entity = world.manifolds[i];
         if (record) record_events(events, manifold_entity, changes);
 
         if (changes.contact_started()) {
+            auto &manifold = manifold_pool.get(manifold_entity);
             world.islands.link_edge(registry, manifold_entity, manifold.body[0], manifold.body[1]);
         } else if (changes.contact_ended()) {
             world.islands.unlink_edge(registry, manifold_entity);

@@ -14,6 +14,7 @@
 #include "edyn/parallel/parallel_for.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/simulation/island.hpp"
+#include <algorithm>
 
 namespace edyn {
 
@@ -73,17 +74,32 @@ namespace {
 
 // Bodies resting against a moving kinematic body must not fall asleep, nor stay asleep.
 void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
+    auto moving = [&](entity e) {
+        return registry.all_of<kinematic_tag>(e) &&
+               (registry.get<linvel>(e) != vector3_zero || registry.get<angvel>(e) != vector3_zero);
+    };
+    auto kinematics = registry.view<kinematic_tag>();
+    if (std::none_of(kinematics.begin(), kinematics.end(), moving)) return;
     for (auto manifold_entity : world.manifolds) {
         auto &manifold = registry.get<contact_manifold>(manifold_entity);
         if (manifold.num_points == 0) continue;
         auto a = manifold.body[0], b = manifold.body[1];
-        for (auto [body, other] : {std::pair{a, b}, std::pair{b, a}}) {
-            if (registry.all_of<kinematic_tag>(other) && (registry.get<linvel>(other) != vector3_zero ||
-                                                          registry.get<angvel>(other) != vector3_zero)) {
-                world.islands.wake_entity(registry, body);
-            }
-        }
+        if (moving(b)) world.islands.wake_entity(registry, a);
+        if (moving(a)) world.islands.wake_entity(registry, b);
     }
+}
+
+// The solver bodies and point count of the contact an island edge stands for; no points when
+// the edge is not a contact to solve (a joint, a manifold without points, a sensor's, or one
+// between two bodies that do not move).
+world_state::edge_contact contact_of_edge(const registry &registry, const world_state &world, entity edge) {
+    auto *manifold = registry.try_get<contact_manifold>(edge);
+    if (!manifold || manifold->num_points == 0) return {};
+    auto a = manifold->body[0], b = manifold->body[1];
+    if (!registry.all_of<material>(a) || !registry.all_of<material>(b)) return {}; // a sensor
+    auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
+    if (ia == static_solver_body && ib == static_solver_body) return {};
+    return {{ia, ib}, manifold->num_points};
 }
 
 // Fills the constraint the manifold `source` was given a place for, and its points, from the
@@ -158,23 +174,31 @@ constexpr std::size_t manifolds_per_task = 64;
 
 void gather_contacts(registry &registry, world_state &world) {
     wake_bodies_on_moving_kinematics(registry, world);
+    auto *scheduler = world.scheduler.get();
+
+    // The manifolds are solved island by island, in the order of each island's edges. What each
+    // edge needs from the registry is looked up at once on the scheduler's threads...
+    world.island_edges.clear();
+    for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) {
+        auto &edges = registry.get<island>(island_entity).edges;
+        world.island_edges.insert(world.island_edges.end(), edges.begin(), edges.end());
+    }
+    auto num_edges = static_cast<std::uint32_t>(world.island_edges.size());
+    world.edge_contacts.resize(num_edges);
+    parallel_for(scheduler, 0u, num_edges, manifolds_per_task, [&](std::uint32_t i) {
+        world.edge_contacts[i] = contact_of_edge(registry, world, world.island_edges[i]);
+    });
+
+    // ...then each contact is given its colour in that order, on this thread: the colour after
+    // those of the earlier contacts it shares a moving body with.
     world.contact_manifolds.clear();
     world.contact_colours.clear();
     world.colouring.reset(world.bodies);
-
-    // First the manifolds to solve, island by island (the order in which they are solved, each
-    // after the earlier ones it shares a moving body with), each given its colour.
-    for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) {
-        for (auto edge : registry.get<island>(island_entity).edges) {
-            auto *manifold = registry.try_get<contact_manifold>(edge);
-            if (!manifold || manifold->num_points == 0) continue;
-            auto a = manifold->body[0], b = manifold->body[1];
-            if (!registry.all_of<material>(a) || !registry.all_of<material>(b)) continue; // a sensor
-            auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
-            if (ia == static_solver_body && ib == static_solver_body) continue;
-            world.contact_manifolds.push_back(edge);
-            world.contact_colours.push_back(world.colouring.assign(ia, ib, manifold->num_points));
-        }
+    for (std::uint32_t i = 0; i < num_edges; ++i) {
+        auto &edge = world.edge_contacts[i];
+        if (edge.num_points == 0) continue;
+        world.contact_manifolds.push_back(world.island_edges[i]);
+        world.contact_colours.push_back(world.colouring.assign(edge.body[0], edge.body[1], edge.num_points));
     }
 
     // Then each manifold's place: colours in order, in the order found within a colour.
@@ -182,22 +206,22 @@ void gather_contacts(registry &registry, world_state &world) {
     world.colouring.colour_ranges(contacts.colour_begin);
     contacts.constraints.resize(contacts.colour_begin.back());
     world.contact_slots.resize(world.contact_manifolds.size());
-    std::uint32_t num_points = 0;
-    for (std::uint32_t source = 0; source < world.contact_manifolds.size(); ++source) {
-        auto n = registry.get<contact_manifold>(world.contact_manifolds[source]).num_points;
-        auto place = world.colouring.next_place(world.contact_colours[source], n);
+    std::uint32_t num_points = 0, source = 0;
+    for (auto &edge : world.edge_contacts) {
+        if (edge.num_points == 0) continue;
+        auto place = world.colouring.next_place(world.contact_colours[source], edge.num_points);
         auto &c = contacts.constraints[place.constraint];
         c.first_point = place.first_point;
-        c.num_points = n;
+        c.num_points = edge.num_points;
         world.contact_slots[source] = place.constraint;
-        num_points += n;
+        num_points += edge.num_points;
+        ++source;
     }
     contacts.points.resize(num_points);
     contacts.totals.resize(num_points);
 
-    auto count = static_cast<std::uint32_t>(world.contact_manifolds.size());
-    parallel_for(world.scheduler.get(), 0u, count, manifolds_per_task,
-                 [&](std::uint32_t source) { gather_contact(registry, world, source); });
+    parallel_for(scheduler, 0u, source, manifolds_per_task,
+                 [&](std::uint32_t k) { gather_contact(registry, world, k); });
 }
 
 void solve_constraints(world_state &world, const settings &settings) {

@@ -48,6 +48,16 @@ struct world_state {
     std::vector<std::uint32_t> body_index;
     /// The contact constraints and points being solved, in colour order.
     contact_solver_set contacts;
+    /// The solver bodies and point count of the contact an island edge stands for (no points:
+    /// not a contact to solve).
+    struct edge_contact {
+        std::uint32_t body[2]{0, 0}; ///< The manifold's two bodies' indices in `bodies`.
+        std::uint32_t num_points{0}; ///< The manifold's points; 0 when it is not solved.
+    };
+    /// The edges of the awake islands, island by island, as gather_contacts visits them.
+    std::vector<entity> island_edges;
+    /// The contact of each of island_edges.
+    std::vector<edge_contact> edge_contacts;
     /// The manifolds solved this step, in the order found (a constraint's `source` indexes this).
     std::vector<entity> contact_manifolds;
     /// The colour each of contact_manifolds was given.
