@@ -2,6 +2,7 @@
 #include "edyn/collision/collide.hpp"
 #include "edyn/collision/manifold_update.hpp"
 #include "edyn/collision/shape_epoch.hpp"
+#include "edyn/config/assert.hpp"
 #include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
@@ -11,6 +12,7 @@
 #include "edyn/parallel/parallel_for.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
+#include <algorithm>
 
 namespace edyn {
 
@@ -59,47 +61,48 @@ void fill_materials(const registry &registry, contact_manifold &manifold,
         set_material(manifold.point[changes.created[i]], mixed);
 }
 
-bool is_resting(const registry &registry, entity body) {
-    return registry.any_of<static_tag, sleeping_tag>(body);
-}
-
-std::uint32_t shape_epoch_of(const registry &registry, entity body) {
-    auto *epoch = registry.try_get<shape_epoch>(body);
-    return epoch ? epoch->value : 0;
-}
-
-// Upper bound of how fast any two points of the bodies approach each other.
-scalar approach_speed(const registry &registry, entity a, entity b) {
-    auto motion = [&](entity e, vector3 &v) {
-        auto *lv = registry.try_get<linvel>(e);
-        auto *av = registry.try_get<angvel>(e);
+// What collide_manifold reads of a body, from the registry.
+world_state::collision_body collision_body_of(const registry &registry, entity e) {
+    world_state::collision_body body;
+    body.dynamic = registry.all_of<dynamic_tag>(e);
+    body.resting = registry.any_of<static_tag, sleeping_tag>(e);
+    body.has_shape = registry.all_of<shape_index>(e);
+    if (auto *epoch = registry.try_get<shape_epoch>(e)) body.shape_epoch = epoch->value;
+    if (!body.has_shape) return body;
+    body.origin = get_rigidbody_origin(registry, e);
+    body.orientation = registry.get<orientation>(e);
+    // An upper bound of how fast any of its points moves: its centre's speed and the spin's
+    // reach across its AABB.
+    auto *lv = registry.try_get<linvel>(e);
+    auto *av = registry.try_get<angvel>(e);
+    if (lv && av) {
+        body.linvel = *lv;
         auto *aabb = registry.try_get<AABB>(e);
-        if (!lv || !av) return scalar(0);
-        v = *lv;
-        return aabb ? length(*av) * length(aabb_half_extents(*aabb)) : scalar(0);
-    };
-    vector3 vA = vector3_zero, vB = vector3_zero;
-    auto spinA = motion(a, vA), spinB = motion(b, vB);
-    return length(vA - vB) + spinA + spinB;
+        body.spin_reach = aabb ? length(*av) * length(aabb_half_extents(*aabb)) : scalar(0);
+    }
+    return body;
 }
 
 // Closest points of one manifold's pair, the manifold updated in place. Reads the registry and
 // writes only the manifold, so that manifolds can be processed at once on several threads.
-contact_point_changes collide_manifold(const registry &registry, contact_manifold &manifold, scalar dt) {
+contact_point_changes collide_manifold(const registry &registry, const world_state &world,
+                                       contact_manifold &manifold, scalar dt) {
     auto a = manifold.body[0], b = manifold.body[1];
+    // Every manifold is the broadphase's, between two bodies with proxies.
+    EDYN_ASSERT(std::max(to_index(a), to_index(b)) < world.collision_bodies.size());
+    auto &bodyA = world.collision_bodies[to_index(a)];
+    auto &bodyB = world.collision_bodies[to_index(b)];
     // Only pairs with a dynamic body interact, and two resting bodies stay as they are.
-    if (!registry.any_of<dynamic_tag>(a) && !registry.any_of<dynamic_tag>(b)) return {};
-    if (is_resting(registry, a) && is_resting(registry, b)) return {};
-    if (!registry.all_of<shape_index>(a) || !registry.all_of<shape_index>(b)) return {};
+    if (!bodyA.dynamic && !bodyB.dynamic) return {};
+    if (bodyA.resting && bodyB.resting) return {};
+    if (!bodyA.has_shape || !bodyB.has_shape) return {};
 
-    auto &ornA = registry.get<orientation>(a);
-    auto &ornB = registry.get<orientation>(b);
-    manifold_transforms tf{get_rigidbody_origin(registry, a), ornA, get_rigidbody_origin(registry, b), ornB};
+    manifold_transforms tf{bodyA.origin, bodyA.orientation, bodyB.origin, bodyB.orientation};
     // Points are looked for as far as the bodies can travel towards each other in a step,
     // so that the solver can stop them at the surface instead of inside it.
-    auto approach = approach_speed(registry, a, b) * dt;
+    auto approach = (length(bodyA.linvel - bodyB.linvel) + bodyA.spin_reach + bodyB.spin_reach) * dt;
     manifold.separation_threshold = contact_breaking_threshold + approach;
-    shape_epoch_pair epochs{shape_epoch_of(registry, a), shape_epoch_of(registry, b)};
+    shape_epoch_pair epochs{bodyA.shape_epoch, bodyB.shape_epoch};
     // Worked out once, and again only when a shape changed: the bodies' shapes are not looked up
     // for it every step. (A pair that skips the steps above has no moving body: its points, if
     // any, stay as they are until one moves, which brings it here.)
@@ -131,6 +134,8 @@ contact_point_changes collide_manifold(const registry &registry, contact_manifol
 
 // Manifolds per parallel range: below this many, collision runs on the calling thread.
 constexpr std::size_t manifolds_per_task = 64;
+// Bodies per parallel range when their collision_body is gathered.
+constexpr std::size_t bodies_per_task = 256;
 
 } // namespace
 
@@ -145,15 +150,27 @@ void run_narrowphase(registry &registry, world_state &world) {
     // reproducible order.
     std::reverse(world.manifolds.begin(), world.manifolds.end());
 
-    // Collision first, each manifold on its own (in parallel when a scheduler is there), and the
-    // materials of its new points...
+    // What the manifolds read of their bodies, body by body...
+    auto &proxies = world.broadphase;
+    std::size_t index_bound = 0;
+    for (std::size_t i = 0; i < proxies.num_proxies(); ++i)
+        index_bound = std::max(index_bound, std::size_t(to_index(proxies.proxy_body(i))) + 1);
+    if (world.collision_bodies.size() < index_bound) world.collision_bodies.resize(index_bound);
+    parallel_for(world.scheduler.get(), std::size_t(0), proxies.num_proxies(), bodies_per_task,
+                 [&](std::size_t i) {
+                     auto e = proxies.proxy_body(i);
+                     world.collision_bodies[to_index(e)] = collision_body_of(registry, e);
+                 });
+
+    // ...then collision, each manifold on its own (in parallel when a scheduler is there), and
+    // the materials of its new points...
     auto dt = registry.ctx().get<settings>().fixed_dt;
     auto &manifold_pool = registry.storage<contact_manifold>();
     world.manifold_changes.resize(world.manifolds.size());
     auto collide_one = [&](std::size_t i) {
         auto &manifold = manifold_pool.get(world.manifolds[i]);
         auto &changes = world.manifold_changes[i];
-        changes = collide_manifold(registry, manifold, dt);
+        changes = collide_manifold(registry, world, manifold, dt);
         fill_materials(registry, manifold, changes);
     };
     parallel_for(world.scheduler.get(), std::size_t(0), world.manifolds.size(), manifolds_per_task,

@@ -96,6 +96,12 @@ public:
     std::size_t num_manifolds() const noexcept { return records.size(); }
     /// Number of proxies, dynamic and static.
     std::size_t num_proxies() const noexcept { return dynamic_proxies.size() + static_proxies.size(); }
+    /// The body of a proxy: the dynamic ones first, then the static ones; each body once.
+    /// @param i A proxy's position, below num_proxies().
+    entity proxy_body(std::size_t i) const noexcept {
+        return i < dynamic_proxies.size() ? dynamic_proxies[i].body
+                                          : static_proxies[i - dynamic_proxies.size()].body;
+    }
 
     /// Calls `fn(entity)` for each body whose fat AABB intersects `aabb`, dynamic ones first.
     /// @param aabb The query box in world space (m).

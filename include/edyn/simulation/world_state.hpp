@@ -69,6 +69,20 @@ struct world_state {
     /// The joints (non-contact constraints) being solved.
     constraint_solver_state joints;
 
+    /// What the narrowphase reads of a body with a broadphase proxy, gathered once a step so
+    /// that its loop over the manifolds looks nothing up in the registry.
+    struct collision_body {
+        vector3 origin{vector3_zero};                ///< get_rigidbody_origin (m).
+        quaternion orientation{quaternion_identity}; ///< The body's orientation.
+        vector3 linvel{vector3_zero};                ///< Zero unless it has both velocities (m/s).
+        scalar spin_reach{0};                        ///< |angvel| × half its AABB's diagonal (m/s).
+        std::uint32_t shape_epoch{0};                ///< Its shape_epoch, 0 without one.
+        bool dynamic{false};                         ///< Whether it has a dynamic_tag.
+        bool resting{false};                         ///< Whether it is static or asleep.
+        bool has_shape{false};                       ///< Whether it has a shape_index.
+    };
+    /// The collision_body of every body with a proxy, by entity index (others are stale).
+    std::vector<collision_body> collision_bodies;
     /// Manifold entities in the order the narrowphase visits them.
     std::vector<entity> manifolds;
     /// What changed in each of `manifolds` this step.
