@@ -2,6 +2,7 @@
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/parallel/parallel_for.hpp"
+#include "edyn/parallel/parallel_for_stages.hpp"
 #include <algorithm>
 
 namespace edyn {
@@ -60,29 +61,63 @@ void for_each_batch(const constraint_solver_state &state, Fn &&fn) {
 
 } // namespace
 
+namespace {
+
+// Joints per parallel range: a joint's rows cost more than a contact's.
+constexpr std::uint32_t joints_per_task = 32;
+constexpr std::size_t num_types = std::tuple_size_v<decltype(constraint_solver_state::batches)>;
+
+// The joints of colour k in a batch: none when the batch has fewer colours.
+template<typename Solver>
+std::uint32_t colour_size(const constraint_batch<Solver> &batch, std::size_t k) {
+    return k + 1 < batch.colour_begin.size() ? batch.colour_begin[k + 1] - batch.colour_begin[k] : 0;
+}
+
+// Numbers the blocks of state.block_begin and state.colour_block_begin.
+void number_colour_blocks(constraint_solver_state &state) {
+    state.block_begin.clear();
+    state.colour_block_begin.clear();
+    std::uint32_t blocks = 0;
+    for (std::size_t k = 0; k < state.colouring.num_colours(); ++k) {
+        state.colour_block_begin.push_back(blocks);
+        for_each_batch(state, [&](auto &batch) {
+            state.block_begin.push_back(blocks);
+            blocks += (colour_size(batch, k) + joints_per_task - 1) / joints_per_task;
+        });
+    }
+    state.block_begin.push_back(blocks);
+    state.colour_block_begin.push_back(blocks);
+}
+
+} // namespace
+
 void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index,
                         std::span<const solver_body> bodies) {
     state.colouring.reset(bodies);
     for_each_batch(state, [&](auto &batch) { gather_batch(registry, batch, body_index, state.colouring); });
+    number_colour_blocks(state);
 }
 
 namespace {
 
-// Joints per parallel range: a joint's rows cost more than a contact's.
-constexpr std::size_t joints_per_task = 32;
-
-// Calls fn(solver) for every joint, colour after colour; within a colour, type by type, each
-// type's joints of that colour at once on the scheduler's threads.
+// Calls fn(solver) for every joint, colour after colour, each colour's joints (of every type) at
+// once on the scheduler's threads; all colours in one task (see parallel_for_stages).
 template<typename Fn>
 void for_each_in_colour_order(constraint_solver_state &state, Fn &&fn) {
-    auto num_colours = state.colouring.num_colours();
-    for (std::uint32_t k = 0; k < num_colours; ++k) {
+    parallel_for_stages(state.scheduler, state.colour_block_begin, [&](std::size_t k, std::uint32_t b) {
+        auto *types = &state.block_begin[k * num_types];
+        std::size_t t = 0;
+        while (types[t + 1] <= b)
+            ++t;
+        std::size_t type = 0;
         for_each_batch(state, [&](auto &batch) {
-            if (k + 1 >= batch.colour_begin.size()) return;
-            parallel_for(state.scheduler, batch.colour_begin[k], batch.colour_begin[k + 1], joints_per_task,
-                         [&](std::uint32_t i) { fn(batch.solvers[i]); });
+            if (type++ != t) return;
+            auto first = batch.colour_begin[k] + (b - types[t]) * joints_per_task;
+            auto last = std::min(first + joints_per_task, batch.colour_begin[k + 1]);
+            for (auto i = first; i < last; ++i)
+                fn(batch.solvers[i]);
         });
-    }
+    });
 }
 
 } // namespace

@@ -2,14 +2,10 @@
 #include "contact_bundle_solver.hpp"
 #include "edyn/constraints/constraint_row.hpp"
 #include "edyn/parallel/parallel_for.hpp"
+#include "edyn/parallel/parallel_for_stages.hpp"
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
-#include <thread>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace edyn {
 
@@ -100,64 +96,25 @@ void number_colour_blocks(contact_solver_set &contacts) {
     contacts.block_begin.push_back(blocks);
 }
 
-// Spins until `done` reaches `target`, yielding the thread after a while.
-void wait_until(const std::atomic<std::uint32_t> &done, std::uint32_t target) {
-    for (unsigned spins = 0; done.load(std::memory_order_acquire) < target; ++spins) {
-        if (spins < 256) {
-#if defined(__SSE2__)
-            _mm_pause();
-#endif
-        } else {
-            std::this_thread::yield();
-        }
-    }
-}
-
 // Calls bundle(i) for every bundle i and single(k) for every constraint k solved on its own,
-// colour after colour, each colour's at once on the scheduler's threads; then the overflow, in
-// order on the calling thread.
-//
-// All colours are one task: each of its threads claims the next block (in the order of
-// number_colour_blocks) and, before working on it, waits until every block of the earlier
-// colours is done. So a pass costs one hand-over to the scheduler, not one per colour. Blocks are
-// claimed in order, so a thread only ever waits for blocks that running threads have claimed: the
-// pass cannot stall, however few of its ranges the scheduler runs at once.
+// colour after colour, each colour's at once on the scheduler's threads (all colours in one task,
+// see parallel_for_stages); then the overflow, in order on the calling thread.
 template<typename Bundle, typename Single>
 void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Bundle &&bundle,
                               Single &&single) {
-    auto item = [&](std::size_t k, std::uint32_t i) {
-        auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
-        if (i < num_bundles) {
-            bundle(contacts.bundle_begin[k] + i);
-        } else {
-            single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
-        }
-    };
     auto &blocks = contacts.block_begin;
-    auto num_blocks = blocks.empty() ? 0u : blocks.back();
-    auto threads = scheduler ? scheduler->concurrency() : 1u;
-    if (threads > 1 && num_blocks > 1) {
-        std::atomic<std::uint32_t> next_block{0}, blocks_done{0};
-        parallel_for(scheduler, 0u, threads, 1, [&](std::uint32_t) {
-            std::size_t k = 0;
-            for (auto b = next_block.fetch_add(1, std::memory_order_relaxed); b < num_blocks;
-                 b = next_block.fetch_add(1, std::memory_order_relaxed)) {
-                while (blocks[k + 1] <= b)
-                    ++k;
-                wait_until(blocks_done, blocks[k]);
-                auto first = (b - blocks[k]) * std::uint32_t(colour_items_per_task);
-                auto last = std::min(first + std::uint32_t(colour_items_per_task), colour_items(contacts, k));
-                for (auto i = first; i < last; ++i)
-                    item(k, i);
-                blocks_done.fetch_add(1, std::memory_order_release);
+    parallel_for_stages(scheduler, blocks, [&](std::size_t k, std::uint32_t b) {
+        auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
+        auto first = (b - blocks[k]) * std::uint32_t(colour_items_per_task);
+        auto last = std::min(first + std::uint32_t(colour_items_per_task), colour_items(contacts, k));
+        for (auto i = first; i < last; ++i) {
+            if (i < num_bundles) {
+                bundle(contacts.bundle_begin[k] + i);
+            } else {
+                single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
             }
-        });
-    } else {
-        for (std::size_t k = 0; k + 1 < blocks.size(); ++k) {
-            for (std::uint32_t i = 0, n = colour_items(contacts, k); i < n; ++i)
-                item(k, i);
         }
-    }
+    });
     auto size = static_cast<std::uint32_t>(contacts.constraints.size());
     auto &begin = contacts.colour_begin;
     for (auto k = begin.empty() ? 0u : begin.back(); k < size; ++k) {

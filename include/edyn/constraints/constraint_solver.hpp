@@ -78,6 +78,13 @@ struct constraint_solver_state {
     /// so that each colour's joints are solved at once on the scheduler's threads and the
     /// result is the same bit for bit.
     constraint_colouring colouring;
+    /// Each colour's joints cut into blocks for the scheduler's threads, numbered colour by colour
+    /// and within a colour type by type: colour k's joints of the t-th type are the blocks
+    /// [block_begin[k * T + t], block_begin[k * T + t + 1]), T the number of types, and one past
+    /// the last block ends the array. Filled by gather_constraints().
+    std::vector<std::uint32_t> block_begin;
+    /// The first block of each colour, then one past the last block (every T-th of block_begin).
+    std::vector<std::uint32_t> colour_block_begin;
     /// The threads each colour's joints are spread over. Null runs every pass on the calling
     /// thread. Not owned.
     task_scheduler *scheduler{nullptr};

@@ -1,0 +1,133 @@
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <edyn/parallel/parallel_for_stages.hpp>
+#include <gtest/gtest.h>
+#include <stdexcept>
+#include <vector>
+
+using namespace edyn;
+
+namespace {
+
+// Stages of 0 to 40 blocks; each block records, when it runs, how many blocks of earlier stages
+// had finished, and adds itself to the finished count when done.
+struct staged_run {
+    std::vector<std::uint32_t> stage_begin;
+    std::vector<std::atomic<int>> runs;
+    std::vector<int> finished_before;
+    std::atomic<std::uint32_t> finished{0};
+
+    explicit staged_run(std::vector<std::uint32_t> sizes)
+        : runs(total(sizes))
+        , finished_before(total(sizes), -1) {
+        stage_begin.push_back(0);
+        for (auto n : sizes)
+            stage_begin.push_back(stage_begin.back() + n);
+    }
+    static std::size_t total(const std::vector<std::uint32_t> &sizes) {
+        std::size_t n = 0;
+        for (auto s : sizes)
+            n += s;
+        return n;
+    }
+
+    void run(task_scheduler *scheduler) {
+        parallel_for_stages(scheduler, stage_begin, [&](std::size_t stage, std::uint32_t block) {
+            EXPECT_GE(block, stage_begin[stage]);
+            EXPECT_LT(block, stage_begin[stage + 1]);
+            finished_before[block] = int(finished.load());
+            runs[block].fetch_add(1);
+            finished.fetch_add(1);
+        });
+    }
+
+    // Every block ran once, after every block of the earlier stages.
+    void check() const {
+        for (std::size_t k = 0; k + 1 < stage_begin.size(); ++k) {
+            for (auto b = stage_begin[k]; b < stage_begin[k + 1]; ++b) {
+                EXPECT_EQ(runs[b].load(), 1) << "block " << b;
+                EXPECT_GE(finished_before[b], int(stage_begin[k])) << "block " << b << " of stage " << k;
+            }
+        }
+    }
+};
+
+// A program's scheduler that claims four threads but runs each task's ranges one at a time on
+// the calling thread, the last first.
+struct backwards {
+    struct task {
+        task_function fn;
+        void *context;
+        std::size_t count, grain;
+    };
+    task pending{};
+
+    static void *enqueue(task_function fn, void *context, std::size_t count, std::size_t grain, void *user) {
+        static_cast<backwards *>(user)->pending = {fn, context, count, grain};
+        return user;
+    }
+    static void wait(void *handle, void *) {
+        auto t = static_cast<backwards *>(handle)->pending;
+        for (auto r = (t.count + t.grain - 1) / t.grain; r-- > 0;)
+            t.fn(t.context, r * t.grain, std::min((r + 1) * t.grain, t.count));
+    }
+};
+
+} // namespace
+
+TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_thread_count) {
+    std::vector<std::uint32_t> sizes{3, 40, 0, 1, 17, 2, 0, 25, 1, 1, 9};
+    staged_run alone(sizes);
+    alone.run(nullptr);
+    alone.check();
+    // On the calling thread the blocks run in order.
+    for (std::size_t b = 0; b < alone.finished_before.size(); ++b)
+        EXPECT_EQ(alone.finished_before[b], int(b));
+
+    for (unsigned threads : {1u, 2u, 4u, 8u}) {
+        task_scheduler scheduler(threads);
+        for (int repeat = 0; repeat < 20; ++repeat) {
+            staged_run run(sizes);
+            run.run(&scheduler);
+            run.check();
+        }
+    }
+}
+
+// The threads wait within the task for the earlier stages: a scheduler that runs the task's
+// ranges one at a time, in reverse, must still see every block run, in stage order.
+TEST(parallel_for_stages, does_not_stall_on_a_scheduler_that_runs_one_range_at_a_time) {
+    backwards program;
+    task_scheduler scheduler(task_hooks{&backwards::enqueue, &backwards::wait, &program, 4});
+    staged_run run({5, 1, 12, 3});
+    run.run(&scheduler);
+    run.check();
+}
+
+TEST(parallel_for_stages, rethrows_the_first_exception_after_every_block_ran) {
+    std::vector<std::uint32_t> stage_begin{0, 10, 30};
+    for (unsigned threads : {1u, 4u}) {
+        task_scheduler scheduler(threads);
+        std::atomic<int> ran{0};
+        EXPECT_THROW(parallel_for_stages(&scheduler, stage_begin,
+                                         [&](std::size_t, std::uint32_t block) {
+                                             ran.fetch_add(1);
+                                             if (block == 3) throw std::runtime_error("block 3");
+                                         }),
+                     std::runtime_error);
+        EXPECT_EQ(ran.load(), 30) << "the blocks after the throwing one still ran, " << threads << " threads";
+    }
+}
+
+TEST(parallel_for_stages, no_stages_or_empty_stages_run_nothing) {
+    task_scheduler scheduler(2);
+    int calls = 0;
+    parallel_for_stages(&scheduler, std::vector<std::uint32_t>{},
+                        [&](std::size_t, std::uint32_t) { ++calls; });
+    parallel_for_stages(&scheduler, std::vector<std::uint32_t>{0},
+                        [&](std::size_t, std::uint32_t) { ++calls; });
+    parallel_for_stages(&scheduler, std::vector<std::uint32_t>{0, 0, 0},
+                        [&](std::size_t, std::uint32_t) { ++calls; });
+    EXPECT_EQ(calls, 0);
+}
