@@ -1,3 +1,4 @@
+#include "support/one_range_at_a_time.hpp"
 #include <algorithm>
 #include <cstring>
 #include <edyn/constraints/constraint_colouring.hpp>
@@ -259,36 +260,6 @@ TEST(constraint_colouring, coloured_contacts_solve_to_the_same_bits_as_in_order_
     }
 }
 
-namespace {
-
-// A program's scheduler that claims four threads but runs nothing at once: its wait hook runs
-// a task's ranges one after another on the calling thread, the last range first.
-struct one_by_one_backwards {
-    struct task {
-        task_function fn;
-        void *context;
-        std::size_t count, grain;
-    };
-    std::vector<task> pending;
-    unsigned tasks{0};
-
-    static void *enqueue(task_function fn, void *context, std::size_t count, std::size_t grain, void *user) {
-        auto &self = *static_cast<one_by_one_backwards *>(user);
-        self.pending.push_back({fn, context, count, grain});
-        ++self.tasks;
-        return &self.pending.back();
-    }
-    static void wait(void *handle, void *user) {
-        auto &self = *static_cast<one_by_one_backwards *>(user);
-        auto t = *static_cast<task *>(handle);
-        self.pending.pop_back();
-        for (auto r = (t.count + t.grain - 1) / t.grain; r-- > 0;)
-            t.fn(t.context, r * t.grain, std::min((r + 1) * t.grain, t.count));
-    }
-};
-
-} // namespace
-
 // Every colour is one task whose ranges wait for the earlier colours' work: whichever range runs
 // first claims that work, so a scheduler that runs the ranges one at a time, in any order,
 // neither stalls the passes nor changes a bit.
@@ -296,10 +267,8 @@ TEST(constraint_colouring, colours_solve_to_the_same_bits_on_a_scheduler_that_ru
     auto in_order = make_contacts(3000, 11, false);
     solve(in_order, nullptr);
 
-    one_by_one_backwards program;
-    program.pending.reserve(4);
-    task_scheduler scheduler(
-        task_hooks{&one_by_one_backwards::enqueue, &one_by_one_backwards::wait, &program, 4});
+    test::one_range_at_a_time program;
+    task_scheduler scheduler(program.hooks());
     auto coloured = make_contacts(3000, 11, true);
     solve(coloured, &scheduler);
     EXPECT_GT(program.tasks, 0u);

@@ -1,3 +1,4 @@
+#include "support/one_range_at_a_time.hpp"
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -53,27 +54,6 @@ struct staged_run {
     }
 };
 
-// A program's scheduler that claims four threads but runs each task's ranges one at a time on
-// the calling thread, the last first.
-struct backwards {
-    struct task {
-        task_function fn;
-        void *context;
-        std::size_t count, grain;
-    };
-    task pending{};
-
-    static void *enqueue(task_function fn, void *context, std::size_t count, std::size_t grain, void *user) {
-        static_cast<backwards *>(user)->pending = {fn, context, count, grain};
-        return user;
-    }
-    static void wait(void *handle, void *) {
-        auto t = static_cast<backwards *>(handle)->pending;
-        for (auto r = (t.count + t.grain - 1) / t.grain; r-- > 0;)
-            t.fn(t.context, r * t.grain, std::min((r + 1) * t.grain, t.count));
-    }
-};
-
 } // namespace
 
 TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_thread_count) {
@@ -98,8 +78,8 @@ TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_t
 // The threads wait within the task for the earlier stages: a scheduler that runs the task's
 // ranges one at a time, in reverse, must still see every block run, in stage order.
 TEST(parallel_for_stages, does_not_stall_on_a_scheduler_that_runs_one_range_at_a_time) {
-    backwards program;
-    task_scheduler scheduler(task_hooks{&backwards::enqueue, &backwards::wait, &program, 4});
+    test::one_range_at_a_time program;
+    task_scheduler scheduler(program.hooks());
     staged_run run({5, 1, 12, 3});
     run.run(&scheduler);
     run.check();
