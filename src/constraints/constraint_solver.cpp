@@ -104,7 +104,7 @@ namespace {
 // once on the scheduler's threads; all colours in one task (see parallel_for_stages).
 template<typename Fn>
 void for_each_in_colour_order(constraint_solver_state &state, Fn &&fn) {
-    parallel_for_stages(state.scheduler, state.colour_block_begin, [&](std::size_t k, std::uint32_t b) {
+    auto solve_block = [&](std::size_t k, std::uint32_t b) {
         auto *types = &state.block_begin[k * num_types];
         std::size_t t = 0;
         while (types[t + 1] <= b)
@@ -117,7 +117,8 @@ void for_each_in_colour_order(constraint_solver_state &state, Fn &&fn) {
             for (auto i = first; i < last; ++i)
                 fn(batch.solvers[i]);
         });
-    });
+    };
+    parallel_for_stages(state.scheduler, state.block_sync, state.colour_block_begin, solve_block);
 }
 
 } // namespace

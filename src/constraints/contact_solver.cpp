@@ -75,8 +75,12 @@ decltype(auto) with_fixed_side(const contact_solver_constraint &c, Fn &&fn) {
 
 // Constraints per parallel range: enough work to outweigh handing a range to a thread.
 constexpr std::size_t contacts_per_task = 64;
-// Bundles or single constraints per parallel range within a colour.
-constexpr std::size_t colour_items_per_task = 16;
+// Bundles or single constraints per block of a colour: about this many blocks per thread, so
+// that the threads finish a colour close together, but blocks no smaller than this, so that
+// taking one costs little beside its work, nor larger.
+constexpr std::uint32_t colour_blocks_per_thread = 4;
+constexpr std::uint32_t min_colour_block_items = 4;
+constexpr std::uint32_t max_colour_block_items = 32;
 
 // Number of bundles and single constraints of colour k.
 std::uint32_t colour_items(const contact_solver_set &contacts, std::size_t k) {
@@ -84,14 +88,20 @@ std::uint32_t colour_items(const contact_solver_set &contacts, std::size_t k) {
            contacts.single_begin[k];
 }
 
-// Cuts every colour's items into blocks of colour_items_per_task, numbered colour after colour:
-// colour k's blocks are [block_begin[k], block_begin[k + 1]).
-void number_colour_blocks(contact_solver_set &contacts) {
+// Cuts every colour's items into blocks for `threads` threads, numbered colour after colour:
+// colour k's blocks are [block_begin[k], block_begin[k + 1]), of block_items[k] items each
+// (the last may have fewer). The cut changes which thread solves what, never the result.
+void number_colour_blocks(contact_solver_set &contacts, std::uint32_t threads) {
     contacts.block_begin.clear();
+    contacts.block_items.clear();
     std::uint32_t blocks = 0;
     for (std::size_t k = 0; k + 1 < contacts.bundle_begin.size(); ++k) {
+        auto items = colour_items(contacts, k);
+        auto wanted = threads * colour_blocks_per_thread;
+        auto size = std::clamp((items + wanted - 1) / wanted, min_colour_block_items, max_colour_block_items);
         contacts.block_begin.push_back(blocks);
-        blocks += (colour_items(contacts, k) + colour_items_per_task - 1) / colour_items_per_task;
+        contacts.block_items.push_back(size);
+        blocks += (items + size - 1) / size;
     }
     contacts.block_begin.push_back(blocks);
 }
@@ -103,10 +113,10 @@ template<typename Bundle, typename Single>
 void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Bundle &&bundle,
                               Single &&single) {
     auto &blocks = contacts.block_begin;
-    parallel_for_stages(scheduler, blocks, [&](std::size_t k, std::uint32_t b) {
+    parallel_for_stages(scheduler, contacts.block_sync, blocks, [&](std::size_t k, std::uint32_t b) {
         auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
-        auto first = (b - blocks[k]) * std::uint32_t(colour_items_per_task);
-        auto last = std::min(first + std::uint32_t(colour_items_per_task), colour_items(contacts, k));
+        auto first = (b - blocks[k]) * contacts.block_items[k];
+        auto last = std::min(first + contacts.block_items[k], colour_items(contacts, k));
         for (auto i = first; i < last; ++i) {
             if (i < num_bundles) {
                 bundle(contacts.bundle_begin[k] + i);
@@ -171,7 +181,7 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
         }
     });
     detail::pack_contact_bundles(contacts, bodies, scheduler);
-    number_colour_blocks(contacts);
+    number_colour_blocks(contacts, scheduler ? scheduler->concurrency() : 1u);
 
     contacts.bouncy.clear();
     for (std::uint32_t k = 0; k < count; ++k) {

@@ -11,6 +11,7 @@
 #include "edyn/constraints/null_constraint.hpp"
 #include "edyn/constraints/point_constraint.hpp"
 #include "edyn/constraints/soft_distance_constraint.hpp"
+#include "edyn/parallel/parallel_for_stages.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include <cstdint>
 #include <span>
@@ -85,6 +86,8 @@ struct constraint_solver_state {
     std::vector<std::uint32_t> block_begin;
     /// The first block of each colour, then one past the last block (every T-th of block_begin).
     std::vector<std::uint32_t> colour_block_begin;
+    /// What the threads of a pass over those blocks share (see parallel_for_stages).
+    stage_sync block_sync;
     /// The threads each colour's joints are spread over. Null runs every pass on the calling
     /// thread. Not owned.
     task_scheduler *scheduler{nullptr};

@@ -3,6 +3,7 @@
 
 #include "edyn/constraints/contact_bundle.hpp"
 #include "edyn/dynamics/solver_body.hpp"
+#include "edyn/parallel/parallel_for_stages.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include <array>
 #include <cstdint>
@@ -151,6 +152,11 @@ struct contact_solver_set {
     /// The colours' bundles and single constraints cut into blocks for the scheduler's threads,
     /// numbered colour after colour: colour k's are [block_begin[k], block_begin[k + 1]).
     std::vector<std::uint32_t> block_begin;
+    /// Bundles and single constraints per block of each colour (a colour's last block may have
+    /// fewer): colours are cut to keep every thread busy, whatever their size.
+    std::vector<std::uint32_t> block_items;
+    /// What the threads of a pass over those blocks share (see parallel_for_stages).
+    mutable stage_sync block_sync;
     /// The constraints with restitution, in order: those solve_restitution() looks at. Listed
     /// by prepare_contacts().
     std::vector<std::uint32_t> bouncy;
@@ -170,6 +176,7 @@ struct contact_solver_set {
         singles.clear();
         single_begin.clear();
         block_begin.clear();
+        block_items.clear();
         bouncy.clear();
     }
     /// Appends `c` with `num_points` default points and returns the first of them.

@@ -33,8 +33,8 @@ struct staged_run {
         return n;
     }
 
-    void run(task_scheduler *scheduler) {
-        parallel_for_stages(scheduler, stage_begin, [&](std::size_t stage, std::uint32_t block) {
+    void run(task_scheduler *scheduler, stage_sync &sync) {
+        parallel_for_stages(scheduler, sync, stage_begin, [&](std::size_t stage, std::uint32_t block) {
             EXPECT_GE(block, stage_begin[stage]);
             EXPECT_LT(block, stage_begin[stage + 1]);
             finished_before[block] = int(finished.load());
@@ -58,8 +58,9 @@ struct staged_run {
 
 TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_thread_count) {
     std::vector<std::uint32_t> sizes{3, 40, 0, 1, 17, 2, 0, 25, 1, 1, 9};
+    stage_sync sync;
     staged_run alone(sizes);
-    alone.run(nullptr);
+    alone.run(nullptr, sync);
     alone.check();
     // On the calling thread the blocks run in order.
     for (std::size_t b = 0; b < alone.finished_before.size(); ++b)
@@ -69,7 +70,7 @@ TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_t
         task_scheduler scheduler(threads);
         for (int repeat = 0; repeat < 20; ++repeat) {
             staged_run run(sizes);
-            run.run(&scheduler);
+            run.run(&scheduler, sync);
             run.check();
         }
     }
@@ -80,8 +81,9 @@ TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_t
 TEST(parallel_for_stages, does_not_stall_on_a_scheduler_that_runs_one_range_at_a_time) {
     test::one_range_at_a_time program;
     task_scheduler scheduler(program.hooks());
+    stage_sync sync;
     staged_run run({5, 1, 12, 3});
-    run.run(&scheduler);
+    run.run(&scheduler, sync);
     run.check();
 }
 
@@ -90,7 +92,8 @@ TEST(parallel_for_stages, rethrows_the_first_exception_after_every_block_ran) {
     for (unsigned threads : {1u, 4u}) {
         task_scheduler scheduler(threads);
         std::atomic<int> ran{0};
-        EXPECT_THROW(parallel_for_stages(&scheduler, stage_begin,
+        stage_sync sync;
+        EXPECT_THROW(parallel_for_stages(&scheduler, sync, stage_begin,
                                          [&](std::size_t, std::uint32_t block) {
                                              ran.fetch_add(1);
                                              if (block == 3) throw std::runtime_error("block 3");
@@ -103,11 +106,12 @@ TEST(parallel_for_stages, rethrows_the_first_exception_after_every_block_ran) {
 TEST(parallel_for_stages, no_stages_or_empty_stages_run_nothing) {
     task_scheduler scheduler(2);
     int calls = 0;
-    parallel_for_stages(&scheduler, std::vector<std::uint32_t>{},
+    stage_sync sync;
+    parallel_for_stages(&scheduler, sync, std::vector<std::uint32_t>{},
                         [&](std::size_t, std::uint32_t) { ++calls; });
-    parallel_for_stages(&scheduler, std::vector<std::uint32_t>{0},
+    parallel_for_stages(&scheduler, sync, std::vector<std::uint32_t>{0},
                         [&](std::size_t, std::uint32_t) { ++calls; });
-    parallel_for_stages(&scheduler, std::vector<std::uint32_t>{0, 0, 0},
+    parallel_for_stages(&scheduler, sync, std::vector<std::uint32_t>{0, 0, 0},
                         [&](std::size_t, std::uint32_t) { ++calls; });
     EXPECT_EQ(calls, 0);
 }
