@@ -4,15 +4,17 @@
 namespace edyn {
 
 void constraint_colouring::reset(std::span<const solver_body> bodies) {
-    this->bodies = bodies;
-    next_colour.assign(bodies.size(), 0);
+    next_colour.resize(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        next_colour[i] = moves(bodies[i]) ? 0u : does_not_move;
     counts.clear();
 }
 
 std::uint32_t constraint_colouring::assign(solver_body_index a, solver_body_index b,
                                            std::uint32_t num_points) {
-    auto movesA = moves(bodies[a]), movesB = moves(bodies[b]);
-    auto colour = std::max(movesA ? next_colour[a] : 0u, movesB ? next_colour[b] : 0u);
+    auto nextA = next_colour[a], nextB = next_colour[b];
+    auto movesA = nextA != does_not_move, movesB = nextB != does_not_move;
+    auto colour = std::max(movesA ? nextA : 0u, movesB ? nextB : 0u);
     if (movesA) next_colour[a] = colour + 1;
     if (movesB) next_colour[b] = colour + 1;
     if (counts.size() <= colour) counts.resize(colour + 1);

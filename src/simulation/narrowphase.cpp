@@ -3,6 +3,7 @@
 #include "edyn/collision/manifold_update.hpp"
 #include "edyn/collision/shape_epoch.hpp"
 #include "edyn/config/assert.hpp"
+#include "edyn/config/prefetch.hpp"
 #include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
@@ -13,6 +14,7 @@
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 #include <algorithm>
+#include <iterator>
 
 namespace edyn {
 
@@ -136,6 +138,8 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
 constexpr std::size_t manifolds_per_task = 64;
 // Bodies per parallel range when their collision_body is gathered.
 constexpr std::size_t bodies_per_task = 256;
+// How many manifolds ahead collision asks for a manifold's bodies.
+constexpr std::size_t prefetch_distance = 8;
 
 } // namespace
 
@@ -143,12 +147,21 @@ void run_narrowphase(registry &registry, world_state &world) {
     auto &events = registry.ctx().emplace<contact_events>();
     bool record = events.has_listeners();
 
-    world.manifolds.clear();
-    for (auto e : registry.view<contact_manifold>(exclude<sleeping_tag>))
-        world.manifolds.push_back(e);
-    // The view yields the newest manifold first; solving in creation order is the natural and
-    // reproducible order.
-    std::reverse(world.manifolds.begin(), world.manifolds.end());
+    // The manifolds of bodies awake, in the pool's order (oldest first where none was destroyed):
+    // the natural and reproducible order. With nothing asleep, that is the pool itself.
+    auto &manifold_pool = registry.storage<contact_manifold>();
+    auto &sleeping = registry.storage<sleeping_tag>();
+    const entity *pooled = manifold_pool.data();
+    if (sleeping.empty()) {
+        // (Resized from last step's size, neither cleared nor assigned: growth stays geometric,
+        // so that a growing world soon stops reallocating.)
+        world.manifolds.resize(manifold_pool.size());
+        std::copy(pooled, pooled + manifold_pool.size(), world.manifolds.begin());
+    } else {
+        world.manifolds.clear();
+        std::copy_if(pooled, pooled + manifold_pool.size(), std::back_inserter(world.manifolds),
+                     [&](entity e) { return !sleeping.contains(e); });
+    }
 
     // What the manifolds read of their bodies, body by body...
     auto &proxies = world.broadphase;
@@ -165,16 +178,22 @@ void run_narrowphase(registry &registry, world_state &world) {
     // ...then collision, each manifold on its own (in parallel when a scheduler is there), and
     // the materials of its new points...
     auto dt = registry.ctx().get<settings>().fixed_dt;
-    auto &manifold_pool = registry.storage<contact_manifold>();
     world.manifold_changes.resize(world.manifolds.size());
+    auto num_manifolds = world.manifolds.size();
     auto collide_one = [&](std::size_t i) {
+        // The manifolds lie in storage order, but their bodies anywhere: the bodies of a
+        // manifold a few ahead are asked for now, to be in the cache when it comes.
+        if (i + prefetch_distance < num_manifolds) {
+            auto &ahead = manifold_pool.get(world.manifolds[i + prefetch_distance]);
+            prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
+            prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
+        }
         auto &manifold = manifold_pool.get(world.manifolds[i]);
         auto &changes = world.manifold_changes[i];
         changes = collide_manifold(registry, world, manifold, dt);
         fill_materials(registry, manifold, changes);
     };
-    parallel_for(world.scheduler.get(), std::size_t(0), world.manifolds.size(), manifolds_per_task,
-                 collide_one);
+    parallel_for(world.scheduler.get(), std::size_t(0), num_manifolds, manifolds_per_task, collide_one);
 
     // ...then what the registry shares, in the manifolds' order: events and islands. Only the
     // manifolds whose points came or went have any.

@@ -1,5 +1,6 @@
 #include "edyn/simulation/solve_step.hpp"
 #include "edyn/collision/contact_manifold.hpp"
+#include "edyn/config/prefetch.hpp"
 #include "edyn/constraints/constraint_colouring.hpp"
 #include "edyn/dynamics/integration.hpp"
 #include "edyn/dynamics/mass.hpp"
@@ -41,23 +42,35 @@ std::uint32_t roll_axes(const registry &registry, entity body, const vector3 &no
     });
 }
 
+// Bodies per parallel range in gather_bodies.
+constexpr std::size_t bodies_per_task = 256;
+
 } // namespace
 
 void gather_bodies(registry &registry, world_state &world, const settings &settings) {
-    world.bodies.clear();
     world.body_entities.clear();
-    world.bodies.emplace_back();
     world.body_entities.push_back(null);
 
+    // The bodies in the view's order, which numbers them...
     auto view = registry.view<rigidbody_tag, linvel, angvel, mass_inv, inertia_world_inv>(
         exclude<sleeping_tag, static_tag>);
+    std::size_t index_bound = 0;
     for (auto e : view) {
-        auto index = to_index(e);
-        if (world.body_index.size() <= index) world.body_index.resize(index + 1, 0);
-        world.body_index[index] = std::uint32_t(world.bodies.size());
         world.body_entities.push_back(e);
+        index_bound = std::max(index_bound, std::size_t(to_index(e)) + 1);
+    }
+    if (world.body_index.size() < index_bound) world.body_index.resize(index_bound, 0);
+    // (Resized from last step's size, not cleared first: growth stays geometric.) The first is
+    // the static body, which every body that does not move shares.
+    world.bodies.resize(world.body_entities.size());
+    world.bodies[0] = solver_body{};
 
-        solver_body body;
+    // ...then each body's state, at once on the scheduler's threads.
+    auto fill = [&](std::size_t i) {
+        auto e = world.body_entities[i];
+        world.body_index[to_index(e)] = std::uint32_t(i);
+        auto &body = world.bodies[i];
+        body = solver_body{};
         body.linvel = view.get<linvel>(e);
         body.angvel = view.get<angvel>(e);
         body.inv_mass = view.get<mass_inv>(e).s;
@@ -66,8 +79,8 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
             auto *g = registry.try_get<gravity>(e);
             body.acceleration = g ? static_cast<vector3>(*g) : settings.gravity;
         }
-        world.bodies.push_back(body);
-    }
+    };
+    parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), bodies_per_task, fill);
 }
 
 namespace {
@@ -112,7 +125,10 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
     // The narrowphase left the pivots in world space; offsets are from the centres of mass.
     auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
 
-    auto &c = world.contacts.constraints[world.contact_slots[source]];
+    auto &place = world.contact_places[source];
+    auto &c = world.contacts.constraints[place.constraint];
+    c.first_point = place.first_point;
+    c.num_points = place.num_points;
     c.body[0] = body_index_of(world.body_index, a);
     c.body[1] = body_index_of(world.body_index, b);
     c.friction = mixed.friction;
@@ -169,6 +185,22 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
 
 // Manifolds per parallel range in gather_contacts.
 constexpr std::size_t manifolds_per_task = 64;
+// How many manifolds ahead gather_contacts and write_back ask for a manifold's memory (twice as
+// far ahead) and, once it has come, for its bodies'.
+constexpr std::uint32_t prefetch_distance = 8;
+
+// A manifold up to its points' ids: what gathering and writing back read and write.
+void prefetch_manifold(const contact_manifold &manifold) {
+    prefetch(&manifold, offsetof(contact_manifold, last_collide));
+}
+
+// What gather_contact reads of the manifold `source`'s bodies.
+void prefetch_gather_bodies(const registry &registry, const contact_manifold &manifold) {
+    for (auto e : manifold.body) {
+        prefetch(&registry.get<position>(e), sizeof(position));
+        prefetch(&registry.get<material>(e), sizeof(material));
+    }
+}
 
 } // namespace
 
@@ -177,7 +209,8 @@ void gather_contacts(registry &registry, world_state &world) {
     auto *scheduler = world.scheduler.get();
 
     // The manifolds are solved island by island, in the order of each island's edges. What each
-    // edge needs from the registry is looked up at once on the scheduler's threads...
+    // edge needs from the registry is looked up at once on the scheduler's threads, a manifold
+    // asked for a few edges ahead...
     world.island_edges.clear();
     for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) {
         auto &edges = registry.get<island>(island_entity).edges;
@@ -185,7 +218,13 @@ void gather_contacts(registry &registry, world_state &world) {
     }
     auto num_edges = static_cast<std::uint32_t>(world.island_edges.size());
     world.edge_contacts.resize(num_edges);
+    auto &manifold_pool = registry.storage<contact_manifold>();
     parallel_for(scheduler, 0u, num_edges, manifolds_per_task, [&](std::uint32_t i) {
+        if (i + prefetch_distance < num_edges) {
+            if (auto *ahead = manifold_pool.try_get(world.island_edges[i + prefetch_distance])) {
+                prefetch(ahead);
+            }
+        }
         world.edge_contacts[i] = contact_of_edge(registry, world, world.island_edges[i]);
     });
 
@@ -205,23 +244,29 @@ void gather_contacts(registry &registry, world_state &world) {
     auto &contacts = world.contacts;
     world.colouring.colour_ranges(contacts.colour_begin);
     contacts.constraints.resize(contacts.colour_begin.back());
-    world.contact_slots.resize(world.contact_manifolds.size());
+    world.contact_places.resize(world.contact_manifolds.size());
     std::uint32_t num_points = 0, source = 0;
     for (auto &edge : world.edge_contacts) {
         if (edge.num_points == 0) continue;
         auto place = world.colouring.next_place(world.contact_colours[source], edge.num_points);
-        auto &c = contacts.constraints[place.constraint];
-        c.first_point = place.first_point;
-        c.num_points = edge.num_points;
-        world.contact_slots[source] = place.constraint;
+        world.contact_places[source] = {place.constraint, place.first_point, edge.num_points};
         num_points += edge.num_points;
         ++source;
     }
     contacts.points.resize(num_points);
     contacts.totals.resize(num_points);
 
-    parallel_for(scheduler, 0u, source, manifolds_per_task,
-                 [&](std::uint32_t k) { gather_contact(registry, world, k); });
+    // Manifolds are gathered in island order, which is no order in memory: each is asked for
+    // ahead, then its bodies.
+    parallel_for(scheduler, 0u, source, manifolds_per_task, [&](std::uint32_t k) {
+        if (k + 2 * prefetch_distance < source)
+            prefetch_manifold(manifold_pool.get(world.contact_manifolds[k + 2 * prefetch_distance]));
+        if (k + prefetch_distance < source) {
+            auto &ahead = manifold_pool.get(world.contact_manifolds[k + prefetch_distance]);
+            prefetch_gather_bodies(registry, ahead);
+        }
+        gather_contact(registry, world, k);
+    });
 }
 
 void solve_constraints(world_state &world, const settings &settings) {
@@ -302,10 +347,15 @@ void write_back(registry &registry, world_state &world, scalar dt) {
                  });
 
     auto &constraints = world.contacts.constraints;
+    auto &manifold_pool = registry.storage<contact_manifold>();
     parallel_for(
         world.scheduler.get(), std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
+            if (k + prefetch_distance < constraints.size()) {
+                auto ahead = world.contact_manifolds[constraints[k + prefetch_distance].source];
+                prefetch_manifold(manifold_pool.get(ahead));
+            }
             auto &c = constraints[k];
-            auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[c.source]);
+            auto &manifold = manifold_pool.get(world.contact_manifolds[c.source]);
             for (std::uint32_t i = 0; i < c.num_points; ++i) {
                 auto &p = world.contacts.points[c.first_point + i];
                 auto &t = world.contacts.totals[c.first_point + i];

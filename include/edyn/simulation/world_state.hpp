@@ -62,8 +62,14 @@ struct world_state {
     std::vector<entity> contact_manifolds;
     /// The colour each of contact_manifolds was given.
     std::vector<std::uint32_t> contact_colours;
+    /// Where a contact's constraint and points go in `contacts`.
+    struct contact_place {
+        std::uint32_t constraint{0};  ///< Index of its constraint in contacts.constraints.
+        std::uint32_t first_point{0}; ///< Index of its first point in contacts.points.
+        std::uint32_t num_points{0};  ///< Its number of points.
+    };
     /// The place of each of contact_manifolds' constraints in `contacts`.
-    std::vector<std::uint32_t> contact_slots;
+    std::vector<contact_place> contact_places;
     /// Assigns colours to contacts, so that those of one colour share no moving body.
     constraint_colouring colouring;
     /// The joints (non-contact constraints) being solved.
@@ -71,7 +77,8 @@ struct world_state {
 
     /// What the narrowphase reads of a body with a broadphase proxy, gathered once a step so
     /// that its loop over the manifolds looks nothing up in the registry.
-    struct collision_body {
+    /// One cache line each: the narrowphase reads two per manifold, in no predictable order.
+    struct alignas(64) collision_body {
         vector3 origin{vector3_zero};                ///< get_rigidbody_origin (m).
         quaternion orientation{quaternion_identity}; ///< The body's orientation.
         vector3 linvel{vector3_zero};                ///< Zero unless it has both velocities (m/s).
