@@ -4,19 +4,25 @@
 namespace edyn {
 
 void constraint_colouring::reset(std::span<const solver_body> bodies) {
-    next_colour.resize(bodies.size());
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-        next_colour[i] = moves(bodies[i]) ? 0u : does_not_move;
+    this->bodies = bodies;
+    next_colour.clear();
     counts.clear();
 }
 
 std::uint32_t constraint_colouring::assign(solver_body_index a, solver_body_index b,
                                            std::uint32_t num_points) {
-    auto nextA = next_colour[a], nextB = next_colour[b];
+    // Whether each body moves is read once a colouring, in one pass, at its first constraint (a
+    // colouring without constraints reads nothing).
+    if (next_colour.size() != bodies.size()) {
+        next_colour.resize(bodies.size());
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+            next_colour[i] = moves(bodies[i]) ? 0u : does_not_move;
+    }
+    auto &nextA = next_colour[a], &nextB = next_colour[b];
     auto movesA = nextA != does_not_move, movesB = nextB != does_not_move;
     auto colour = std::max(movesA ? nextA : 0u, movesB ? nextB : 0u);
-    if (movesA) next_colour[a] = colour + 1;
-    if (movesB) next_colour[b] = colour + 1;
+    if (movesA) nextA = colour + 1;
+    if (movesB) nextB = colour + 1;
     if (counts.size() <= colour) counts.resize(colour + 1);
     ++counts[colour].constraints;
     counts[colour].points += num_points;

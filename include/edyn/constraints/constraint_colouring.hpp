@@ -27,7 +27,8 @@ namespace edyn {
 /// at a time.
 class constraint_colouring {
 public:
-    /// Starts a new colouring for these bodies (only whether they move is read, here).
+    /// Starts a new colouring for these bodies, which must outlive it (only whether they move
+    /// is read).
     /// @param bodies The step's solver bodies, indexed by solver_body_index.
     void reset(std::span<const solver_body> bodies);
 
@@ -71,8 +72,9 @@ private:
     };
     /// next_colour of a body that does not move: it orders nothing.
     static constexpr std::uint32_t does_not_move = ~std::uint32_t(0);
-    /// Per body: one more than the highest colour it took, or does_not_move. Whether a body
-    /// moves is read once, in reset(), not at every constraint.
+    std::span<const solver_body> bodies;
+    /// Per body: one more than the highest colour it took, or does_not_move; empty until the
+    /// colouring's first constraint. Whether a body moves is read once, not at every constraint.
     std::vector<std::uint32_t> next_colour;
     std::vector<colour_count> counts; ///< Per colour, then per colour the next free place.
 };
