@@ -76,6 +76,21 @@ TEST(parallel_for_stages, runs_each_block_once_after_the_earlier_stages_on_any_t
     }
 }
 
+// One stage_sync serves calls of any layout, one after another: it grows for more blocks and
+// stages, and a block taken in one call is free again in the next.
+TEST(parallel_for_stages, one_sync_serves_calls_of_growing_and_shrinking_layouts) {
+    task_scheduler scheduler(4);
+    stage_sync sync;
+    for (auto sizes : std::vector<std::vector<std::uint32_t>>{
+             {2, 3}, {40, 1, 0, 30, 7, 12, 5}, {1, 1}, {64, 64, 64, 64}, {3}, {0, 9, 0, 2}}) {
+        for (int repeat = 0; repeat < 3; ++repeat) {
+            staged_run run(sizes);
+            run.run(&scheduler, sync);
+            run.check();
+        }
+    }
+}
+
 // The threads wait within the task for the earlier stages: a scheduler that runs the task's
 // ranges one at a time, in reverse, must still see every block run, in stage order.
 TEST(parallel_for_stages, does_not_stall_on_a_scheduler_that_runs_one_range_at_a_time) {
