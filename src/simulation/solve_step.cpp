@@ -194,7 +194,7 @@ void prefetch_manifold(const contact_manifold &manifold) {
     prefetch(&manifold, offsetof(contact_manifold, last_collide));
 }
 
-// What gather_contact reads of the manifold `source`'s bodies.
+// What gather_contact reads of a manifold's bodies.
 void prefetch_gather_bodies(const registry &registry, const contact_manifold &manifold) {
     for (auto e : manifold.body) {
         prefetch(&registry.get<position>(e), sizeof(position));
@@ -232,36 +232,38 @@ void gather_contacts(registry &registry, world_state &world) {
     // those of the earlier contacts it shares a moving body with.
     world.contact_manifolds.clear();
     world.contact_colours.clear();
+    world.contact_places.clear();
     world.colouring.reset(world.bodies);
     for (std::uint32_t i = 0; i < num_edges; ++i) {
         auto &edge = world.edge_contacts[i];
         if (edge.num_points == 0) continue;
         world.contact_manifolds.push_back(world.island_edges[i]);
         world.contact_colours.push_back(world.colouring.assign(edge.body[0], edge.body[1], edge.num_points));
+        world.contact_places.push_back({0, 0, edge.num_points});
     }
 
     // Then each manifold's place: colours in order, in the order found within a colour.
     auto &contacts = world.contacts;
     world.colouring.colour_ranges(contacts.colour_begin);
     contacts.constraints.resize(contacts.colour_begin.back());
-    world.contact_places.resize(world.contact_manifolds.size());
-    std::uint32_t num_points = 0, source = 0;
-    for (auto &edge : world.edge_contacts) {
-        if (edge.num_points == 0) continue;
-        auto place = world.colouring.next_place(world.contact_colours[source], edge.num_points);
-        world.contact_places[source] = {place.constraint, place.first_point, edge.num_points};
-        num_points += edge.num_points;
-        ++source;
+    auto num_contacts = static_cast<std::uint32_t>(world.contact_manifolds.size());
+    std::uint32_t num_points = 0;
+    for (std::uint32_t k = 0; k < num_contacts; ++k) {
+        auto &place = world.contact_places[k];
+        auto found = world.colouring.next_place(world.contact_colours[k], place.num_points);
+        place.constraint = found.constraint;
+        place.first_point = found.first_point;
+        num_points += place.num_points;
     }
     contacts.points.resize(num_points);
     contacts.totals.resize(num_points);
 
     // Manifolds are gathered in island order, which is no order in memory: each is asked for
     // ahead, then its bodies.
-    parallel_for(scheduler, 0u, source, manifolds_per_task, [&](std::uint32_t k) {
-        if (k + 2 * prefetch_distance < source)
+    parallel_for(scheduler, 0u, num_contacts, manifolds_per_task, [&](std::uint32_t k) {
+        if (k + 2 * prefetch_distance < num_contacts)
             prefetch_manifold(manifold_pool.get(world.contact_manifolds[k + 2 * prefetch_distance]));
-        if (k + prefetch_distance < source) {
+        if (k + prefetch_distance < num_contacts) {
             auto &ahead = manifold_pool.get(world.contact_manifolds[k + prefetch_distance]);
             prefetch_gather_bodies(registry, ahead);
         }
