@@ -63,8 +63,8 @@ void fill_materials(const registry &registry, contact_manifold &manifold,
         set_material(manifold.point[changes.created[i]], mixed);
 }
 
-// What collide_manifold reads of a body, from the registry.
-world_state::collision_body collision_body_of(const registry &registry, entity e) {
+// What collide_manifold reads of a body, from the registry and its AABB component.
+world_state::collision_body collision_body_of(const registry &registry, entity e, const AABB &aabb) {
     world_state::collision_body body;
     body.dynamic = registry.all_of<dynamic_tag>(e);
     body.resting = registry.any_of<static_tag, sleeping_tag>(e);
@@ -79,8 +79,7 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
     auto *av = registry.try_get<angvel>(e);
     if (lv && av) {
         body.linvel = *lv;
-        auto *aabb = registry.try_get<AABB>(e);
-        body.spin_reach = aabb ? length(*av) * length(aabb_half_extents(*aabb)) : scalar(0);
+        body.spin_reach = length(*av) * length(aabb_half_extents(aabb));
     }
     return body;
 }
@@ -116,6 +115,17 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
     }
     if (can_reuse_contacts(manifold, tf, approach, epochs)) {
         return refresh_contact_manifold(manifold, tf);
+    }
+    // A pair without points whose boxes lie farther apart than the threshold gets none now
+    // either: each box holds its body's shape where the last step left it, so the shapes are at
+    // least as far apart. (Most pairs of a large heap are such neighbours, which the
+    // broadphase's fat boxes keep together long after their shapes parted.)
+    auto &aabbA = world.collision_aabbs[to_index(a)];
+    auto &aabbB = world.collision_aabbs[to_index(b)];
+    if (manifold.num_points == 0 &&
+        !intersect(inset(aabbA, vector3_one * manifold.separation_threshold), aabbB)) {
+        remember_collide(manifold, tf, epochs);
+        return {};
     }
     collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
     collision_result result;
@@ -168,11 +178,17 @@ void run_narrowphase(registry &registry, world_state &world) {
     std::size_t index_bound = 0;
     for (std::size_t i = 0; i < proxies.num_proxies(); ++i)
         index_bound = std::max(index_bound, std::size_t(to_index(proxies.proxy_body(i))) + 1);
-    if (world.collision_bodies.size() < index_bound) world.collision_bodies.resize(index_bound);
+    if (world.collision_bodies.size() < index_bound) {
+        world.collision_bodies.resize(index_bound);
+        world.collision_aabbs.resize(index_bound);
+    }
     parallel_for(world.scheduler.get(), std::size_t(0), proxies.num_proxies(), bodies_per_task,
                  [&](std::size_t i) {
                      auto e = proxies.proxy_body(i);
-                     world.collision_bodies[to_index(e)] = collision_body_of(registry, e);
+                     // Every body with a proxy has an AABB component (the broadphase reads it).
+                     auto &aabb = world.collision_aabbs[to_index(e)];
+                     aabb = registry.get<AABB>(e);
+                     world.collision_bodies[to_index(e)] = collision_body_of(registry, e, aabb);
                  });
 
     // ...then collision, each manifold on its own (in parallel when a scheduler is there), and

@@ -135,7 +135,9 @@ void rigidbody_apply_impulse(registry &registry, entity entity, const vector3 &i
 /// Recomputes the body's AABB component from its shape and current transform.
 /// Bodies without a shape are left alone. The step does this itself, and so does an attached
 /// registry when position or orientation is changed with `replace` or `patch`; call it after
-/// assigning them some other way, when the AABB must be right before the next step.
+/// assigning them some other way, when the AABB must be right before the next step. The step
+/// trusts it: the broadphase pairs bodies by it, and the narrowphase skips a pair without
+/// contact points whose AABBs lie farther apart than the contact threshold.
 /// @param registry The registry the body lives in.
 /// @param entity A rigid body; not checked, other than by assertions in debug builds.
 void update_rigidbody_aabb(registry &registry, entity entity);

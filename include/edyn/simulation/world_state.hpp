@@ -10,6 +10,7 @@
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/parallel/background_tasks.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
+#include "edyn/shapes/aabb.hpp"
 #include "edyn/simulation/island_manager.hpp"
 #include <cstdint>
 #include <memory>
@@ -90,6 +91,9 @@ struct world_state {
     };
     /// The collision_body of every body with a proxy, by entity index (others are stale).
     std::vector<collision_body> collision_bodies;
+    /// The AABB component of every body with a proxy, by entity index as `collision_bodies`:
+    /// apart from it because only pairs without points read it.
+    std::vector<AABB> collision_aabbs;
     /// Manifold entities in the order the narrowphase visits them.
     std::vector<entity> manifolds;
     /// What changed in each of `manifolds` this step.
