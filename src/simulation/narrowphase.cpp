@@ -203,6 +203,9 @@ void run_narrowphase(registry &registry, world_state &world) {
             auto &ahead = manifold_pool.get(world.manifolds[i + prefetch_distance]);
             prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
             prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
+            for (std::uint32_t k = 0; k < ahead.num_points; ++k)
+                prefetch(&ahead.point[ahead.ids[k]], sizeof(contact_point));
+            prefetch(&ahead.last_collide, sizeof(ahead.last_collide));
         }
         auto &manifold = manifold_pool.get(world.manifolds[i]);
         auto &changes = world.manifold_changes[i];
