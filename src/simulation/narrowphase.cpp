@@ -203,9 +203,11 @@ void run_narrowphase(registry &registry, world_state &world) {
             auto &ahead = manifold_pool.get(world.manifolds[i + prefetch_distance]);
             prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
             prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
+            // Its first two lines hold what every visit reads, each point's first two what a
+            // refresh reads and writes.
+            prefetch(&ahead, offsetof(contact_manifold, point));
             for (std::uint32_t k = 0; k < ahead.num_points; ++k)
-                prefetch(&ahead.point[ahead.ids[k]], sizeof(contact_point));
-            prefetch(&ahead.last_collide, sizeof(ahead.last_collide));
+                prefetch(&ahead.point[ahead.ids[k]], 2 * cache_line_size);
         }
         auto &manifold = manifold_pool.get(world.manifolds[i]);
         auto &changes = world.manifold_changes[i];

@@ -189,9 +189,18 @@ constexpr std::size_t manifolds_per_task = 64;
 // far ahead) and, once it has come, for its bodies'.
 constexpr std::uint32_t prefetch_distance = 8;
 
-// A manifold up to its points' ids: what gathering and writing back read and write.
-void prefetch_manifold(const contact_manifold &manifold) {
-    prefetch(&manifold, offsetof(contact_manifold, last_collide));
+// A manifold's first cache line: its bodies, point count and point ids.
+void prefetch_manifold_head(const contact_manifold &manifold) { prefetch(&manifold, cache_line_size); }
+
+// The live points of a manifold whose first line has come: gathering reads their geometry and
+// warm start (their first two lines), writing back their warm start and impulses (the second).
+void prefetch_gather_points(const contact_manifold &manifold) {
+    for (std::uint32_t i = 0; i < manifold.num_points; ++i)
+        prefetch(&manifold.point[manifold.ids[i]], 2 * cache_line_size);
+}
+void prefetch_write_back_points(const contact_manifold &manifold) {
+    for (std::uint32_t i = 0; i < manifold.num_points; ++i)
+        prefetch(&manifold.point[manifold.ids[i]].lifetime, cache_line_size);
 }
 
 // What gather_contact reads of a manifold's bodies.
@@ -262,9 +271,10 @@ void gather_contacts(registry &registry, world_state &world) {
     // ahead, then its bodies.
     parallel_for(scheduler, 0u, num_contacts, manifolds_per_task, [&](std::uint32_t k) {
         if (k + 2 * prefetch_distance < num_contacts)
-            prefetch_manifold(manifold_pool.get(world.contact_manifolds[k + 2 * prefetch_distance]));
+            prefetch_manifold_head(manifold_pool.get(world.contact_manifolds[k + 2 * prefetch_distance]));
         if (k + prefetch_distance < num_contacts) {
             auto &ahead = manifold_pool.get(world.contact_manifolds[k + prefetch_distance]);
+            prefetch_gather_points(ahead);
             prefetch_gather_bodies(registry, ahead);
         }
         gather_contact(registry, world, k);
@@ -352,9 +362,13 @@ void write_back(registry &registry, world_state &world, scalar dt) {
     auto &manifold_pool = registry.storage<contact_manifold>();
     parallel_for(
         world.scheduler.get(), std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
+            if (k + 2 * prefetch_distance < constraints.size()) {
+                auto ahead = world.contact_manifolds[constraints[k + 2 * prefetch_distance].source];
+                prefetch_manifold_head(manifold_pool.get(ahead));
+            }
             if (k + prefetch_distance < constraints.size()) {
                 auto ahead = world.contact_manifolds[constraints[k + prefetch_distance].source];
-                prefetch_manifold(manifold_pool.get(ahead));
+                prefetch_write_back_points(manifold_pool.get(ahead));
             }
             auto &c = constraints[k];
             auto &manifold = manifold_pool.get(world.contact_manifolds[c.source]);

@@ -58,11 +58,20 @@ struct contact_manifold {
     scalar separation_threshold{contact_breaking_threshold};
     /// Number of live points, at the front of `ids` (0 by default).
     std::uint32_t num_points{0};
-    /// Point slots, indexed by point id; only the slots listed in the first `num_points` entries
-    /// of `ids` are live.
-    std::array<contact_point, max_contacts> point{};
     /// Ids of the live points first (the first `num_points` entries), then the free ones.
     std::array<id_type, max_contacts> ids{0, 1, 2, 3};
+
+    /// Whether either body's shape may give each contact point a material of its own (a triangle
+    /// mesh with per-vertex friction or restitution, or a paged mesh: see
+    /// has_per_vertex_material), worked out by the narrowphase the first time it collides the
+    /// pair and again after either body's shape changed (its shape_epoch), so that the step does
+    /// not look both bodies' shapes up for every manifold. Written by the engine.
+    struct material_snapshot {
+        /// Shape epochs of A and B when `per_vertex` was worked out.
+        shape_epoch_pair shape_epochs{0, 0};
+        bool known{false};      ///< Whether `per_vertex` has been worked out yet.
+        bool per_vertex{false}; ///< Whether per-point materials may apply to the pair.
+    } point_materials;          ///< Whether the points have materials of their own.
 
     /// The bodies' origins, orientations and shape epochs when collide() last ran for this
     /// pair, for deciding whether the points can be reused (see contact_reuse_max_distance).
@@ -76,17 +85,10 @@ struct contact_manifold {
         bool valid{false};                   ///< Whether collide() has run for the pair yet.
     } last_collide;                          ///< The state at the last collide() of this pair.
 
-    /// Whether either body's shape may give each contact point a material of its own (a triangle
-    /// mesh with per-vertex friction or restitution, or a paged mesh: see
-    /// has_per_vertex_material), worked out by the narrowphase the first time it collides the
-    /// pair and again after either body's shape changed (its shape_epoch), so that the step does
-    /// not look both bodies' shapes up for every manifold. Written by the engine.
-    struct material_snapshot {
-        /// Shape epochs of A and B when `per_vertex` was worked out.
-        shape_epoch_pair shape_epochs{0, 0};
-        bool known{false};      ///< Whether `per_vertex` has been worked out yet.
-        bool per_vertex{false}; ///< Whether per-point materials may apply to the pair.
-    } point_materials;          ///< Whether the points have materials of their own.
+    /// Point slots, indexed by point id; only the slots listed in the first `num_points` entries
+    /// of `ids` are live. (Last, each on whole cache lines: everything above, which every
+    /// visit reads, shares the manifold's first two.)
+    std::array<contact_point, max_contacts> point{};
 
     /// Calls `fn(contact_point &)` for each live point, in `ids` order.
     /// @param fn Callable taking a `contact_point &`.

@@ -15,7 +15,7 @@ namespace edyn {
 /// solvers write the impulses; read it, e.g. in a collision event listener
 /// (`manifold.point[manifold.ids[i]]`). The impulses survive from step to step while the point
 /// is matched, which is what warm starting feeds on.
-struct contact_point {
+struct alignas(64) contact_point {
     /// Contact point on body A, in A's object space relative to its origin (not its centre of
     /// mass), in metres; zero by default.
     vector3 pivotA{vector3_zero};
@@ -29,6 +29,21 @@ struct contact_point {
     vector3 positionA{vector3_zero};
     /// Pivot B in world space when the manifold was last updated (m), for the solver.
     vector3 positionB{vector3_zero};
+
+    // What the solver reads and writes every step, kept to two cache lines: the geometry
+    // above, then the following line of lifetime, warm start and impulses.
+
+    /// Number of steps the point has existed (0 in the step it was created).
+    std::uint32_t lifetime{0};
+
+    /// The impulses of the last step's final sub-step: the solver's first guess for the next
+    /// step (warm starting). Internal; read the impulses of contact_point instead.
+    struct warm_start_impulses {
+        scalar normal{0};                     ///< Normal impulse (N·s).
+        std::array<scalar, 2> friction{0, 0}; ///< Friction impulses along the two tangents (N·s).
+        scalar spin{0};                       ///< Spinning friction angular impulse (N·m·s).
+        std::array<scalar, 2> roll{0, 0};     ///< Rolling friction angular impulses (N·m·s).
+    } warm_start;                             ///< Warm-starting impulses (engine internal).
 
     /// Normal impulse applied by the constraint solver over the whole last step, all its
     /// sub-steps (N·s).
@@ -57,15 +72,6 @@ struct contact_point {
     /// Spinning friction angular impulse over the last step about the normal (N·m·s).
     scalar spin_friction_impulse{0};
 
-    /// The impulses of the last step's final sub-step: the solver's first guess for the next
-    /// step (warm starting). Internal; read the impulses of contact_point instead.
-    struct warm_start_impulses {
-        scalar normal{0};                     ///< Normal impulse (N·s).
-        std::array<scalar, 2> friction{0, 0}; ///< Friction impulses along the two tangents (N·s).
-        scalar spin{0};                       ///< Spinning friction angular impulse (N·m·s).
-        std::array<scalar, 2> roll{0, 0};     ///< Rolling friction angular impulses (N·m·s).
-    } warm_start;                             ///< Warm-starting impulses (engine internal).
-
     /// Friction coefficient mixed from both bodies' materials for this point (dimensionless).
     ///
     /// Per point because triangle meshes may carry per-vertex materials.
@@ -82,9 +88,6 @@ struct contact_point {
     /// Contact damping mixed for this point (N·s/m); `large_scalar` (infinite), the default, for
     /// a rigid contact or to use the solver's damping ratio.
     scalar damping{large_scalar};
-
-    /// Number of steps the point has existed (0 in the step it was created).
-    std::uint32_t lifetime{0};
 
     /// Closest feature on body A, when the collision routine provides it.
     std::optional<collision_feature> featureA;
