@@ -14,7 +14,6 @@
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 #include <algorithm>
-#include <iterator>
 
 namespace edyn {
 
@@ -162,16 +161,19 @@ void run_narrowphase(registry &registry, world_state &world) {
     auto &manifold_pool = registry.storage<contact_manifold>();
     auto &sleeping = registry.storage<sleeping_tag>();
     const entity *pooled = manifold_pool.data();
-    if (sleeping.empty()) {
-        // (Resized from last step's size, neither cleared nor assigned: growth stays geometric,
-        // so that a growing world soon stops reallocating.)
-        world.manifolds.resize(manifold_pool.size());
-        std::copy(pooled, pooled + manifold_pool.size(), world.manifolds.begin());
-    } else {
-        world.manifolds.clear();
-        std::copy_if(pooled, pooled + manifold_pool.size(), std::back_inserter(world.manifolds),
-                     [&](entity e) { return !sleeping.contains(e); });
+    // (Resized from last step's size, neither cleared nor assigned: growth stays geometric, so
+    // that a growing world soon stops reallocating.)
+    world.manifolds.resize(manifold_pool.size());
+    world.manifold_slots.resize(manifold_pool.size());
+    std::size_t num_manifolds = 0;
+    for (std::uint32_t slot = 0; slot < manifold_pool.size(); ++slot) {
+        if (!sleeping.empty() && sleeping.contains(pooled[slot])) continue;
+        world.manifolds[num_manifolds] = pooled[slot];
+        world.manifold_slots[num_manifolds] = slot;
+        ++num_manifolds;
     }
+    world.manifolds.resize(num_manifolds);
+    world.manifold_slots.resize(num_manifolds);
 
     // What the manifolds read of their bodies, body by body...
     auto &proxies = world.broadphase;
@@ -194,13 +196,12 @@ void run_narrowphase(registry &registry, world_state &world) {
     // ...then collision, each manifold on its own (in parallel when a scheduler is there), and
     // the materials of its new points...
     auto dt = registry.ctx().get<settings>().fixed_dt;
-    world.manifold_changes.resize(world.manifolds.size());
-    auto num_manifolds = world.manifolds.size();
+    world.manifold_changes.resize(num_manifolds);
     auto collide_one = [&](std::size_t i) {
         // The manifolds lie in storage order, but their bodies anywhere: the bodies of a
         // manifold a few ahead are asked for now, to be in the cache when it comes.
         if (i + prefetch_distance < num_manifolds) {
-            auto &ahead = manifold_pool.get(world.manifolds[i + prefetch_distance]);
+            auto &ahead = manifold_pool.value_at(world.manifold_slots[i + prefetch_distance]);
             prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
             prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
             // Its first two lines hold what every visit reads, each point's first two what a
@@ -209,7 +210,7 @@ void run_narrowphase(registry &registry, world_state &world) {
             for (std::uint32_t k = 0; k < ahead.num_points; ++k)
                 prefetch(&ahead.point[ahead.ids[k]], 2 * cache_line_size);
         }
-        auto &manifold = manifold_pool.get(world.manifolds[i]);
+        auto &manifold = manifold_pool.value_at(world.manifold_slots[i]);
         auto &changes = world.manifold_changes[i];
         changes = collide_manifold(registry, world, manifold, dt);
         fill_materials(registry, manifold, changes);
@@ -218,7 +219,7 @@ void run_narrowphase(registry &registry, world_state &world) {
 
     // ...then what the registry shares, in the manifolds' order: events and islands. Only the
     // manifolds whose points came or went have any.
-    for (std::size_t i = 0; i < world.manifolds.size(); ++i) {
+    for (std::size_t i = 0; i < num_manifolds; ++i) {
         auto &changes = world.manifold_changes[i];
         if (changes.num_created == 0 && changes.num_destroyed == 0) continue;
         auto manifold_entity = world.manifolds[i];

@@ -106,26 +106,27 @@ void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
 // the edge is not a contact to solve (a joint, a manifold without points, a sensor's, or one
 // between two bodies that do not move).
 world_state::edge_contact contact_of_edge(const registry &registry, const world_state &world, entity edge) {
-    auto *manifold = registry.try_get<contact_manifold>(edge);
+    auto &manifold_pool = registry.storage<contact_manifold>();
+    auto *manifold = manifold_pool.try_get(edge);
     if (!manifold || manifold->num_points == 0) return {};
     auto a = manifold->body[0], b = manifold->body[1];
     if (!registry.all_of<material>(a) || !registry.all_of<material>(b)) return {}; // a sensor
     auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
     if (ia == static_solver_body && ib == static_solver_body) return {};
-    return {{ia, ib}, manifold->num_points};
+    return {{ia, ib}, manifold->num_points, static_cast<std::uint32_t>(manifold_pool.index(edge))};
 }
 
 // Fills the constraint the manifold `source` was given a place for, and its points, from the
 // manifold, the mixed material and last step's impulses. Reads the registry and writes only the
 // constraint and its points: manifolds are gathered at once on the scheduler's threads.
 void gather_contact(const registry &registry, world_state &world, std::uint32_t source) {
-    auto &manifold = registry.get<contact_manifold>(world.contact_manifolds[source]);
+    auto &place = world.contact_places[source];
+    auto &manifold = registry.storage<contact_manifold>().value_at(place.slot);
     auto a = manifold.body[0], b = manifold.body[1];
     auto mixed = get_mixed_material(registry, registry.get<material>(a), registry.get<material>(b));
     // The narrowphase left the pivots in world space; offsets are from the centres of mass.
     auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
 
-    auto &place = world.contact_places[source];
     auto &c = world.contacts.constraints[place.constraint];
     c.first_point = place.first_point;
     c.num_points = place.num_points;
@@ -248,7 +249,7 @@ void gather_contacts(registry &registry, world_state &world) {
         if (edge.num_points == 0) continue;
         world.contact_manifolds.push_back(world.island_edges[i]);
         world.contact_colours.push_back(world.colouring.assign(edge.body[0], edge.body[1], edge.num_points));
-        world.contact_places.push_back({0, 0, edge.num_points});
+        world.contact_places.push_back({0, 0, edge.num_points, edge.slot});
     }
 
     // Then each manifold's place: colours in order, in the order found within a colour.
@@ -271,9 +272,10 @@ void gather_contacts(registry &registry, world_state &world) {
     // ahead, then its bodies.
     parallel_for(scheduler, 0u, num_contacts, manifolds_per_task, [&](std::uint32_t k) {
         if (k + 2 * prefetch_distance < num_contacts)
-            prefetch_manifold_head(manifold_pool.get(world.contact_manifolds[k + 2 * prefetch_distance]));
+            prefetch_manifold_head(
+                manifold_pool.value_at(world.contact_places[k + 2 * prefetch_distance].slot));
         if (k + prefetch_distance < num_contacts) {
-            auto &ahead = manifold_pool.get(world.contact_manifolds[k + prefetch_distance]);
+            auto &ahead = manifold_pool.value_at(world.contact_places[k + prefetch_distance].slot);
             prefetch_gather_points(ahead);
             prefetch_gather_bodies(registry, ahead);
         }
@@ -363,15 +365,15 @@ void write_back(registry &registry, world_state &world, scalar dt) {
     parallel_for(
         world.scheduler.get(), std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
             if (k + 2 * prefetch_distance < constraints.size()) {
-                auto ahead = world.contact_manifolds[constraints[k + 2 * prefetch_distance].source];
-                prefetch_manifold_head(manifold_pool.get(ahead));
+                auto ahead = world.contact_places[constraints[k + 2 * prefetch_distance].source].slot;
+                prefetch_manifold_head(manifold_pool.value_at(ahead));
             }
             if (k + prefetch_distance < constraints.size()) {
-                auto ahead = world.contact_manifolds[constraints[k + prefetch_distance].source];
-                prefetch_write_back_points(manifold_pool.get(ahead));
+                auto ahead = world.contact_places[constraints[k + prefetch_distance].source].slot;
+                prefetch_write_back_points(manifold_pool.value_at(ahead));
             }
             auto &c = constraints[k];
-            auto &manifold = manifold_pool.get(world.contact_manifolds[c.source]);
+            auto &manifold = manifold_pool.value_at(world.contact_places[c.source].slot);
             for (std::uint32_t i = 0; i < c.num_points; ++i) {
                 auto &p = world.contacts.points[c.first_point + i];
                 auto &t = world.contacts.totals[c.first_point + i];

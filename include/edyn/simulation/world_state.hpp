@@ -54,6 +54,7 @@ struct world_state {
     struct edge_contact {
         std::uint32_t body[2]{0, 0}; ///< The manifold's two bodies' indices in `bodies`.
         std::uint32_t num_points{0}; ///< The manifold's points; 0 when it is not solved.
+        std::uint32_t slot{0};       ///< Where the manifold lies in its pool (`storage::value_at`).
     };
     /// The edges of the awake islands, island by island, as gather_contacts visits them.
     std::vector<entity> island_edges;
@@ -68,6 +69,7 @@ struct world_state {
         std::uint32_t constraint{0};  ///< Index of its constraint in contacts.constraints.
         std::uint32_t first_point{0}; ///< Index of its first point in contacts.points.
         std::uint32_t num_points{0};  ///< Its number of points.
+        std::uint32_t slot{0};        ///< Where the manifold lies in its pool (`storage::value_at`).
     };
     /// The place of each of contact_manifolds' constraints in `contacts`.
     std::vector<contact_place> contact_places;
@@ -96,6 +98,9 @@ struct world_state {
     std::vector<AABB> collision_aabbs;
     /// Manifold entities in the order the narrowphase visits them.
     std::vector<entity> manifolds;
+    /// Where each of `manifolds` lies in the contact_manifold pool (`storage::value_at`), for
+    /// the narrowphase's loop to reach it without a look-up.
+    std::vector<std::uint32_t> manifold_slots;
     /// What changed in each of `manifolds` this step.
     std::vector<contact_point_changes> manifold_changes;
 
