@@ -11,6 +11,7 @@
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/parallel/parallel_for.hpp"
+#include "edyn/shapes/shape_bounding_radius.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 #include <algorithm>
@@ -70,6 +71,8 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
     body.has_shape = registry.all_of<shape_index>(e);
     if (auto *epoch = registry.try_get<shape_epoch>(e)) body.shape_epoch = epoch->value;
     if (!body.has_shape) return body;
+    body.bounding_radius =
+        visit_shape(registry, e, [](const auto &shape) { return shape_bounding_radius(shape); });
     body.origin = get_rigidbody_origin(registry, e);
     body.orientation = registry.get<orientation>(e);
     // An upper bound of how fast any of its points moves: its centre's speed and the spin's
@@ -81,6 +84,20 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
         body.spin_reach = length(*av) * length(aabb_half_extents(aabb));
     }
     return body;
+}
+
+// Whether the shapes of a and b lie farther apart than `threshold`, by their bounding spheres
+// or their AABBs (false when neither shows it).
+bool shapes_apart(const world_state &world, entity a, entity b, const manifold_transforms &tf,
+                  scalar threshold) {
+    auto &bodyA = world.collision_bodies[to_index(a)];
+    auto &bodyB = world.collision_bodies[to_index(b)];
+    // (A shape without a bound has large_scalar, and the sum is then infinite.)
+    auto reach = bodyA.bounding_radius + bodyB.bounding_radius + threshold;
+    if (length_sqr(tf.posA - tf.posB) > reach * reach) return true;
+    auto &aabbA = world.collision_aabbs[to_index(a)];
+    auto &aabbB = world.collision_aabbs[to_index(b)];
+    return !intersect(inset(aabbA, vector3_one * threshold), aabbB);
 }
 
 // Closest points of one manifold's pair, the manifold updated in place. Reads the registry and
@@ -115,14 +132,12 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
     if (can_reuse_contacts(manifold, tf, approach, epochs)) {
         return refresh_contact_manifold(manifold, tf);
     }
-    // A pair without points whose boxes lie farther apart than the threshold gets none now
-    // either: each box holds its body's shape where the last step left it, so the shapes are at
-    // least as far apart. (Most pairs of a large heap are such neighbours, which the
-    // broadphase's fat boxes keep together long after their shapes parted.)
-    auto &aabbA = world.collision_aabbs[to_index(a)];
-    auto &aabbB = world.collision_aabbs[to_index(b)];
-    if (manifold.num_points == 0 &&
-        !intersect(inset(aabbA, vector3_one * manifold.separation_threshold), aabbB)) {
+    // A pair without points whose shapes lie farther apart than the threshold gets none now
+    // either; two bounds show it without collide(): the spheres about the origins that hold the
+    // shapes, and the AABBs, each of which holds its body's shape where the last step left it.
+    // (Most pairs of a large heap are such neighbours, which the broadphase's fat boxes keep
+    // together long after their shapes parted.)
+    if (manifold.num_points == 0 && shapes_apart(world, a, b, tf, manifold.separation_threshold)) {
         remember_collide(manifold, tf, epochs);
         return {};
     }
