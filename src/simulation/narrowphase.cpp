@@ -220,10 +220,11 @@ void run_narrowphase(registry &registry, world_state &world) {
             prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
             prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
             // Its first two lines hold what every visit reads, each point's first two what a
-            // refresh reads and writes.
+            // refresh reads and writes. Every slot is asked for: which are live is not read here,
+            // since another thread may be colliding that manifold.
             prefetch(&ahead, offsetof(contact_manifold, point));
-            for (std::uint32_t k = 0; k < ahead.num_points; ++k)
-                prefetch(&ahead.point[ahead.ids[k]], 2 * cache_line_size);
+            for (auto &point : ahead.point)
+                prefetch(&point, 2 * cache_line_size);
         }
         auto &manifold = manifold_pool.value_at(world.manifold_slots[i]);
         auto &changes = world.manifold_changes[i];
