@@ -220,7 +220,8 @@ contact_point_changes refresh_contact_manifold(contact_manifold &manifold, const
 }
 
 contact_point_changes update_contact_manifold(contact_manifold &manifold, const manifold_transforms &tf,
-                                              const collision_result &result, bool shapes_changed) {
+                                              const collision_result &result, bool shapes_changed,
+                                              bool one_point) {
     EDYN_ASSERT(manifold.num_points <= max_contacts);
     EDYN_ASSERT(result.num_points <= max_contacts);
     contact_point_changes changes;
@@ -233,7 +234,10 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
 
     for (std::size_t r = 0; r < result.num_points; ++r) {
         auto &rp = result.point[r];
-        auto pos = find_match(manifold, matched, rp);
+        // A pair that touches at one point has one place of contact: the live point is it.
+        auto pos = !one_point                                             ? find_match(manifold, matched, rp)
+                   : manifold.num_points > 0 && !matched[manifold.ids[0]] ? 0
+                                                                          : -1;
         if (pos >= 0) {
             auto slot = manifold.ids[static_cast<std::size_t>(pos)];
             assign_geometry(manifold.point[slot], rp, tf);
@@ -244,11 +248,11 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
     }
 
     // A continued point that is now too far apart ends here, and so does one that lies on a shape
-    // that has changed.
+    // that has changed or that the result of a one-point pair did not continue.
     for (std::uint32_t pos = 0; pos < manifold.num_points;) {
         auto slot = manifold.ids[pos];
         if ((matched[slot] && manifold.point[slot].distance > manifold.separation_threshold) ||
-            (shapes_changed && !matched[slot])) {
+            ((shapes_changed || one_point) && !matched[slot])) {
             remove_point_at(manifold, pos, changes);
         } else {
             ++pos;

@@ -143,6 +143,7 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
     }
     collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
     collision_result result;
+    auto one_point = false;
     visit_shape(registry, a, [&](const auto &shapeA) {
         visit_shape(registry, b, [&](const auto &shapeB) {
             using A = std::decay_t<decltype(shapeA)>;
@@ -150,10 +151,11 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
             if constexpr (!(is_static_only_shape_v<A> && is_static_only_shape_v<B>)) {
                 collide(shapeA, shapeB, ctx, result);
             }
+            one_point = touches_at_one_point_v<A, B>;
         });
     });
     auto shapes_changed = manifold.last_collide.valid && manifold.last_collide.shape_epochs != epochs;
-    auto changes = update_contact_manifold(manifold, tf, result, shapes_changed);
+    auto changes = update_contact_manifold(manifold, tf, result, shapes_changed, one_point);
     remember_collide(manifold, tf, epochs);
     return changes;
 }

@@ -86,6 +86,41 @@ TEST_F(friction, without_rolling_friction_a_rolling_sphere_keeps_its_speed) {
     EXPECT_NEAR(pos(ball).x, 2 * v0, scalar(0.01) * 2 * v0);
 }
 
+TEST_F(friction, a_sphere_that_lands_rolling_bounces_on_rolling_at_its_speed) {
+    // Its bottom meets the ground without sliding, so the ground pushes it straight up through
+    // its centre: only the vertical velocity changes, bounce after bounce. At 3 m/s the ball turns
+    // its bottom 5 cm away in a step, farther than points are matched by their pivots; a point
+    // kept from the step before the landing would push it off its centre and turn spin into speed.
+    scenes::make_ground(reg, 1, scalar(0.8));
+    const scalar r = scalar(0.5), v0 = 3;
+    auto def = edyn::test::sphere_def(r, {0, 2, 0});
+    def.material->friction = 1;
+    def.material->restitution = scalar(0.8);
+    def.linvel = {v0, -5, 0};
+    def.angvel = {0, 0, -v0 / r};
+    def.sleeping_disabled = true;
+    auto ball = make_rigidbody(reg, def);
+
+    scalar worst_speed = 0, worst_spin = 0;
+    std::uint32_t most_points = 0;
+    auto bounces = 0;
+    auto was_falling = true;
+    for (auto step = 0; step < 120; ++step) {
+        edyn::test::step(reg);
+        worst_speed = std::max(worst_speed, std::abs(vel(ball).x - v0));
+        worst_spin = std::max(worst_spin, std::abs(angular(ball).z + v0 / r));
+        for (auto [e, manifold] : reg.view<contact_manifold>().each())
+            most_points = std::max(most_points, manifold.num_points);
+        auto falling = vel(ball).y < 0;
+        bounces += was_falling && !falling;
+        was_falling = falling;
+    }
+    ASSERT_GE(bounces, 2);
+    EXPECT_LT(worst_speed, scalar(0.01) * v0) << "horizontal speed off by " << worst_speed << " m/s";
+    EXPECT_LT(worst_spin, scalar(0.01) * v0 / r) << "spin off by " << worst_spin << " rad/s";
+    EXPECT_EQ(most_points, 1u) << "a sphere on a plane touches it at one point";
+}
+
 TEST_F(friction, rolling_friction_slows_a_cylinder_rolling_about_its_axis_at_c_g_over_1_5_r) {
     // I = 1/2 m r^2 about the axis: a = c m g / (r m (1 + 1/2)).
     scenes::make_ground(reg, 1, 0);

@@ -71,15 +71,23 @@ contact_point_changes refresh_contact_manifold(contact_manifold &manifold, const
 ///   on body A), existing points winning ties; the points left out are destroyed (or never
 ///   created).
 ///
+/// - With `one_point`, the pair touches at one point at most (a sphere and a convex shape):
+///   the result's point, if any, continues the live point wherever its pivots lie, and every
+///   other live point is removed. A rolling sphere turns its old pivot away from the surface a
+///   little more every step; kept, that point would push on the sphere off its centre.
+///
 /// New points get zero impulses and default materials; the caller sets their material.
 /// @param manifold The manifold to update.
 /// @param tf The bodies' current transforms (those `result` was computed at).
 /// @param result Closest points from collide() for the manifold's bodies, A being body[0].
 /// @param shapes_changed Whether a body's shape was replaced or edited since the live points
 ///        were found.
+/// @param one_point Whether the bodies' shapes touch at one point at most
+///        (touches_at_one_point_v).
 /// @return The points removed and created.
 contact_point_changes update_contact_manifold(contact_manifold &manifold, const manifold_transforms &tf,
-                                              const collision_result &result, bool shapes_changed = false);
+                                              const collision_result &result, bool shapes_changed = false,
+                                              bool one_point = false);
 
 /// Removes every point, e.g. when a body turns into a sensor or its shape changes.
 /// @param manifold The manifold to empty.

@@ -63,6 +63,20 @@ inline constexpr bool is_static_only_shape_v =
     std::is_same_v<Shape, plane_shape> || std::is_same_v<Shape, mesh_shape> ||
     std::is_same_v<Shape, paged_mesh_shape>;
 
+/// Whether `Shape` is made of several convex pieces (children, triangles), each of which may
+/// touch another shape at its own place.
+template<typename Shape>
+inline constexpr bool is_composite_shape_v =
+    std::is_same_v<Shape, compound_shape> || std::is_same_v<Shape, mesh_shape> ||
+    std::is_same_v<Shape, paged_mesh_shape>;
+
+/// Whether shapes A and B touch at one point at most: a sphere and a convex shape (a plane
+/// included) meet where the sphere's centre is nearest the other shape, and nowhere else.
+template<typename A, typename B>
+inline constexpr bool touches_at_one_point_v = (std::is_same_v<A, sphere_shape> &&
+                                                !is_composite_shape_v<B>) ||
+                                               (std::is_same_v<B, sphere_shape> && !is_composite_shape_v<A>);
+
 /// Matches shapes_variant_t only.
 ///
 /// Functions overloaded for every shape take the variant through this constraint rather than by

@@ -154,6 +154,10 @@ void check_pair() {
         EXPECT_EQ(r.num_points, 0u);
     } else {
         ASSERT_GT(r.num_points, 0u);
+        // The narrowphase keeps a single point for these pairs (update_contact_manifold).
+        if constexpr (touches_at_one_point_v<A, B>) {
+            EXPECT_EQ(r.num_points, 1u);
+        }
         EXPECT_NEAR(min_distance(r), -depth, tol);
         expect_consistent(r, s.ctx, tol, std::is_same_v<A, plane_shape>, std::is_same_v<B, plane_shape>);
         // Each point's normal points from B (below) up towards A.

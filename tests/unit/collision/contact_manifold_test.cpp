@@ -179,6 +179,36 @@ TEST_F(manifold_fixture, proximity_match_needs_caching_radius) {
     EXPECT_NEAR(manifold.point[other].pivotB.x, 0.09, tol);
 }
 
+TEST_F(manifold_fixture, a_one_point_pair_continues_its_point_wherever_the_result_lies) {
+    constexpr auto one_point = true;
+    edyn::update_contact_manifold(manifold, tf, make_result({make_point({0, 0, 0}, 0)}), false, one_point);
+    auto slot = manifold.ids[0];
+    manifold.point[slot].normal_impulse = 2;
+
+    // 9 cm away on both bodies, beyond contact_caching_threshold: still the pair's one point,
+    // with its impulses.
+    auto changes = edyn::update_contact_manifold(manifold, tf, make_result({make_point({0.09f, 0, 0}, 0)}),
+                                                 false, one_point);
+    EXPECT_EQ(changes.num_created, 0u);
+    EXPECT_EQ(changes.num_destroyed, 0u);
+    ASSERT_EQ(manifold.num_points, 1u);
+    EXPECT_EQ(manifold.ids[0], slot);
+    EXPECT_EQ(manifold.point[slot].normal_impulse, 2);
+    EXPECT_NEAR(manifold.point[slot].pivotB.x, 0.09, tol);
+
+    // No point in the result: the pair does not touch within the threshold, though the live
+    // point's pivots are still close.
+    changes = edyn::update_contact_manifold(manifold, tf, make_result({}), false, one_point);
+    EXPECT_EQ(changes.num_destroyed, 1u);
+    EXPECT_EQ(manifold.num_points, 0u);
+
+    // Without the flag, the same two results leave two points (see the test above).
+    edyn::update_contact_manifold(manifold, tf, make_result({make_point({0, 0, 0}, 0)}));
+    edyn::update_contact_manifold(manifold, tf, make_result({make_point({0.09f, 0, 0}, 0)}));
+    EXPECT_EQ(manifold.num_points, 2u);
+    expect_ids_permutation();
+}
+
 TEST_F(manifold_fixture, fifth_point_replaces_to_maximise_area) {
     // Unit square of existing points: A(0,0) B(1,0) C(1,1) D(0,1) in the x-z plane.
     auto square = make_result({make_point({0, 0, 0}, 0), make_point({1, 0, 0}, 0), make_point({1, 0, 1}, 0),
