@@ -20,13 +20,47 @@ struct wide_body {
     wide inv_mass;
 };
 
-#ifdef EDYN_WIDE_SSE2
-
-// The state a bundle reads is the first 14 floats of solver_body: loaded as four groups of four
-// floats per lane (the last group runs two floats into inv_inertia) and transposed.
+#if defined(EDYN_WIDE_AVX2) || defined(EDYN_WIDE_SSE2)
+// The state a bundle reads is the first 14 floats of solver_body: loaded as groups of four or
+// eight floats per lane (the last group runs two floats into inv_inertia) and transposed.
 static_assert(offsetof(solver_body, linvel) == 0 && offsetof(solver_body, angvel) == 12 &&
               offsetof(solver_body, delta_position) == 24 && offsetof(solver_body, delta_rotation) == 36 &&
               offsetof(solver_body, inv_mass) == 52 && sizeof(solver_body) >= 64);
+#endif
+
+#ifdef EDYN_WIDE_AVX2
+
+wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
+    __m256 g[2][lanes];
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        auto *p = reinterpret_cast<const float *>(&bodies[index[i]]);
+        g[0][i] = _mm256_loadu_ps(p);
+        g[1][i] = _mm256_loadu_ps(p + 8);
+    }
+    transpose(g[0]);
+    transpose(g[1]);
+    wide_body b;
+    b.linvel = {{g[0][0]}, {g[0][1]}, {g[0][2]}};
+    b.angvel = {{g[0][3]}, {g[0][4]}, {g[0][5]}};
+    b.delta_position = {{g[0][6]}, {g[0][7]}, {g[1][0]}};
+    b.delta_rotation = {{g[1][1]}, {g[1][2]}, {g[1][3]}, {g[1][4]}};
+    b.inv_mass = {g[1][5]};
+    return b;
+}
+
+// Writes the velocities of the lanes whose bit is set; the two floats after them go back
+// unchanged.
+void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits,
+             const wide_body &b) {
+    __m256 g[lanes] = {b.linvel.x.v, b.linvel.y.v, b.linvel.z.v,         b.angvel.x.v,
+                       b.angvel.y.v, b.angvel.z.v, b.delta_position.x.v, b.delta_position.y.v};
+    transpose(g);
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        if (bits & (1u << i)) _mm256_storeu_ps(reinterpret_cast<float *>(&bodies[index[i]]), g[i]);
+    }
+}
+
+#elif defined(EDYN_WIDE_SSE2)
 
 wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
     const float *p[lanes];
@@ -279,9 +313,9 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
 
     // Room for the most the packing can make of this many constraints and points, and a quarter
     // more, so that the arrays grow only when the world does, not when its colours' sizes or
-    // number change: a colour of n constraints makes at most n / 4 + 3 bundles (one part-filled
-    // bundle per fixed side), and, sorted as they are, its bundles' slots number at most its
-    // points / 4 + 3 * 4.
+    // number change: a colour of n constraints makes at most n / lanes + 3 bundles (one
+    // part-filled bundle per fixed side), and, sorted as they are, its bundles' slots number at
+    // most its points / lanes + 3 * 4.
     constexpr std::size_t num_sides = 3;
     auto num_colours = begin.empty() ? std::size_t(0) : begin.size() - 1;
     auto max_points = std::size_t(contact_solver_constraint::max_points);

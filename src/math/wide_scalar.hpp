@@ -1,26 +1,90 @@
 #ifndef EDYN_SRC_MATH_WIDE_SCALAR_HPP
 #define EDYN_SRC_MATH_WIDE_SCALAR_HPP
 
-// Four scalars handled at once, for solvers that work on four independent constraints side by
-// side. Every operation is the IEEE operation of its scalar counterpart, lane by lane, without
-// fused multiply-adds, so that a lane computes exactly what the scalar code computes for the
-// same inputs, and a build gives one result whichever path it compiles (SSE2 for float on
-// x86-64, plain arrays elsewhere).
+// Several scalars handled at once, for solvers that work on independent constraints side by
+// side: four, or eight in a build with EDYN_AVX2. Every operation is the IEEE operation of its
+// scalar counterpart, lane by lane, without fused multiply-adds, so that a lane computes exactly
+// what the scalar code computes for the same inputs, and a build gives one result whichever path
+// it compiles (AVX2 or SSE2 for float on x86-64, plain arrays elsewhere).
 
 #include "edyn/math/scalar.hpp"
 #include <cstddef>
 #include <cstdint>
 
-#if defined(__SSE2__) && !defined(EDYN_DOUBLE_PRECISION)
+#if defined(EDYN_AVX2) && !defined(EDYN_DOUBLE_PRECISION)
+#ifndef __AVX2__
+#error "EDYN_AVX2 needs the library compiled with -mavx2 (the CMake option EDYN_AVX2 does both)"
+#endif
+#define EDYN_WIDE_AVX2 1
+#include <immintrin.h>
+#elif defined(__SSE2__) && !defined(EDYN_DOUBLE_PRECISION)
 #define EDYN_WIDE_SSE2 1
 #include <emmintrin.h>
 #endif
 
 namespace edyn::detail {
 
+#ifdef EDYN_AVX2
+inline constexpr std::size_t wide_lanes = 8;
+#else
 inline constexpr std::size_t wide_lanes = 4;
+#endif
 
-#ifdef EDYN_WIDE_SSE2
+#ifdef EDYN_WIDE_AVX2
+
+struct wide_mask {
+    __m256 m;
+};
+
+struct wide {
+    __m256 v;
+};
+
+inline wide wide_load(const scalar *p) noexcept { return {_mm256_loadu_ps(p)}; }
+inline void wide_store(scalar *p, wide a) noexcept { _mm256_storeu_ps(p, a.v); }
+inline wide wide_set(scalar s) noexcept { return {_mm256_set1_ps(s)}; }
+// Eight unsigned counts (below 2^31) as scalars.
+inline wide wide_from_counts(const std::uint32_t *p) noexcept {
+    return {_mm256_cvtepi32_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i *>(p)))};
+}
+inline wide operator+(wide a, wide b) noexcept { return {_mm256_add_ps(a.v, b.v)}; }
+inline wide operator-(wide a, wide b) noexcept { return {_mm256_sub_ps(a.v, b.v)}; }
+inline wide operator*(wide a, wide b) noexcept { return {_mm256_mul_ps(a.v, b.v)}; }
+inline wide operator/(wide a, wide b) noexcept { return {_mm256_div_ps(a.v, b.v)}; }
+inline wide operator-(wide a) noexcept { return {_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f))}; }
+// a < b, lane by lane.
+inline wide_mask operator<(wide a, wide b) noexcept { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OS)}; }
+// Lanes of `a` where the mask is set, of `b` elsewhere.
+inline wide select(wide_mask m, wide a, wide b) noexcept { return {_mm256_blendv_ps(b.v, a.v, m.m)}; }
+inline wide_mask operator&(wide_mask a, wide_mask b) noexcept { return {_mm256_and_ps(a.m, b.m)}; }
+inline bool any(wide_mask m) noexcept { return _mm256_movemask_ps(m.m) != 0; }
+// std::max(a, b), that is (a < b) ? b : a, in every lane (zeros' signs and NaNs included).
+inline wide std_max(wide a, wide b) noexcept { return {_mm256_max_ps(b.v, a.v)}; }
+// std::clamp(a, lo, hi) for lo <= hi: (a < lo) ? lo : (hi < a) ? hi : a.
+inline wide std_clamp(wide a, wide lo, wide hi) noexcept {
+    return {_mm256_min_ps(hi.v, _mm256_max_ps(lo.v, a.v))};
+}
+
+// Rows to columns: afterwards r[k]'s lane i holds what r[i]'s lane k held.
+inline void transpose(__m256 (&r)[8]) noexcept {
+    __m256 t[8], u[8];
+    for (int i = 0; i < 8; i += 2) {
+        t[i] = _mm256_unpacklo_ps(r[i], r[i + 1]);
+        t[i + 1] = _mm256_unpackhi_ps(r[i], r[i + 1]);
+    }
+    for (int i = 0; i < 8; i += 4) {
+        u[i] = _mm256_shuffle_ps(t[i], t[i + 2], _MM_SHUFFLE(1, 0, 1, 0));
+        u[i + 1] = _mm256_shuffle_ps(t[i], t[i + 2], _MM_SHUFFLE(3, 2, 3, 2));
+        u[i + 2] = _mm256_shuffle_ps(t[i + 1], t[i + 3], _MM_SHUFFLE(1, 0, 1, 0));
+        u[i + 3] = _mm256_shuffle_ps(t[i + 1], t[i + 3], _MM_SHUFFLE(3, 2, 3, 2));
+    }
+    for (int i = 0; i < 4; ++i) {
+        r[i] = _mm256_permute2f128_ps(u[i], u[i + 4], 0x20);
+        r[i + 4] = _mm256_permute2f128_ps(u[i], u[i + 4], 0x31);
+    }
+}
+
+#elif defined(EDYN_WIDE_SSE2)
 
 struct wide_mask {
     __m128 m;
@@ -146,7 +210,7 @@ inline wide3 cross(const wide3 &a, const wide3 &b) noexcept {
 inline wide3 select(wide_mask m, const wide3 &a, const wide3 &b) noexcept {
     return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
 }
-// Loads three arrays of four lanes (x, y, z).
+// Loads three arrays of lanes (x, y, z).
 inline wide3 wide3_load(const scalar (&p)[3][wide_lanes]) noexcept {
     return {wide_load(p[0]), wide_load(p[1]), wide_load(p[2])};
 }

@@ -6,8 +6,14 @@
 
 namespace edyn {
 
-/// Number of contact constraints a bundle holds side by side, one per lane.
+/// Number of contact constraints a bundle holds side by side, one per lane: eight in a build with
+/// the CMake option EDYN_AVX2 (solved with AVX2 instructions), four otherwise (SSE2 on x86-64).
+/// Lanes are independent, so both give the same results bit for bit.
+#ifdef EDYN_AVX2
+inline constexpr std::size_t contact_bundle_lanes = 8;
+#else
 inline constexpr std::size_t contact_bundle_lanes = 4;
+#endif
 
 /// Which body of a contact is the static body (static_solver_body), whose terms the contact's
 /// rows leave out: it never moves, its velocities and motion since the step began are zero.
@@ -20,9 +26,10 @@ enum class fixed_side : std::uint8_t {
     b     ///< Body B is the static body.
 };
 
-/// Four contact constraints of one colour packed side by side, lane by lane, so that the
-/// contact solver works on all four at once with vector instructions (see contact_solver_set).
-/// They share no body that moves, so solving them together is solving them one after another.
+/// Contact constraints of one colour packed side by side, lane by lane (contact_bundle_lanes of
+/// them), so that the contact solver works on all of them at once with vector instructions (see
+/// contact_solver_set). They share no body that moves, so solving them together is solving them
+/// one after another.
 /// Built by prepare_contacts() for the constraints without spinning or rolling friction and
 /// without a material spring; the others are solved one at a time.
 struct contact_bundle {

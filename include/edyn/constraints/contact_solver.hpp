@@ -133,7 +133,7 @@ struct contact_solver_set {
     /// constraints from colour_begin.back() on (all of them when the set was not coloured) are
     /// solved in order on the calling thread, after the colours.
     std::vector<std::uint32_t> colour_begin;
-    /// The coloured constraints as prepare_contacts() packs them, four to a bundle, colour by
+    /// The coloured constraints as prepare_contacts() packs them, contact_bundle_lanes to a bundle, colour by
     /// colour: colour k's bundles are [bundle_begin[k], bundle_begin[k + 1]). Between
     /// prepare_contacts() and unpack_contact_impulses() a bundled constraint's impulses live
     /// in its bundle's slots, not in its points.
@@ -242,10 +242,11 @@ struct contact_solver_settings {
 /// The passes below spread their work over the scheduler's threads when one is given, colour by
 /// colour; the results do not depend on it, nor on its number of threads.
 /// Also resets each point's totals (keeping the carried approach) and each constraint's
-/// spinning and rolling totals, and packs each colour's plain constraints four to a bundle
-/// (contact_bundle), which the passes below solve four at a time with vector instructions
-/// (SSE2 on x86-64 in single precision, plain arrays otherwise), lane for lane the same
-/// operations as one at a time, so that bundling changes no result. Called once per step.
+/// spinning and rolling totals, and packs each colour's plain constraints contact_bundle_lanes
+/// to a bundle (contact_bundle), which the passes below solve that many at a time with vector
+/// instructions (AVX2 or SSE2 on x86-64 in single precision, plain arrays otherwise), lane for
+/// lane the same operations as one at a time, so that bundling changes no result. Called once
+/// per step.
 /// @param contacts The step's contacts.
 /// @param bodies The step's solver bodies (their velocities and inverse inertias are read).
 /// @param scheduler Threads to spread the work over; null runs it on the calling thread.

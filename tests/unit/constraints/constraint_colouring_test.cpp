@@ -162,7 +162,7 @@ random_contacts make_contacts(std::size_t num_contacts, unsigned seed, bool colo
         c.body[1] = pairs[k].b;
         c.friction = scalar(0.6) + scalar(0.4) * u(contact_rng);
         c.normal = normal;
-        // Most contacts have plain friction and are solved four at a time; some have spinning
+        // Most contacts have plain friction and are solved in bundles; some have spinning
         // and rolling friction or a material spring, and are solved one at a time.
         if (k % 5 == 1) {
             c.spin_friction = scalar(0.01);
@@ -253,7 +253,8 @@ TEST(constraint_colouring, coloured_contacts_solve_to_the_same_bits_as_in_order_
         auto coloured = make_contacts(3000, 11, true);
         ASSERT_GT(coloured.contacts.colour_begin.size(), 2u);
         solve(coloured, &scheduler);
-        EXPECT_GT(coloured.contacts.bundles.size(), 300u) << "the plain contacts go four at a time";
+        EXPECT_GT(coloured.contacts.bundles.size(), 1200u / contact_bundle_lanes)
+            << "the plain contacts go " << contact_bundle_lanes << " at a time";
         EXPECT_GT(coloured.contacts.singles.size(), 500u) << "the others one at a time";
         EXPECT_TRUE(same_bits(in_order.bodies, coloured.bodies)) << threads << " threads";
         EXPECT_TRUE(same_impulses(in_order, coloured)) << threads << " threads";
