@@ -2,12 +2,15 @@
 // reordering) watching a scene that keeps moving, each driving a box of its own with a scripted
 // input. Two figures: how far each client's copy of every body is from the server's body at
 // the same server time, and how far the server's path of each driven box strays from the path
-// the same script gives over a clean link (same latency, nothing lost or late).
+// the same script gives over a clean link (same latency, nothing lost or late). Beside them, the
+// floor under the first: how far a world rebuilt from the bodies' motion strays from the original.
 #include "netbench.hpp"
 #include "session.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <edyn/serialization/memory_archive.hpp>
+#include <edyn/serialization/quantize.hpp>
 #include <stdexcept>
 
 namespace edyn_netbench {
@@ -303,6 +306,77 @@ path_comparison compare_paths(const run_figures &a, const run_figures &b) {
     return out;
 }
 
+// The floor under the view error: how far the scene's bodies are, `horizon` steps on, in a world
+// rebuilt from their motion alone (position, orientation and velocities, what a snapshot
+// carries, rounded as snapshots round it with `quantised`), from where they are in the world that
+// ran on. A client with exact snapshots and every input can extrapolate no better: contact
+// points, their impulses, ages and order, and sleep timers are not carried. Rebuilt every third
+// step after the first second; metres, one value per body and rebuild.
+struct motion_record {
+    edyn::vector3 position, linvel, angvel;
+    edyn::quaternion orientation;
+};
+
+std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool quantised) {
+    auto make_world = [&](edyn::registry &registry) {
+        edyn::attach(registry, edyn::init_config{edyn::execution_mode::sequential});
+        setup_registry(registry);
+        auto built = build_scene(registry, opt.bodies, opt.clients);
+        auto bodies = built.free_bodies;
+        bodies.insert(bodies.end(), built.driven.begin(), built.driven.end());
+        return bodies;
+    };
+    auto record = [](const edyn::registry &registry, const std::vector<edyn::entity> &bodies) {
+        auto motions = std::vector<motion_record>{};
+        for (auto e : bodies)
+            motions.push_back({registry.get<edyn::position>(e), registry.get<edyn::linvel>(e),
+                               registry.get<edyn::angvel>(e), registry.get<edyn::orientation>(e)});
+        return motions;
+    };
+
+    auto original = edyn::registry{};
+    auto bodies = make_world(original);
+    auto dt = double(edyn::get_fixed_dt(original));
+    auto steps = std::size_t(std::llround(opt.seconds / dt));
+    auto history = std::vector<std::vector<motion_record>>{record(original, bodies)};
+    for (std::size_t k = 0; k < steps; ++k) {
+        edyn::step_simulation(original);
+        history.push_back(record(original, bodies));
+    }
+
+    auto errors = std::vector<double>{};
+    for (auto k = std::size_t(std::llround(settle_time / dt)); k + horizon < history.size(); k += 3) {
+        auto rebuilt = edyn::registry{};
+        auto copies = make_world(rebuilt);
+        for (std::size_t i = 0; i < copies.size(); ++i) {
+            auto m = history[k][i];
+            if (quantised) {
+                auto bytes = std::vector<std::uint8_t>{};
+                auto write = edyn::memory_output_archive(bytes);
+                edyn::serialize_quantized(write, m.position, edyn::position_quantum);
+                edyn::serialize_quantized(write, m.orientation);
+                edyn::serialize_quantized(write, m.linvel, edyn::velocity_quantum);
+                edyn::serialize_quantized(write, m.angvel, edyn::velocity_quantum);
+                auto read = edyn::memory_input_archive(bytes.data(), bytes.size());
+                edyn::serialize_quantized(read, m.position, edyn::position_quantum);
+                edyn::serialize_quantized(read, m.orientation);
+                edyn::serialize_quantized(read, m.linvel, edyn::velocity_quantum);
+                edyn::serialize_quantized(read, m.angvel, edyn::velocity_quantum);
+            }
+            rebuilt.replace<edyn::position>(copies[i], m.position);
+            rebuilt.replace<edyn::orientation>(copies[i], m.orientation);
+            rebuilt.replace<edyn::linvel>(copies[i], m.linvel);
+            rebuilt.replace<edyn::angvel>(copies[i], m.angvel);
+        }
+        for (unsigned h = 0; h < horizon; ++h)
+            edyn::step_simulation(rebuilt);
+        for (std::size_t i = 0; i < copies.size(); ++i)
+            errors.push_back(double(
+                edyn::length(rebuilt.get<edyn::position>(copies[i]) - history[k + horizon][i].position)));
+    }
+    return errors;
+}
+
 } // namespace
 
 void run_convergence(const options &opt, results &out) {
@@ -382,6 +456,19 @@ void run_convergence(const options &opt, results &out) {
                           (unsigned long long)d.retransmissions);
             out.notes.push_back(note);
         }
+    }
+    // The same for every run: the floor needs no link.
+    struct floor_case {
+        unsigned horizon;
+        bool quantised;
+    };
+    for (auto c : {floor_case{6, false}, floor_case{12, false}, floor_case{12, true}}) {
+        auto errors = rebuild_errors(opt, c.horizon, c.quantised);
+        if (errors.empty()) continue;
+        auto name = std::string("world rebuilt from ") + (c.quantised ? "quantised" : "exact") +
+                    " motion vs the original, " + std::to_string(c.horizon) + " steps on, ";
+        figures.push_back({name + "max", "cm", "", 0, {max_of(errors) * 100}});
+        figures.push_back({name + "p99", "cm", "", 0, {percentile(errors, 0.99) * 100}});
     }
     for (auto &f : figures) {
         auto m = metric{};
