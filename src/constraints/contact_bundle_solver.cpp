@@ -237,34 +237,133 @@ void with_fixed_side(const contact_bundle &bundle, Fn &&fn) {
     }
 }
 
-void fill_lane(contact_bundle_slot &slot, std::uint32_t lane, const contact_solver_point &p) {
-    auto put = [&](scalar(&to)[3][lanes], const vector3 &v) {
-        to[0][lane] = v.x;
-        to[1][lane] = v.y;
-        to[2][lane] = v.z;
-    };
-    auto put_row = [&](scalar(&to)[4][3][lanes], const contact_row &row) {
-        put(to[0], row.angularA);
-        put(to[1], row.angularB);
-        put(to[2], row.inv_angularA);
-        put(to[3], row.inv_angularB);
-    };
-    put(slot.rA, p.rA);
-    put(slot.rB, p.rB);
-    put(slot.adjusted_anchor_gap, p.adjusted_anchor_gap);
-    put(slot.normal, p.normal);
-    put(slot.tangent[0], p.tangent[0]);
-    put(slot.tangent[1], p.tangent[1]);
-    slot.adjusted_separation[lane] = p.adjusted_separation;
-    slot.normal_mass[lane] = p.normal_mass;
-    slot.tangent_mass[0][lane] = p.tangent_mass[0];
-    slot.tangent_mass[1][lane] = p.tangent_mass[1];
-    slot.normal_impulse[lane] = p.normal_impulse;
-    slot.tangent_impulse[0][lane] = p.tangent_impulse[0];
-    slot.tangent_impulse[1][lane] = p.tangent_impulse[1];
-    put_row(slot.normal_row, p.normal_row);
-    put_row(slot.tangent_row[0], p.tangent_row[0]);
-    put_row(slot.tangent_row[1], p.tangent_row[1]);
+// A slot is its lanes' points side by side: the k-th scalar of contact_solver_point becomes the
+// slot's k-th array, of one scalar per lane. Filling it is a transposition.
+constexpr std::size_t point_scalars = sizeof(contact_solver_point) / sizeof(scalar);
+static_assert(sizeof(contact_solver_point) == point_scalars * sizeof(scalar) &&
+              sizeof(contact_bundle_slot) == point_scalars * lanes * sizeof(scalar));
+static_assert(
+    offsetof(contact_solver_point, tangent) == offsetof(contact_bundle_slot, tangent) / lanes &&
+    offsetof(contact_solver_point, adjusted_separation) ==
+        offsetof(contact_bundle_slot, adjusted_separation) / lanes &&
+    offsetof(contact_solver_point, normal_mass) == offsetof(contact_bundle_slot, normal_mass) / lanes &&
+    offsetof(contact_solver_point, normal_impulse) == offsetof(contact_bundle_slot, normal_impulse) / lanes &&
+    offsetof(contact_solver_point, normal_row) == offsetof(contact_bundle_slot, normal_row) / lanes &&
+    offsetof(contact_solver_point, tangent_row) == offsetof(contact_bundle_slot, tangent_row) / lanes);
+
+void fill_slot(contact_bundle_slot &slot, const contact_solver_point *(&points)[lanes]) {
+    const scalar *in[lanes];
+    for (std::uint32_t i = 0; i < lanes; ++i)
+        in[i] = reinterpret_cast<const scalar *>(points[i]);
+    auto *out = reinterpret_cast<scalar *>(&slot);
+    std::size_t k = 0;
+#if defined(EDYN_WIDE_AVX2)
+    for (; k + lanes <= point_scalars; k += lanes) {
+        __m256 g[lanes];
+        for (std::uint32_t i = 0; i < lanes; ++i)
+            g[i] = _mm256_loadu_ps(in[i] + k);
+        transpose(g);
+        for (std::uint32_t r = 0; r < lanes; ++r)
+            _mm256_storeu_ps(out + (k + r) * lanes, g[r]);
+    }
+#elif defined(EDYN_WIDE_SSE2)
+    for (; k + lanes <= point_scalars; k += lanes) {
+        __m128 g[lanes];
+        for (std::uint32_t i = 0; i < lanes; ++i)
+            g[i] = _mm_loadu_ps(in[i] + k);
+        _MM_TRANSPOSE4_PS(g[0], g[1], g[2], g[3]);
+        for (std::uint32_t r = 0; r < lanes; ++r)
+            _mm_storeu_ps(out + (k + r) * lanes, g[r]);
+    }
+#endif
+    for (; k < point_scalars; ++k)
+        for (std::uint32_t i = 0; i < lanes; ++i)
+            out[k * lanes + i] = in[i][k];
+}
+
+void wide3_store(scalar (&p)[3][lanes], const wide3 &v) {
+    wide_store(p[0], v.x);
+    wide_store(p[1], v.y);
+    wide_store(p[2], v.z);
+}
+
+// A matrix3x3 in each lane, by rows.
+struct wide_matrix {
+    wide3 row[3];
+};
+
+inline wide3 operator*(const wide_matrix &m, const wide3 &v) {
+    return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)};
+}
+
+// One side's inverse masses and inertias, lane by lane.
+struct wide_inertia {
+    wide inv_mass;
+    wide_matrix inv_inertia;
+};
+
+wide_inertia gather_inertia(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
+    scalar m[10][lanes];
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        auto &body = bodies[index[i]];
+        m[0][i] = body.inv_mass;
+        for (int r = 0; r < 3; ++r) {
+            m[1 + 3 * r][i] = body.inv_inertia[r].x;
+            m[2 + 3 * r][i] = body.inv_inertia[r].y;
+            m[3 + 3 * r][i] = body.inv_inertia[r].z;
+        }
+    }
+    wide_inertia out;
+    out.inv_mass = wide_load(m[0]);
+    for (int r = 0; r < 3; ++r)
+        out.inv_inertia.row[r] = {wide_load(m[1 + 3 * r]), wide_load(m[2 + 3 * r]), wide_load(m[3 + 3 * r])};
+    return out;
+}
+
+// A row of the slot and its effective mass, as make_row() and row_mass() in contact_solver.cpp,
+// lane by lane; the mass is 0 in the lanes without a point.
+wide make_wide_row(scalar (&to)[4][3][lanes], wide_mask active, const wide_inertia &a, const wide_inertia &b,
+                   const wide3 &d, const wide3 &rA, const wide3 &rB) {
+    auto angularA = cross(rA, d);
+    auto angularB = cross(rB, d);
+    auto inv_angularA = a.inv_inertia * angularA;
+    auto inv_angularB = b.inv_inertia * angularB;
+    wide3_store(to[0], angularA);
+    wide3_store(to[1], angularB);
+    wide3_store(to[2], inv_angularA);
+    wide3_store(to[3], inv_angularB);
+    auto k = ((a.inv_mass + b.inv_mass) + dot(angularA, inv_angularA)) + dot(angularB, inv_angularB);
+    auto zero = wide_set(0);
+    return select(active & (zero < k), wide_set(1) / k, zero);
+}
+
+// The tangents, rows and effective masses of a slot's lanes from their normals and lever arms,
+// as make_point_rows() works them out one point at a time (plane_space() included, both of its
+// branches taken and the lane's chosen); zeros in the lanes without a point.
+void make_slot_rows(contact_bundle_slot &slot, wide_mask active, const wide_inertia &a,
+                    const wide_inertia &b) {
+    auto n = wide3_load(slot.normal);
+    auto rA = wide3_load(slot.rA), rB = wide3_load(slot.rB);
+    auto zero = wide_set(0), one = wide_set(1);
+    auto limit = wide_set(scalar(0.7071067811865476));
+    auto near_z = (limit < n.z) | (limit < -n.z);
+    auto a_z = n.y * n.y + n.z * n.z;
+    auto a_xy = n.x * n.x + n.y * n.y;
+    auto k_z = one / wide_sqrt(a_z);
+    auto k_xy = one / wide_sqrt(a_xy);
+    wide3 t0_z{zero, -n.z * k_z, n.y * k_z};
+    wide3 t1_z{a_z * k_z, -n.x * t0_z.z, n.x * t0_z.y};
+    wide3 t0_xy{-n.y * k_xy, n.x * k_xy, zero};
+    wide3 t1_xy{-n.z * t0_xy.y, n.z * t0_xy.x, a_xy * k_xy};
+    wide3 none{zero, zero, zero};
+    wide3 tangent[2] = {select(active, select(near_z, t0_z, t0_xy), none),
+                        select(active, select(near_z, t1_z, t1_xy), none)};
+    wide3_store(slot.tangent[0], tangent[0]);
+    wide3_store(slot.tangent[1], tangent[1]);
+    wide_store(slot.normal_mass, make_wide_row(slot.normal_row, active, a, b, n, rA, rB));
+    for (int t = 0; t < 2; ++t)
+        wide_store(slot.tangent_mass[t],
+                   make_wide_row(slot.tangent_row[t], active, a, b, tangent[t], rA, rB));
 }
 
 // Fills the bundle's slots from its constraints' points; lanes without a point get zeros, and
@@ -277,21 +376,24 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
         if (moves(bodies[bundle.body[1][i]])) bundle.moves_b |= 1u << i;
     }
     static const contact_solver_point empty_point = [] {
-        contact_solver_point p;
+        contact_solver_point p{};
         p.rA = p.rB = p.normal = p.tangent[0] = p.tangent[1] = vector3_zero;
         return p;
     }();
+    // The rows of the lanes' points are made here, side by side (prepare_contacts() left them).
+    auto inertia_a = gather_inertia(bodies.data(), bundle.body[0]);
+    auto inertia_b = gather_inertia(bodies.data(), bundle.body[1]);
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
-        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
         contacts.bundle_totals[bundle.first_slot + s] = {}; // every sub-step adds to them
+        const contact_solver_point *points[lanes];
         for (std::uint32_t i = 0; i < lanes; ++i) {
-            if (s < bundle.num_points[i]) {
-                auto &c = contacts.constraints[bundle.constraint[i]];
-                fill_lane(slot, i, contacts.points[c.first_point + s]);
-            } else {
-                fill_lane(slot, i, empty_point);
-            }
+            points[i] = &empty_point;
+            if (s < bundle.num_points[i])
+                points[i] = &contacts.points[contacts.constraints[bundle.constraint[i]].first_point + s];
         }
+        auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+        fill_slot(slot, points);
+        make_slot_rows(slot, slot_mask(bundle, s), inertia_a, inertia_b);
     }
 }
 

@@ -160,15 +160,19 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
         auto &c = contacts.constraints[k];
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
+        // A bundled point's rows are made in its bundle (fill_bundle), eight or four at a time.
+        auto own_rows = !detail::rows_made_in_bundle(contacts, k);
         for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
             auto &p = contacts.points[i];
-            plane_space(p.normal, p.tangent[0], p.tangent[1]);
-            p.normal_row = make_row(a, b, p.normal, p.rA, p.rB);
-            p.tangent_row[0] = make_row(a, b, p.tangent[0], p.rA, p.rB);
-            p.tangent_row[1] = make_row(a, b, p.tangent[1], p.rA, p.rB);
-            p.normal_mass = row_mass(a, b, p.normal_row);
-            p.tangent_mass[0] = row_mass(a, b, p.tangent_row[0]);
-            p.tangent_mass[1] = row_mass(a, b, p.tangent_row[1]);
+            if (own_rows) {
+                plane_space(p.normal, p.tangent[0], p.tangent[1]);
+                p.normal_row = make_row(a, b, p.normal, p.rA, p.rB);
+                p.tangent_row[0] = make_row(a, b, p.tangent[0], p.rA, p.rB);
+                p.tangent_row[1] = make_row(a, b, p.tangent[1], p.rA, p.rB);
+                p.normal_mass = row_mass(a, b, p.normal_row);
+                p.tangent_mass[0] = row_mass(a, b, p.tangent_row[0]);
+                p.tangent_mass[1] = row_mass(a, b, p.tangent_row[1]);
+            }
             contacts.totals[i] = {};
             contacts.totals[i].relative_velocity = dot(p.normal, relative_velocity(a, b, p.rA, p.rB));
         }

@@ -8,6 +8,7 @@
 // it compiles (AVX2 or SSE2 for float on x86-64, plain arrays elsewhere).
 
 #include "edyn/math/scalar.hpp"
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -57,6 +58,9 @@ inline wide_mask operator<(wide a, wide b) noexcept { return {_mm256_cmp_ps(a.v,
 // Lanes of `a` where the mask is set, of `b` elsewhere.
 inline wide select(wide_mask m, wide a, wide b) noexcept { return {_mm256_blendv_ps(b.v, a.v, m.m)}; }
 inline wide_mask operator&(wide_mask a, wide_mask b) noexcept { return {_mm256_and_ps(a.m, b.m)}; }
+inline wide_mask operator|(wide_mask a, wide_mask b) noexcept { return {_mm256_or_ps(a.m, b.m)}; }
+// std::sqrt in every lane (correctly rounded, as the scalar one).
+inline wide wide_sqrt(wide a) noexcept { return {_mm256_sqrt_ps(a.v)}; }
 inline bool any(wide_mask m) noexcept { return _mm256_movemask_ps(m.m) != 0; }
 // std::max(a, b), that is (a < b) ? b : a, in every lane (zeros' signs and NaNs included).
 inline wide std_max(wide a, wide b) noexcept { return {_mm256_max_ps(b.v, a.v)}; }
@@ -113,6 +117,9 @@ inline wide select(wide_mask m, wide a, wide b) noexcept {
     return {_mm_or_ps(_mm_and_ps(m.m, a.v), _mm_andnot_ps(m.m, b.v))};
 }
 inline wide_mask operator&(wide_mask a, wide_mask b) noexcept { return {_mm_and_ps(a.m, b.m)}; }
+inline wide_mask operator|(wide_mask a, wide_mask b) noexcept { return {_mm_or_ps(a.m, b.m)}; }
+// std::sqrt in every lane (correctly rounded, as the scalar one).
+inline wide wide_sqrt(wide a) noexcept { return {_mm_sqrt_ps(a.v)}; }
 inline bool any(wide_mask m) noexcept { return _mm_movemask_ps(m.m) != 0; }
 // std::max(a, b), that is (a < b) ? b : a, in every lane (zeros' signs and NaNs included).
 inline wide std_max(wide a, wide b) noexcept { return {_mm_max_ps(b.v, a.v)}; }
@@ -179,6 +186,15 @@ inline wide_mask operator&(wide_mask a, wide_mask b) noexcept {
     for (std::size_t i = 0; i < wide_lanes; ++i)
         m.m[i] = a.m[i] && b.m[i];
     return m;
+}
+inline wide_mask operator|(wide_mask a, wide_mask b) noexcept {
+    wide_mask m;
+    for (std::size_t i = 0; i < wide_lanes; ++i)
+        m.m[i] = a.m[i] || b.m[i];
+    return m;
+}
+inline wide wide_sqrt(wide a) noexcept {
+    return lanewise([&](std::size_t i) { return std::sqrt(a.v[i]); });
 }
 inline bool any(wide_mask m) noexcept {
     for (std::size_t i = 0; i < wide_lanes; ++i)

@@ -35,7 +35,9 @@ struct contact_row {
 /// bodies' accumulated motion.
 /// The caller sets `rA`, `rB`, `normal`, `adjusted_separation`, `adjusted_anchor_gap` and last
 /// step's impulses;
-/// prepare_contacts() computes the rest.
+/// prepare_contacts() computes the rest: the tangents, effective masses and rows. For a point of
+/// a bundled constraint that does not bounce it computes them in the bundle, several points at
+/// once, and leaves the point's own unset.
 struct contact_solver_point {
     /// @var rA
     /// Contact point on A relative to A's centre of mass, world space (m).
