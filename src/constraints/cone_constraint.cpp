@@ -1,4 +1,5 @@
 #include "edyn/constraints/cone_constraint.hpp"
+#include "../math/arctan2.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include <algorithm>
 #include <cmath>
@@ -47,7 +48,7 @@ cone_row current_row(const cone_constraint_solver &s, const joint_pose &pose, co
     // alpha - theta is the argument of (m + i k rho)(x - i rho): one arctangent.
     auto k = s.span_tan[0] * s.span_tan[1];
     auto m = std::sqrt(square(s.span_tan[1] * y) + square(s.span_tan[0] * z));
-    auto C = std::atan2(rho * (k * x - m), x * m + k * rho * rho);
+    auto C = detail::arctan2(rho * (k * x - m), x * m + k * rho * rho);
     // d theta / d r = (cos theta u - sin theta e0) / |r| with u the radial direction; C = alpha
     // - theta grows along n. The point is B's pivot; A's lever arm reaches the same point, since
     // the cone turns with A.

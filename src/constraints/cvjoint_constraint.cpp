@@ -1,4 +1,5 @@
 #include "edyn/constraints/cvjoint_constraint.hpp"
+#include "../math/arctan2.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include <cmath>
 #include <string>
@@ -48,7 +49,7 @@ scalar cvjoint_twist(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept 
     auto swing = shortest_arc(frameA.column(0), axisB);
     auto p = rotate(swing, frameA.column(1));
     auto q = frameB.column(1);
-    return std::atan2(dot(cross(p, q), axisB), dot(p, q));
+    return detail::arctan2(dot(cross(p, q), axisB), dot(p, q));
 }
 
 vector3 cvjoint_twist_axis(const vector3 &axisA, const vector3 &axisB) noexcept {

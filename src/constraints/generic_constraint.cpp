@@ -1,4 +1,5 @@
 #include "edyn/constraints/generic_constraint.hpp"
+#include "../math/arctan2.hpp"
 #include <cmath>
 #include <string>
 
@@ -79,7 +80,7 @@ generic_rows current_rows(const generic_constraint_solver &s, const solver_body 
     auto v = quaternion_vector(q);
     auto sin_half = length(v);
     vector3 rotation = vector3_zero;
-    if (sin_half > scalar(1e-9)) rotation = v * (2 * std::atan2(sin_half, q.w) / sin_half);
+    if (sin_half > scalar(1e-9)) rotation = v * (2 * detail::arctan2(sin_half, q.w) / sin_half);
     rows.rotation = frameA * rotation;
     for (int i = 0; i < 3; ++i) {
         rows.q[3 + i] = rotation[i];

@@ -1,4 +1,5 @@
 #include "edyn/constraints/hinge_constraint.hpp"
+#include "../math/arctan2.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include <cmath>
 
@@ -39,7 +40,7 @@ scalar relative_angle(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept
     auto axis = frameA.column(0);
     auto a1 = frameA.column(1);
     auto b1 = frameB.column(1);
-    return std::atan2(dot(cross(a1, b1), axis), dot(a1, b1));
+    return detail::arctan2(dot(cross(a1, b1), axis), dot(a1, b1));
 }
 
 void warm_start_angular_limit(const angular_limit &limit, const vector3 &axis, solver_body &a,
