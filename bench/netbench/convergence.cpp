@@ -351,17 +351,18 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
         for (std::size_t i = 0; i < copies.size(); ++i) {
             auto m = history[k][i];
             if (quantised) {
+                // Written and read back with the quanta of a snapshot's motion pool.
+                auto fields = [&m](auto &archive) {
+                    edyn::serialize_quantized(archive, m.position, edyn::position_quantum);
+                    edyn::serialize_quantized(archive, m.orientation);
+                    edyn::serialize_quantized(archive, m.linvel, edyn::velocity_quantum);
+                    edyn::serialize_quantized(archive, m.angvel, edyn::velocity_quantum);
+                };
                 auto bytes = std::vector<std::uint8_t>{};
                 auto write = edyn::memory_output_archive(bytes);
-                edyn::serialize_quantized(write, m.position, edyn::position_quantum);
-                edyn::serialize_quantized(write, m.orientation);
-                edyn::serialize_quantized(write, m.linvel, edyn::velocity_quantum);
-                edyn::serialize_quantized(write, m.angvel, edyn::velocity_quantum);
+                fields(write);
                 auto read = edyn::memory_input_archive(bytes.data(), bytes.size());
-                edyn::serialize_quantized(read, m.position, edyn::position_quantum);
-                edyn::serialize_quantized(read, m.orientation);
-                edyn::serialize_quantized(read, m.linvel, edyn::velocity_quantum);
-                edyn::serialize_quantized(read, m.angvel, edyn::velocity_quantum);
+                fields(read);
             }
             rebuilt.replace<edyn::position>(copies[i], m.position);
             rebuilt.replace<edyn::orientation>(copies[i], m.orientation);

@@ -238,8 +238,10 @@ void with_fixed_side(const contact_bundle &bundle, Fn &&fn) {
 }
 
 // A slot is its lanes' points side by side: the k-th scalar of contact_solver_point becomes the
-// slot's k-th array, of one scalar per lane. Filling it is a transposition.
+// slot's k-th array, of one scalar per lane. Filling it is a transposition of the scalars before
+// the rows (make_slot_rows() makes the tangents, masses and rows over them).
 constexpr std::size_t point_scalars = sizeof(contact_solver_point) / sizeof(scalar);
+constexpr std::size_t carried_scalars = offsetof(contact_solver_point, normal_row) / sizeof(scalar);
 static_assert(sizeof(contact_solver_point) == point_scalars * sizeof(scalar) &&
               sizeof(contact_bundle_slot) == point_scalars * lanes * sizeof(scalar));
 static_assert(
@@ -258,7 +260,7 @@ void fill_slot(contact_bundle_slot &slot, const contact_solver_point *(&points)[
     auto *out = reinterpret_cast<scalar *>(&slot);
     std::size_t k = 0;
 #if defined(EDYN_WIDE_AVX2)
-    for (; k + lanes <= point_scalars; k += lanes) {
+    for (; k + lanes <= carried_scalars; k += lanes) {
         __m256 g[lanes];
         for (std::uint32_t i = 0; i < lanes; ++i)
             g[i] = _mm256_loadu_ps(in[i] + k);
@@ -267,7 +269,7 @@ void fill_slot(contact_bundle_slot &slot, const contact_solver_point *(&points)[
             _mm256_storeu_ps(out + (k + r) * lanes, g[r]);
     }
 #elif defined(EDYN_WIDE_SSE2)
-    for (; k + lanes <= point_scalars; k += lanes) {
+    for (; k + lanes <= carried_scalars; k += lanes) {
         __m128 g[lanes];
         for (std::uint32_t i = 0; i < lanes; ++i)
             g[i] = _mm_loadu_ps(in[i] + k);
@@ -276,7 +278,7 @@ void fill_slot(contact_bundle_slot &slot, const contact_solver_point *(&points)[
             _mm_storeu_ps(out + (k + r) * lanes, g[r]);
     }
 #endif
-    for (; k < point_scalars; ++k)
+    for (; k < carried_scalars; ++k)
         for (std::uint32_t i = 0; i < lanes; ++i)
             out[k * lanes + i] = in[i][k];
 }
@@ -338,7 +340,7 @@ wide make_wide_row(scalar (&to)[4][3][lanes], wide_mask active, const wide_inert
 }
 
 // The tangents, rows and effective masses of a slot's lanes from their normals and lever arms,
-// as make_point_rows() works them out one point at a time (plane_space() included, both of its
+// as prepare_contacts() works them out one point at a time (plane_space() included, both of its
 // branches taken and the lane's chosen); zeros in the lanes without a point.
 void make_slot_rows(contact_bundle_slot &slot, wide_mask active, const wide_inertia &a,
                     const wide_inertia &b) {
@@ -375,11 +377,7 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
         if (moves(bodies[bundle.body[0][i]])) bundle.moves_a |= 1u << i;
         if (moves(bodies[bundle.body[1][i]])) bundle.moves_b |= 1u << i;
     }
-    static const contact_solver_point empty_point = [] {
-        contact_solver_point p{};
-        p.rA = p.rB = p.normal = p.tangent[0] = p.tangent[1] = vector3_zero;
-        return p;
-    }();
+    static const contact_solver_point empty_point{}; // zeros
     // The rows of the lanes' points are made here, side by side (prepare_contacts() left them).
     auto inertia_a = gather_inertia(bodies.data(), bundle.body[0]);
     auto inertia_b = gather_inertia(bodies.data(), bundle.body[1]);

@@ -240,14 +240,12 @@ void gather_contacts(registry &registry, world_state &world) {
 
     // ...then each contact is given its colour in that order, on this thread: the colour after
     // those of the earlier contacts it shares a moving body with.
-    world.contact_manifolds.clear();
     world.contact_colours.clear();
     world.contact_places.clear();
     world.colouring.reset(world.bodies);
     for (std::uint32_t i = 0; i < num_edges; ++i) {
         auto &edge = world.edge_contacts[i];
         if (edge.num_points == 0) continue;
-        world.contact_manifolds.push_back(world.island_edges[i]);
         world.contact_colours.push_back(world.colouring.assign(edge.body[0], edge.body[1], edge.num_points));
         world.contact_places.push_back({0, 0, edge.num_points, edge.slot});
     }
@@ -256,7 +254,7 @@ void gather_contacts(registry &registry, world_state &world) {
     auto &contacts = world.contacts;
     world.colouring.colour_ranges(contacts.colour_begin);
     contacts.constraints.resize(contacts.colour_begin.back());
-    auto num_contacts = static_cast<std::uint32_t>(world.contact_manifolds.size());
+    auto num_contacts = static_cast<std::uint32_t>(world.contact_places.size());
     std::uint32_t num_points = 0;
     for (std::uint32_t k = 0; k < num_contacts; ++k) {
         auto &place = world.contact_places[k];

@@ -60,9 +60,7 @@ struct world_state {
     std::vector<entity> island_edges;
     /// The contact of each of island_edges.
     std::vector<edge_contact> edge_contacts;
-    /// The manifolds solved this step, in the order found (a constraint's `source` indexes this).
-    std::vector<entity> contact_manifolds;
-    /// The colour each of contact_manifolds was given.
+    /// The colour each contact solved this step was given, in the order found.
     std::vector<std::uint32_t> contact_colours;
     /// Where a contact's constraint and points go in `contacts`.
     struct contact_place {
@@ -71,7 +69,8 @@ struct world_state {
         std::uint32_t num_points{0};  ///< Its number of points.
         std::uint32_t slot{0};        ///< Where the manifold lies in its pool (`storage::value_at`).
     };
-    /// The place of each of contact_manifolds' constraints in `contacts`.
+    /// The place of each contact solved this step, in the order found (a constraint's `source`
+    /// indexes this), with its manifold's place in the pool.
     std::vector<contact_place> contact_places;
     /// Assigns colours to contacts, so that those of one colour share no moving body.
     constraint_colouring colouring;
