@@ -104,8 +104,18 @@ quaternion turn(const quaternion &q, const vector3 &dw) noexcept {
     return normalize(r);
 }
 
-// Moves A by +p and B by -p applied at the lever arms, as a position-level impulse, and changes
-// their velocities by that motion over the sub-step.
+// -[r] I [r] for a symmetric I: entry (i, j) is (e_i x r) . I (e_j x r), symmetric, built from
+// the rows of [r] without a full matrix product.
+matrix3x3 lever_inertia(const vector3 &r, const matrix3x3 &inv_inertia) noexcept {
+    const vector3 s[3]{{0, -r.z, r.y}, {r.z, 0, -r.x}, {-r.y, r.x, 0}};
+    const vector3 u[3]{inv_inertia * s[0], inv_inertia * s[1], inv_inertia * s[2]};
+    auto k00 = dot(s[0], u[0]), k01 = dot(s[0], u[1]), k02 = dot(s[0], u[2]);
+    auto k11 = dot(s[1], u[1]), k12 = dot(s[1], u[2]), k22 = dot(s[2], u[2]);
+    return {{{k00, k01, k02}, {k01, k11, k12}, {k02, k12, k22}}};
+}
+
+} // namespace
+
 void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
                             const vector3 &rB, scalar inv_h) noexcept {
     auto dvA = p * a.inv_mass, dwA = a.inv_inertia * cross(rA, p);
@@ -124,22 +134,24 @@ void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, co
     }
 }
 
-// -[r] I [r] for a symmetric I: entry (i, j) is (e_i x r) . I (e_j x r), symmetric, built from
-// the rows of [r] without a full matrix product.
-matrix3x3 lever_inertia(const vector3 &r, const matrix3x3 &inv_inertia) noexcept {
-    const vector3 s[3]{{0, -r.z, r.y}, {r.z, 0, -r.x}, {-r.y, r.x, 0}};
-    const vector3 u[3]{inv_inertia * s[0], inv_inertia * s[1], inv_inertia * s[2]};
-    auto k00 = dot(s[0], u[0]), k01 = dot(s[0], u[1]), k02 = dot(s[0], u[2]);
-    auto k11 = dot(s[1], u[1]), k12 = dot(s[1], u[2]), k22 = dot(s[2], u[2]);
-    return {{{k00, k01, k02}, {k01, k11, k12}, {k02, k12, k22}}};
+matrix3x3 lever_product(const vector3 &u, const matrix3x3 &inv_inertia, const vector3 &v) noexcept {
+    // Entry (i, j) is (e_i x u) . I (e_j x v).
+    const vector3 s[3]{{0, -u.z, u.y}, {u.z, 0, -u.x}, {-u.y, u.x, 0}};
+    const vector3 t[3]{{0, -v.z, v.y}, {v.z, 0, -v.x}, {-v.y, v.x, 0}};
+    const vector3 w[3]{inv_inertia * t[0], inv_inertia * t[1], inv_inertia * t[2]};
+    return {{{dot(s[0], w[0]), dot(s[0], w[1]), dot(s[0], w[2])},
+             {dot(s[1], w[0]), dot(s[1], w[1]), dot(s[1], w[2])},
+             {dot(s[2], w[0]), dot(s[2], w[1]), dot(s[2], w[2])}}};
 }
 
-} // namespace
+matrix3x3 point_mass_matrix(const solver_body &a, const solver_body &b, const joint_pose &pose) noexcept {
+    return diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) + lever_inertia(pose.rA, a.inv_inertia) +
+           lever_inertia(pose.rB, b.inv_inertia);
+}
 
 bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_pose &pose,
                         matrix3x3 &inverse_k) noexcept {
-    auto k = diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) +
-             lever_inertia(pose.rA, a.inv_inertia) + lever_inertia(pose.rB, b.inv_inertia);
+    auto k = point_mass_matrix(a, b, pose);
     // The inverse from the cofactors, whose first dot product is the determinant.
     auto c0 = cross(k[1], k[2]), c1 = cross(k[2], k[0]), c2 = cross(k[0], k[1]);
     auto det = dot(k[0], c0);

@@ -96,6 +96,22 @@ void gather_constraints(const registry &registry, constraint_solver_state &state
     state.colouring.reset(bodies);
     for_each_batch(state, [&](auto &batch) { gather_batch(registry, batch, body_index, state.colouring); });
     number_colour_blocks(state);
+
+    state.projected_pivots.clear();
+    state.other_projected.clear();
+    for_each_batch(state, [&](auto &batch) {
+        for (auto &s : batch.solvers) {
+            if constexpr (requires { projected_pivots(s); }) {
+                if (auto *anchor = projected_pivots(s)) state.projected_pivots.push_back(anchor);
+            } else if constexpr (requires {
+                                     project_positions(s, std::span<solver_body>{}, scalar(1), scalar(1));
+                                 }) {
+                state.other_projected.push_back(s.anchor.body[0]);
+                state.other_projected.push_back(s.anchor.body[1]);
+            }
+        }
+    });
+    build_joint_paths(state.paths, state.projected_pivots, state.other_projected, bodies);
 }
 
 namespace {
@@ -164,11 +180,20 @@ void solve_joint_constraints(constraint_solver_state &state, std::span<solver_bo
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
                              const constraint_solver_settings &settings) {
     if (settings.position_projection <= 0) return;
-    // Each joint's projection moves bodies that other joints share: in a chain one pass leaves
-    // the error spread along it, and a few passes gather it out.
-    // Every pass reuses the effective mass of the sub-step's warm start: K changes little over
-    // one sub-step's motion (see project_point).
+    // Each pass solves every path of pivots exactly, then the other joints one at a time; the
+    // paths meet one another, and those joints, at shared bodies, which a few passes settle.
+    // Every pass reuses the factors of the pass's first: K changes little over a sub-step's
+    // corrections.
+    bool others = false;
+    for_each_batch(state, [&](auto &batch) {
+        using solver = typename std::decay_t<decltype(batch.solvers)>::value_type;
+        if constexpr (requires(solver & s) { project_positions(s, bodies, scalar(1), scalar(1)); })
+            others = others || !batch.solvers.empty();
+    });
     for (unsigned pass = 0; pass < settings.position_projection_iterations; ++pass) {
+        project_joint_paths(state.paths, bodies, settings.position_projection, state.inv_h, pass == 0,
+                            state.scheduler);
+        if (!others) continue;
         for_each_in_colour_order(state, [&](auto &s) {
             if constexpr (requires {
                               project_positions(s, bodies, settings.position_projection, state.inv_h);

@@ -88,3 +88,20 @@ TEST_F(joint_scenes, chain_hangs_straight_down_with_its_links_joined) {
     auto end = edyn::test::world_pivot(reg, chain.links.back(), {link_length / 2, 0, 0});
     EXPECT_LT(end.y, top.y - link_length * links * scalar(0.7)) << "free end at y = " << end.y;
 }
+
+TEST_F(joint_scenes, a_hundred_link_chain_swinging_down_keeps_its_joints_closed) {
+    // edyn-bench's chain: 100 links of 0.5 m released horizontally. Its free end whips round
+    // at the bottom of the swing, and links fold into one another. Projected one joint at a
+    // time, its joints opened by up to 10.4 mm; as one path solved at once, by micrometres.
+    auto chain = scenes::make_chain(reg, 100, scalar(0.5), vector3_zero);
+    scalar worst = 0;
+    for (int i = 0; i < 60 * 10; ++i) {
+        edyn::test::step(reg);
+        for (auto e : chain.joints) {
+            auto &c = reg.get<point_constraint>(e);
+            worst = std::max(worst, distance(edyn::test::world_pivot(reg, c.body[0], c.pivot[0]),
+                                             edyn::test::world_pivot(reg, c.body[1], c.pivot[1])));
+        }
+    }
+    EXPECT_LT(worst, scalar(0.001)) << "largest pivot separation " << worst << " m";
+}

@@ -242,6 +242,35 @@ void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &i
 void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
                    scalar inv_h) noexcept;
 
+/// Moves the bodies by a position-level impulse: +p on A at the lever arm rA, -p on B at rB, as
+/// an impulse p would change their velocities, applied to their `delta_position` and
+/// `delta_rotation` instead; their velocities change by that motion over the sub-step (see
+/// project_point()). Bodies that do not move are not written.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param p The position-level impulse on A (kg m, world space).
+/// @param rA Lever arm on A, from its centre of mass, world space (m).
+/// @param rB Lever arm on B, from its centre of mass, world space (m).
+/// @param inv_h 1 / h of the sub-step just integrated (1/s).
+void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
+                            const vector3 &rB, scalar inv_h) noexcept;
+
+/// -[u] I [v] for a symmetric I, [x] the cross-product matrix of x: how a point at lever arm u
+/// of a body moves, through the body's turning, under a unit impulse at lever arm v.
+/// @param u The lever arm of the point that moves (m).
+/// @param inv_inertia The body's inverse inertia, world space.
+/// @param v The lever arm of the impulse (m).
+/// @return The 3x3 matrix, symmetric when u equals v.
+matrix3x3 lever_product(const vector3 &u, const matrix3x3 &inv_inertia, const vector3 &v) noexcept;
+
+/// The pivots' effective mass matrix K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB]:
+/// how the pivot separation changes under a position-level impulse at the pivots.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param pose The current pose, from current_pose().
+/// @return K, symmetric.
+matrix3x3 point_mass_matrix(const solver_body &a, const solver_body &b, const joint_pose &pose) noexcept;
+
 /// Squared pivot separation (m²) beyond which a joint's reused effective mass is recomputed:
 /// past a centimetre, corrections turn the bodies enough to make it diverge.
 inline constexpr scalar large_point_separation_sqr = scalar(1e-4);

@@ -8,6 +8,7 @@
 #include "edyn/constraints/generic_constraint.hpp"
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/constraints/hinge_constraint.hpp"
+#include "edyn/constraints/joint_paths.hpp"
 #include "edyn/constraints/null_constraint.hpp"
 #include "edyn/constraints/point_constraint.hpp"
 #include "edyn/constraints/soft_distance_constraint.hpp"
@@ -38,11 +39,12 @@ struct constraint_solver_settings {
     /// sub-step's integration (see project_point); 0 leaves it to the soft correction alone.
     /// Default 1. While it is above 0 the pivot rows carry no position bias.
     scalar position_projection{1};
-    /// Passes of that projection over all the joints. Joined bodies of very different masses
-    /// (a rag doll's head on its neck) stretch their joints by centimetres under impacts with
-    /// one pass at 60 Hz, by millimetres with four.
-    /// Default 4.
-    unsigned position_projection_iterations{4};
+    /// Passes of that projection over all the joints. Each pass solves every run of joints
+    /// linked one after another (a chain, a limb) exactly (see joint_path_set); the passes
+    /// settle the bodies where such runs meet (a rag doll's pelvis and chest). With 3 passes the
+    /// 64 rag dolls of edyn-bench open their joints by at most 0.08 mm, with 2 by 0.4 mm.
+    /// Default 3.
+    unsigned position_projection_iterations{3};
 };
 
 /// The constraints of one type as the solver sees them this step, and where they came from, in
@@ -88,6 +90,12 @@ struct constraint_solver_state {
     std::vector<std::uint32_t> colour_block_begin;
     /// What the threads of a pass over those blocks share (see parallel_for_stages).
     stage_sync block_sync;
+    /// The pivots the position projection brings together, cut into paths solved exactly.
+    joint_path_set paths;
+    /// Scratch for building `paths`: every projected pivot in the order gathered.
+    std::vector<joint_anchor *> projected_pivots;
+    /// Scratch for building `paths`: the bodies of the other joints the projection moves.
+    std::vector<solver_body_index> other_projected;
     /// The threads each colour's joints are spread over. Null runs every pass on the calling
     /// thread. Not owned.
     task_scheduler *scheduler{nullptr};

@@ -150,17 +150,13 @@ void solve(generic_constraint_solver &s, std::span<solver_body> bodies,
 /// @param s The solver state after the step.
 /// @param c The constraint component.
 void store_impulses(const generic_constraint_solver &s, generic_constraint &c) noexcept;
-/// With all three linear degrees of freedom locked, the pivots are held as a ball joint's.
-/// Position projection of the pivots after a sub-step's integration (see project_point());
-/// does nothing otherwise.
+/// The pivots position projection brings together after a sub-step's integration (see
+/// joint_path_set): with all three linear degrees of freedom locked, they are held as a ball
+/// joint's.
 /// @param s The solver state.
-/// @param bodies The step's solver bodies.
-/// @param fraction Share of the pivots' separation removed, in [0, 1].
-/// @param inv_h 1 / h of the sub-step (1/s).
-inline void project_positions(generic_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
-                              scalar inv_h) noexcept {
-    if (s.linear_block)
-        project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
+/// @return Its anchor, or null when a linear axis is free or limited.
+inline joint_anchor *projected_pivots(generic_constraint_solver &s) noexcept {
+    return s.linear_block ? &s.anchor : nullptr;
 }
 
 } // namespace edyn

@@ -239,15 +239,11 @@ void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
 /// @param s The solver state after the step.
 /// @param c The constraint component.
 void store_impulses(const hinge_constraint_solver &s, hinge_constraint &c) noexcept;
-/// Position projection of the pivots after a sub-step's integration (see project_point()).
+/// The pivots position projection brings together after a sub-step's integration (see
+/// joint_path_set).
 /// @param s The solver state.
-/// @param bodies The step's solver bodies.
-/// @param fraction Share of the pivots' separation removed, in [0, 1].
-/// @param inv_h 1 / h of the sub-step (1/s).
-inline void project_positions(hinge_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
-                              scalar inv_h) noexcept {
-    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
-}
+/// @return Its anchor.
+inline joint_anchor *projected_pivots(hinge_constraint_solver &s) noexcept { return &s.anchor; }
 
 /// Shared with the other joints that align an axis: two angular rows keeping axisB parallel to
 /// axisA, measured against A's two other axes (frame columns 1 and 2).

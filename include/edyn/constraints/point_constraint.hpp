@@ -69,15 +69,11 @@ void solve(point_constraint_solver &s, std::span<solver_body> bodies,
 /// @param s The solver state after the step.
 /// @param c The constraint component.
 void store_impulses(const point_constraint_solver &s, point_constraint &c) noexcept;
-/// Position projection of the pivots after a sub-step's integration (see project_point()).
+/// The pivots position projection brings together after a sub-step's integration (see
+/// joint_path_set).
 /// @param s The solver state.
-/// @param bodies The step's solver bodies.
-/// @param fraction Share of the pivots' separation removed, in [0, 1].
-/// @param inv_h 1 / h of the sub-step (1/s).
-inline void project_positions(point_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
-                              scalar inv_h) noexcept {
-    project_point(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction, inv_h);
-}
+/// @return Its anchor.
+inline joint_anchor *projected_pivots(point_constraint_solver &s) noexcept { return &s.anchor; }
 
 /// Solves the 3x3 block keeping the pivots together (shared by the joints that contain a ball
 /// joint): impulse accumulates the linear impulse of the sub-step.

@@ -144,7 +144,7 @@ vector3 get_gravity(const registry &registry);
 /// integrates velocities, runs the restitution solver, warm starts, makes one biased velocity
 /// iteration over every contact and joint row, integrates positions, projects the joints'
 /// positions, then makes the relax iterations (velocity iterations without position bias).
-/// Defaults: 6 sub-steps, 1 relax iteration, 4 position projection passes (settings.hpp).
+/// Defaults: 6 sub-steps, 1 relax iteration, 3 position projection passes (settings.hpp).
 /// More sub-steps give stiffer, more accurate contacts and joints, at a proportional cost.
 /// @param registry An attached registry.
 /// @param substeps Sub-steps per step, in [1, `max_solver_substeps`].
@@ -186,7 +186,7 @@ unsigned get_solver_velocity_iterations(const registry &registry);
 /// Stored in settings.joint.position_projection_iterations; 0 leaves joint drift to the soft
 /// velocity correction alone. Contacts have no position iterations.
 /// @param registry An attached registry.
-/// @param iterations Projection passes per sub-step, in [0, `max_solver_iterations`]; default 4.
+/// @param iterations Projection passes per sub-step, in [0, `max_solver_iterations`]; default 3.
 /// @throws std::invalid_argument Naming the function and the value, when `iterations` is
 /// outside that range, or when the registry is not attached.
 void set_solver_position_iterations(registry &registry, unsigned iterations);
