@@ -116,22 +116,18 @@ matrix3x3 lever_inertia(const vector3 &r, const matrix3x3 &inv_inertia) noexcept
 
 } // namespace
 
+void move_body(solver_body &body, const vector3 &dv, const vector3 &dw, scalar inv_h) noexcept {
+    if (!moves(body)) return;
+    body.delta_position += dv;
+    body.delta_rotation = turn(body.delta_rotation, dw);
+    body.linvel += dv * inv_h;
+    body.angvel += dw * inv_h;
+}
+
 void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
                             const vector3 &rB, scalar inv_h) noexcept {
-    auto dvA = p * a.inv_mass, dwA = a.inv_inertia * cross(rA, p);
-    auto dvB = -p * b.inv_mass, dwB = b.inv_inertia * cross(rB, -p);
-    if (moves(a)) {
-        a.delta_position += dvA;
-        a.delta_rotation = turn(a.delta_rotation, dwA);
-        a.linvel += dvA * inv_h;
-        a.angvel += dwA * inv_h;
-    }
-    if (moves(b)) {
-        b.delta_position += dvB;
-        b.delta_rotation = turn(b.delta_rotation, dwB);
-        b.linvel += dvB * inv_h;
-        b.angvel += dwB * inv_h;
-    }
+    move_body(a, p * a.inv_mass, a.inv_inertia * cross(rA, p), inv_h);
+    move_body(b, -p * b.inv_mass, b.inv_inertia * cross(rB, -p), inv_h);
 }
 
 matrix3x3 lever_product(const vector3 &u, const matrix3x3 &inv_inertia, const vector3 &v) noexcept {
@@ -149,9 +145,9 @@ matrix3x3 point_mass_matrix(const solver_body &a, const solver_body &b, const jo
            lever_inertia(pose.rB, b.inv_inertia);
 }
 
-bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_pose &pose,
-                        matrix3x3 &inverse_k) noexcept {
-    auto k = point_mass_matrix(a, b, pose);
+namespace {
+
+bool invert_point_mass(const matrix3x3 &k, matrix3x3 &inverse_k) noexcept {
     // The inverse from the cofactors, whose first dot product is the determinant.
     auto c0 = cross(k[1], k[2]), c1 = cross(k[2], k[0]), c2 = cross(k[0], k[1]);
     auto det = dot(k[0], c0);
@@ -160,9 +156,27 @@ bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_
     return valid;
 }
 
+} // namespace
+
+bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_pose &pose,
+                        matrix3x3 &inverse_k) noexcept {
+    return invert_point_mass(point_mass_matrix(a, b, pose), inverse_k);
+}
+
 void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
                        const joint_pose &pose) noexcept {
     anchor.point_mass_valid = inverse_point_mass(a, b, pose, anchor.point_mass);
+}
+
+void keep_point_mass(joint_anchor &anchor, const matrix3x3 &k) noexcept {
+    anchor.point_mass_valid = invert_point_mass(k, anchor.point_mass);
+    anchor.point_mass_current = true;
+}
+
+void warm_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
+                     const joint_pose &pose) noexcept {
+    if (!anchor.point_mass_current) update_point_mass(anchor, a, b, pose);
+    anchor.point_mass_current = false;
 }
 
 void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,

@@ -145,7 +145,7 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto &pose = s.anchor.pose;
-    update_point_mass(s.anchor, a, b, pose);
+    warm_point_mass(s.anchor, a, b, pose);
     auto &axis = s.twist_axis;
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     apply_row_impulse(angular_jacobian(-axis), a, b, s.twist_impulse);

@@ -119,7 +119,7 @@ void warm_start(generic_constraint_solver &s, std::span<solver_body> bodies) noe
     auto &b = bodies[s.anchor.body[1]];
     auto &rows = s.rows;
     auto &pose = s.anchor.pose;
-    if (s.linear_block) update_point_mass(s.anchor, a, b, pose);
+    if (s.linear_block) warm_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.linear_block_impulse, pose.rA, pose.rB);
     apply_angular_impulse(a, b, s.angular_block_impulse);
     for (int i = 0; i < 6; ++i) {

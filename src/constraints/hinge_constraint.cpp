@@ -190,7 +190,7 @@ void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexc
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto &pose = s.anchor.pose;
-    update_point_mass(s.anchor, a, b, pose);
+    warm_point_mass(s.anchor, a, b, pose);
     auto axis = s.present_frameA.column(0);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     for (int i = 0; i < 2; ++i) {

@@ -159,12 +159,15 @@ namespace {
 // taken where the sub-step's warm start measured it, a sub-step's turning earlier, it no longer
 // matches the separations, and the whipping end of a swinging 100-link chain blew up within
 // 200 steps. False when a block cannot be inverted.
+// Each joint's own K is kept for the relax pass and the next sub-step's velocity passes (see
+// keep_point_mass), which would otherwise measure it again at nearly the same poses.
 bool factor_path(joint_path_set &set, std::uint32_t first, std::uint32_t last,
                  std::span<const solver_body> bodies) {
     for (auto k = first; k < last; ++k) {
         auto &anchor = *set.anchors[k];
         auto &pose = set.poses[k];
         auto d = point_mass_matrix(bodies[anchor.body[0]], bodies[anchor.body[1]], pose);
+        keep_point_mass(anchor, d);
         if (k > first) {
             // K_k-1,k: how pivot k-1 moves under an impulse at pivot k, through their shared body;
             // the sign is + when the body is on the same side of both joints.
@@ -228,10 +231,33 @@ void project_path(joint_path_set &set, std::uint32_t p, std::span<solver_body> b
     work[last - 1] = set.inverse_pivot[last - 1] * work[last - 1];
     for (auto k = last - 1; k-- > first;)
         work[k] = set.inverse_pivot[k] * work[k] - set.coupling[k + 1] * work[k + 1];
+    // Each body moves once: a body shared by two pivots takes both their corrections in one turn.
+    vector3 carried_dv = vector3_zero, carried_dw = vector3_zero;
     for (auto k = first; k < last; ++k) {
         auto &anchor = *set.anchors[k];
-        apply_position_impulse(bodies[anchor.body[0]], bodies[anchor.body[1]], work[k], set.poses[k].rA,
-                               set.poses[k].rB, inv_h);
+        auto &pose = set.poses[k];
+        vector3 dv[2], dw[2];
+        for (unsigned side = 0; side < 2; ++side) {
+            auto &body = bodies[anchor.body[side]];
+            auto p = side == 0 ? work[k] : -work[k];
+            dv[side] = p * body.inv_mass;
+            dw[side] = body.inv_inertia * cross(side == 0 ? pose.rA : pose.rB, p);
+        }
+        if (k > first) {
+            auto side = set.shared_side[k] & 1;
+            dv[side] += carried_dv;
+            dw[side] += carried_dw;
+        }
+        // The body shared with the next pivot waits for that pivot's correction.
+        auto carried_side = k + 1 < last ? (set.shared_side[k + 1] >> 1) & 1 : 2u;
+        for (unsigned side = 0; side < 2; ++side) {
+            if (side == carried_side) {
+                carried_dv = dv[side];
+                carried_dw = dw[side];
+            } else {
+                move_body(bodies[anchor.body[side]], dv[side], dw[side], inv_h);
+            }
+        }
     }
 }
 

@@ -24,7 +24,7 @@ void warm_start(point_constraint_solver &s, std::span<solver_body> bodies) noexc
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
     auto &pose = s.anchor.pose;
-    update_point_mass(s.anchor, a, b, pose);
+    warm_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     apply_angular_impulse(a, b, s.friction_impulse);
 }

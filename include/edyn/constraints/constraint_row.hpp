@@ -59,6 +59,10 @@ struct joint_anchor {
     matrix3x3 point_mass{matrix3x3_zero};
     /// Whether `point_mass` holds an inverse: false when K is singular (neither body moves).
     bool point_mass_valid{false};
+    /// Whether the position projection measured `point_mass` after the last integration (see
+    /// joint_path_set): the next warm start keeps it instead of measuring K again (see
+    /// warm_point_mass()).
+    bool point_mass_current{false};
     /// The pivots at the bodies' present poses, kept by refresh_pose(). Only integration and
     /// position projection move bodies, so the solver refreshes it after them and the velocity
     /// passes between (relax, the next sub-step's warm start and biased pass) all read it.
@@ -242,6 +246,14 @@ void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &i
 void project_point(joint_anchor &anchor, solver_body &a, solver_body &b, scalar fraction,
                    scalar inv_h) noexcept;
 
+/// Moves a body by `dv` and turns it by `dw` in its `delta_position` and `delta_rotation`, and
+/// changes its velocities by that motion over the sub-step; a body that does not move is left.
+/// @param body The body's solver state.
+/// @param dv Its displacement (m, world space).
+/// @param dw Its turn, as a rotation vector (rad, world space).
+/// @param inv_h 1 / h of the sub-step just integrated (1/s).
+void move_body(solver_body &body, const vector3 &dv, const vector3 &dw, scalar inv_h) noexcept;
+
 /// Moves the bodies by a position-level impulse: +p on A at the lever arm rA, -p on B at rB, as
 /// an impulse p would change their velocities, applied to their `delta_position` and
 /// `delta_rotation` instead; their velocities change by that motion over the sub-step (see
@@ -293,6 +305,24 @@ bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_
 /// @param pose The current pose, from current_pose().
 void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
                        const joint_pose &pose) noexcept;
+
+/// Sets `anchor.point_mass` to the inverse of K, as update_point_mass() does, from a K measured
+/// by the caller, and marks it current: the next warm_point_mass() keeps it.
+/// @param anchor The joint's pivots; its `point_mass`, `point_mass_valid` and
+/// `point_mass_current` are written.
+/// @param k The pivots' effective mass matrix, from point_mass_matrix().
+void keep_point_mass(joint_anchor &anchor, const matrix3x3 &k) noexcept;
+
+/// The warm start's update_point_mass(): skipped once when the position projection measured K
+/// after the integration just before (`anchor.point_mass_current`), at poses that the
+/// projection's corrections have moved by micrometres since.
+/// @param anchor The joint's pivots; its `point_mass`, `point_mass_valid` and
+/// `point_mass_current` are written.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @param pose The current pose, from current_pose().
+void warm_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
+                     const joint_pose &pose) noexcept;
 /// The same along the pivots' direction only, to bring them `distance` apart.
 /// Position projection of the distance joint; does nothing when the pivots coincide.
 /// @param anchor The joint's pivots at the start of the step.

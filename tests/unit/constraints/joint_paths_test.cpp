@@ -189,6 +189,47 @@ TEST(joint_paths, a_pass_moves_the_bodies_only_as_the_joints_pull_them) {
     EXPECT_LT(world.worst_separation(), scalar(2e-5)) << "a free path of two joints is closed in one pass";
 }
 
+// The factors measure each joint's own K at the poses after the integration; the next warm start
+// takes its inverse from them once instead of measuring it again.
+TEST(joint_paths, a_factored_pass_hands_each_joint_its_mass_for_the_next_warm_start) {
+    auto world = make_chain(5, {0, scalar(-0.002), 0});
+    world.build();
+    // The factors measure K before the pass moves the bodies.
+    std::vector<matrix3x3> before;
+    for (auto *anchor : world.pivots) {
+        auto &a = world.bodies[anchor->body[0]];
+        auto &b = world.bodies[anchor->body[1]];
+        ASSERT_TRUE(inverse_point_mass(a, b, current_pose(*anchor, a, b), before.emplace_back()));
+        EXPECT_FALSE(anchor->point_mass_current);
+    }
+    project_joint_paths(world.paths, world.bodies, 1, 60, true, nullptr);
+    for (std::size_t k = 0; k < world.pivots.size(); ++k) {
+        auto *anchor = world.pivots[k];
+        auto &a = world.bodies[anchor->body[0]];
+        auto &b = world.bodies[anchor->body[1]];
+        ASSERT_TRUE(anchor->point_mass_current);
+        ASSERT_TRUE(anchor->point_mass_valid);
+        auto &expected = before[k];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_NEAR(anchor->point_mass[i][j], expected[i][j], std::abs(expected[i][j]) * 1e-5 + 1e-6);
+
+        // Kept once, even for a pose far from the one measured...
+        auto far = current_pose(*anchor, a, b);
+        far.rA = far.rA * scalar(3);
+        warm_point_mass(*anchor, a, b, far);
+        EXPECT_FALSE(anchor->point_mass_current);
+        EXPECT_NEAR(anchor->point_mass[0][0], expected[0][0], std::abs(expected[0][0]) * 1e-5);
+        // ...then measured at the pose given.
+        warm_point_mass(*anchor, a, b, far);
+        matrix3x3 at_far;
+        ASSERT_EQ(inverse_point_mass(a, b, far, at_far), anchor->point_mass_valid);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_EQ(anchor->point_mass[i][j], at_far[i][j]);
+    }
+}
+
 TEST(joint_paths, passes_give_the_same_bits_on_any_thread_count) {
     // Many chains and Y shapes with random gaps, joints listed in a random order.
     auto make = [] {
