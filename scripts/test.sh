@@ -6,6 +6,9 @@
 #   scripts/test.sh --tsan     ThreadSanitizer in build-tsan/
 #                              (sanitizer builds leave out the benchmarks and the demo)
 #   scripts/test.sh --double   edyn::scalar = double in build-double/
+#   --only=T1,T2               builds only these test targets (and the library) and runs only
+#                              their tests (those labelled T1 or T2), e.g. the threaded tests
+#                              under ThreadSanitizer in CI
 # Other arguments are passed to ctest (e.g. -R registry, -L edyn-test-math).
 # Warnings are errors when CI is set or with --werror. Sanitizer builds, and every build under CI,
 # keep line tables only (-g1): stack traces still name file and line, and compiling takes about a
@@ -23,12 +26,14 @@ ctest_args=()
 sanitized=(-DEDYN_BUILD_BENCH=OFF -DEDYN_BUILD_EXAMPLES=OFF -DEDYN_BUILD_DOCS=OFF -DEDYN_BUILD_TESTBED=OFF
            "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
 werror=${CI:+ON}
+only=()
 for arg in "$@"; do
   case "$arg" in
     --asan) build_dir=build-asan; cmake_args+=(-DEDYN_SANITIZE=address "${sanitized[@]}") ;;
     --tsan) build_dir=build-tsan; cmake_args+=(-DEDYN_SANITIZE=thread "${sanitized[@]}") ;;
     --double) build_dir=build-double; cmake_args+=(-DEDYN_DOUBLE_PRECISION=ON) ;;
     --werror) werror=ON ;;
+    --only=*) IFS=, read -ra only <<<"${arg#--only=}" ;;
     *) ctest_args+=("$arg") ;;
   esac
 done
@@ -43,7 +48,12 @@ fi
 bash scripts/deps.sh
 jobs=$(nproc)
 cmake -S . -B "$build_dir" "${cmake_args[@]}" >/dev/null
-cmake --build "$build_dir" -j "$jobs"
+if [ ${#only[@]} -gt 0 ]; then
+  cmake --build "$build_dir" -j "$jobs" --target "${only[@]}"
+  ctest_args+=(-L "^($(IFS='|'; echo "${only[*]}"))\$")
+else
+  cmake --build "$build_dir" -j "$jobs"
+fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
