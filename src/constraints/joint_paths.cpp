@@ -158,9 +158,9 @@ namespace {
 // pivot to its last: D_k = K_kk - K_k,k-1 D_k-1^-1 K_k-1,k. K is measured at the present poses:
 // taken where the sub-step's warm start measured it, a sub-step's turning earlier, it no longer
 // matches the separations, and the whipping end of a swinging 100-link chain blew up within
-// 200 steps. False when a block cannot be inverted.
-// Each joint's own K is kept for the relax pass and the next sub-step's velocity passes (see
-// keep_point_mass), which would otherwise measure it again at nearly the same poses.
+// 200 steps. Each joint's own K_kk is kept for the relax pass and the next sub-step's velocity
+// passes (keep_point_mass), which would otherwise measure it again at nearly the same poses.
+// False when a block cannot be inverted.
 bool factor_path(joint_path_set &set, std::uint32_t first, std::uint32_t last,
                  std::span<const solver_body> bodies) {
     for (auto k = first; k < last; ++k) {

@@ -52,10 +52,12 @@ struct joint_anchor {
     /// Pivot B relative to body B's centre of mass, world space (m), at the start of the step.
     vector3 rA{vector3_zero}, rB{vector3_zero};
     vector3 separation{vector3_zero}; ///< Pivot A minus pivot B, world space (m).
-    /// Inverse of the pivots' 3x3 effective mass K (kg) at the pose update_point_mass() last saw.
+    /// Inverse of the pivots' 3x3 effective mass K (kg) at the pose it was last measured at.
     /// K depends only on the bodies' poses and masses, so the velocity passes reuse it until the
-    /// bodies move far: it is refreshed at each sub-step's warm start, and the position passes
-    /// after the sub-step's integration and the relax pass reuse it.
+    /// bodies move far. A joint of a path of two or more (see joint_path_set) has it measured by
+    /// its path's factors after each sub-step's integration, for the relax pass and the next
+    /// sub-step's warm start and biased pass; any other joint has it measured at each sub-step's
+    /// warm start, and its position and relax passes reuse it.
     matrix3x3 point_mass{matrix3x3_zero};
     /// Whether `point_mass` holds an inverse: false when K is singular (neither body moves).
     bool point_mass_valid{false};
