@@ -161,11 +161,13 @@ scalar min_over_surface(const placed_polyhedron &poly, const std::function<scala
 // one of them, so the smallest signed distance along all edges finds it.
 scalar polyhedra_distance(const placed_polyhedron &a, const placed_polyhedron &b) {
     auto best = large_scalar;
-    for (auto &[e0, e1] : a.edges) {
-        best = std::min(best, convex_min([&](scalar t) { return polyhedron_sdf(b, lerp(e0, e1, t)); }));
+    for (auto &edge : a.edges) {
+        best = std::min(
+            best, convex_min([&](scalar t) { return polyhedron_sdf(b, lerp(edge.first, edge.second, t)); }));
     }
-    for (auto &[e0, e1] : b.edges) {
-        best = std::min(best, convex_min([&](scalar t) { return polyhedron_sdf(a, lerp(e0, e1, t)); }));
+    for (auto &edge : b.edges) {
+        best = std::min(
+            best, convex_min([&](scalar t) { return polyhedron_sdf(a, lerp(edge.first, edge.second, t)); }));
     }
     return best;
 }

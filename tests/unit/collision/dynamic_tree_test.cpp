@@ -100,7 +100,7 @@ struct tree_fixture {
 
 TEST(dynamic_tree_test, rejects_bad_margin) {
     EXPECT_THROW(dynamic_tree(scalar(-0.1)), std::invalid_argument);
-    EXPECT_THROW(dynamic_tree(std::numeric_limits<scalar>::quiet_NaN()), std::invalid_argument);
+    EXPECT_THROW(dynamic_tree{std::numeric_limits<scalar>::quiet_NaN()}, std::invalid_argument);
     EXPECT_NO_THROW(dynamic_tree(scalar(0)));
 }
 

@@ -157,7 +157,8 @@ TEST_F(make_constraint_test, cvjoint_refuses_a_twist_locked_at_infinity) {
             {"make_constraint<cvjoint_constraint>", "twist_min", "finite", limit > 0 ? "inf" : "-inf"});
     }
     // Apart, infinite limits are simply not enforced: free, or limited on one side only.
-    for (auto [lo, hi] : {std::pair{-inf, inf}, std::pair{-inf, scalar(0.5)}, std::pair{scalar(-0.5), inf}}) {
+    for (auto limits : {std::pair{-inf, inf}, std::pair{-inf, scalar(0.5)}, std::pair{scalar(-0.5), inf}}) {
+        const scalar lo = limits.first, hi = limits.second;
         auto e = make_constraint<cvjoint_constraint>(reg, a, b, [&](cvjoint_constraint &c) {
             c.twist_min = lo;
             c.twist_max = hi;

@@ -3,6 +3,7 @@
 #include "edyn/math/vector3.hpp"
 #include <cmath>
 #include <gtest/gtest.h>
+#include <limits>
 #include <utility>
 
 using namespace edyn;
@@ -99,7 +100,7 @@ TEST(vector3_test, min_max_abs) {
 
 TEST(vector3_test, isfinite_detects_nan_and_inf) {
     EXPECT_TRUE(isfinite(vector3{1, 2, 3}));
-    EXPECT_FALSE(isfinite(vector3{std::nan(""), 0, 0}));
+    EXPECT_FALSE(isfinite(vector3{std::numeric_limits<scalar>::quiet_NaN(), 0, 0}));
     EXPECT_FALSE(isfinite(vector3{0, std::numeric_limits<scalar>::infinity(), 0}));
 }
 
