@@ -8,6 +8,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
 bash scripts/deps.sh
+# New build folders use Ninja (an existing folder keeps the generator it was made with).
+export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 # Eight-lane contact bundles (EDYN_AVX2) where this CPU has AVX2.
 avx2=OFF
 if grep -qw avx2 /proc/cpuinfo 2>/dev/null; then avx2=ON; fi

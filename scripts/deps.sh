@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake make pkg-config
+  g++ cmake make ninja-build pkg-config
   libtbb-dev
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev

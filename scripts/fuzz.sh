@@ -17,6 +17,8 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
 fi
 
 bash scripts/deps.sh
+# New build folders use Ninja (an existing folder keeps the generator it was made with).
+export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 build=build-fuzz
 cmake -S fuzz -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j "$(nproc)"

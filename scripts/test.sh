@@ -50,6 +50,8 @@ if [[ "$build_dir" != build-asan && "$build_dir" != build-tsan ]]; then
 fi
 
 bash scripts/deps.sh
+# New build folders use Ninja (an existing folder keeps the generator it was made with).
+export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 jobs=$(nproc)
 cmake -S . -B "$build_dir" "${cmake_args[@]}" >/dev/null
 if [ ${#only[@]} -gt 0 ]; then
