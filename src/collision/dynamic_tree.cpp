@@ -208,7 +208,10 @@ void dynamic_tree::remove_leaf(node_id leaf) {
 
     nodes[sibling].parent = grand_parent;
     free_node(parent);
-    refit_ancestors(grand_parent);
+    // Boxes only shrink on the way up: they are refitted, not rotated. The insertion that usually
+    // follows (a move) rotates along its own path.
+    for (auto index = grand_parent; index != null_node; index = nodes[index].parent)
+        refit_node(index);
 }
 
 // Walks up from `index` to the root recomputing boxes and heights, and improving each node by a
@@ -244,7 +247,7 @@ void dynamic_tree::exchange(node_id x, node_id y) noexcept {
 // Tree rotation by surface area: with children b and c of `a`, and their children d e and f g,
 // a child may trade places with a grandchild on the other side (b-f, b-g, c-d, c-e) or two
 // grandchildren may trade places (d-f, d-g). a's box stays the same; the exchange that shrinks
-// the sum of the areas of b and c the most is applied. Applied on every insertion and removal
+// the sum of the areas of b and c the most is applied. Applied on every insertion
 // path it keeps the tree both tight and shallow, without the loss in quality that rotations
 // by height alone cause.
 void dynamic_tree::rotate(node_id a) noexcept {
