@@ -330,24 +330,36 @@ constexpr std::size_t write_backs_per_task = 256;
 } // namespace
 
 void write_back(registry &registry, world_state &world, scalar dt) {
-    // Each body and each contact writes only its own components: they go back in parallel.
+    // Each body and each contact writes only its own components: they go back in parallel. The
+    // pools are found once, here, rather than once per body and component.
+    auto &positions = registry.storage<position>();
+    auto &orientations = registry.storage<orientation>();
+    auto &linvels = registry.storage<linvel>();
+    auto &angvels = registry.storage<angvel>();
+    auto &dynamics = registry.storage<dynamic_tag>();
+    auto &inertias = registry.storage<inertia_inv>();
+    auto &world_inertias = registry.storage<inertia_world_inv>();
+    auto &aabbs = registry.storage<AABB>();
+    auto &centres = registry.storage<center_of_mass>();
     parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), write_backs_per_task,
                  [&](std::size_t i) {
                      auto e = world.body_entities[i];
                      auto &body = world.bodies[i];
-                     auto &pos = registry.get<position>(e);
-                     auto &orn = registry.get<orientation>(e);
+                     auto &pos = positions.get(e);
+                     auto &orn = orientations.get(e);
                      pos += body.delta_position;
                      orn = normalize(body.delta_rotation * orn);
-                     registry.get<linvel>(e) = body.linvel;
-                     registry.get<angvel>(e) = body.angvel;
+                     linvels.get(e) = body.linvel;
+                     angvels.get(e) = body.angvel;
 
-                     if (registry.all_of<dynamic_tag>(e)) {
+                     if (dynamics.contains(e)) {
                          auto r = to_matrix3x3(orn);
-                         registry.get<inertia_world_inv>(e) = r * registry.get<inertia_inv>(e) * transpose(r);
+                         world_inertias.get(e) = r * inertias.get(e) * transpose(r);
                      }
-                     if (auto *aabb = registry.try_get<AABB>(e)) {
-                         auto origin = get_rigidbody_origin(registry, e);
+                     if (auto *aabb = aabbs.try_get(e)) {
+                         // The shape's origin (get_rigidbody_origin).
+                         auto *com = centres.try_get(e);
+                         auto origin = com ? pos - rotate(orn, *com) : static_cast<vector3>(pos);
                          *aabb = visit_shape(
                              registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
                          // Swept over the next step's motion, so that pairs are found before they touch.
