@@ -4,6 +4,9 @@
 #include "edyn/parallel/parallel_for.hpp"
 #include "edyn/parallel/parallel_for_stages.hpp"
 #include <algorithm>
+#include <array>
+#include <tuple>
+#include <utility>
 
 namespace edyn {
 
@@ -67,26 +70,50 @@ namespace {
 constexpr std::uint32_t joints_per_task = 32;
 constexpr std::size_t num_types = std::tuple_size_v<decltype(constraint_solver_state::batches)>;
 
-// The joints of colour k in a batch: none when the batch has fewer colours.
-template<typename Solver>
-std::uint32_t colour_size(const constraint_batch<Solver> &batch, std::size_t k) {
-    return k + 1 < batch.colour_begin.size() ? batch.colour_begin[k + 1] - batch.colour_begin[k] : 0;
+// Calls fn(batch) with the batch at place `type` of state.batches.
+template<typename Fn>
+void with_batch(constraint_solver_state &state, std::uint32_t type, Fn &&fn) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (void)((type == I && (fn(std::get<I>(state.batches)), true)) || ...);
+    }
+    (std::make_index_sequence<num_types>{});
 }
 
-// Numbers the blocks of state.block_begin and state.colour_block_begin.
+// Cuts each colour's joints of each type into blocks of at most joints_per_task, colour by
+// colour; then joins the blocks that follow one another in a batch into the runs of a pass on
+// one thread.
 void number_colour_blocks(constraint_solver_state &state) {
-    state.block_begin.clear();
+    // The types that have joints this step: a chain has as many colours as joints.
+    std::array<std::uint32_t, num_types> active{};
+    std::uint32_t num_active = 0, type = 0;
+    for_each_batch(state, [&](auto &batch) {
+        if (!batch.solvers.empty()) active[num_active++] = type;
+        ++type;
+    });
+    state.blocks.clear();
     state.colour_block_begin.clear();
-    std::uint32_t blocks = 0;
     for (std::size_t k = 0; k < state.colouring.num_colours(); ++k) {
-        state.colour_block_begin.push_back(blocks);
-        for_each_batch(state, [&](auto &batch) {
-            state.block_begin.push_back(blocks);
-            blocks += (colour_size(batch, k) + joints_per_task - 1) / joints_per_task;
-        });
+        state.colour_block_begin.push_back(static_cast<std::uint32_t>(state.blocks.size()));
+        for (std::uint32_t a = 0; a < num_active; ++a) {
+            with_batch(state, active[a], [&](auto &batch) {
+                if (k + 1 >= batch.colour_begin.size()) return;
+                auto end = batch.colour_begin[k + 1];
+                for (auto first = batch.colour_begin[k]; first < end; first += joints_per_task)
+                    state.blocks.push_back({active[a], first, std::min(first + joints_per_task, end)});
+            });
+        }
     }
-    state.block_begin.push_back(blocks);
-    state.colour_block_begin.push_back(blocks);
+    state.colour_block_begin.push_back(static_cast<std::uint32_t>(state.blocks.size()));
+
+    state.runs.clear();
+    for (auto &block : state.blocks) {
+        if (!state.runs.empty() && state.runs.back().type == block.type &&
+            state.runs.back().last == block.first) {
+            state.runs.back().last = block.last;
+        } else {
+            state.runs.push_back(block);
+        }
+    }
 }
 
 } // namespace
@@ -117,24 +144,23 @@ void gather_constraints(const registry &registry, constraint_solver_state &state
 namespace {
 
 // Calls fn(solver) for every joint, colour after colour, each colour's joints (of every type) at
-// once on the scheduler's threads; all colours in one task (see parallel_for_stages).
+// once on the scheduler's threads; all colours in one task (see parallel_for_stages). On one
+// thread the joints go in the same order, run after run.
 template<typename Fn>
 void for_each_in_colour_order(constraint_solver_state &state, Fn &&fn) {
-    auto solve_block = [&](std::size_t k, std::uint32_t b) {
-        auto *types = &state.block_begin[k * num_types];
-        std::size_t t = 0;
-        while (types[t + 1] <= b)
-            ++t;
-        std::size_t type = 0;
-        for_each_batch(state, [&](auto &batch) {
-            if (type++ != t) return;
-            auto first = batch.colour_begin[k] + (b - types[t]) * joints_per_task;
-            auto last = std::min(first + joints_per_task, batch.colour_begin[k + 1]);
-            for (auto i = first; i < last; ++i)
+    auto run_joints = [&](const constraint_solver_state::joint_run &run) {
+        with_batch(state, run.type, [&](auto &batch) {
+            for (auto i = run.first; i < run.last; ++i)
                 fn(batch.solvers[i]);
         });
     };
-    parallel_for_stages(state.scheduler, state.block_sync, state.colour_block_begin, solve_block);
+    if (!state.scheduler || state.scheduler->concurrency() < 2) {
+        for (auto &run : state.runs)
+            run_joints(run);
+        return;
+    }
+    parallel_for_stages(state.scheduler, state.block_sync, state.colour_block_begin,
+                        [&](std::size_t, std::uint32_t b) { run_joints(state.blocks[b]); });
 }
 
 } // namespace

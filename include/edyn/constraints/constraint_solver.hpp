@@ -81,13 +81,20 @@ struct constraint_solver_state {
     /// so that each colour's joints are solved at once on the scheduler's threads and the
     /// result is the same bit for bit.
     constraint_colouring colouring;
-    /// Each colour's joints cut into blocks for the scheduler's threads, numbered colour by colour
-    /// and within a colour type by type: colour k's joints of the t-th type are the blocks
-    /// [block_begin[k * T + t], block_begin[k * T + t + 1]), T the number of types, and one past
-    /// the last block ends the array. Filled by gather_constraints().
-    std::vector<std::uint32_t> block_begin;
-    /// The first block of each colour, then one past the last block (every T-th of block_begin).
+    /// Joints of one type and one colour, [first, last) of the type's batch.
+    struct joint_run {
+        std::uint32_t type;  ///< The batch's place in `batches`.
+        std::uint32_t first; ///< The first joint's place in the batch.
+        std::uint32_t last;  ///< One past the last joint's place.
+    };
+    /// Each colour's joints cut into blocks for the scheduler's threads, colour by colour and
+    /// within a colour type by type. Filled by gather_constraints().
+    std::vector<joint_run> blocks;
+    /// The first block of each colour, then one past the last block.
     std::vector<std::uint32_t> colour_block_begin;
+    /// The same joints in the same order for a pass on one thread: blocks that follow one another
+    /// in their batch are joined, so that a chain, one colour per joint, is one run.
+    std::vector<joint_run> runs;
     /// What the threads of a pass over those blocks share (see parallel_for_stages).
     stage_sync block_sync;
     /// The pivots the position projection brings together, cut into paths solved exactly.
