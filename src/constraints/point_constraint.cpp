@@ -26,7 +26,8 @@ void warm_start(point_constraint_solver &s, std::span<solver_body> bodies) noexc
     auto &pose = s.anchor.pose;
     warm_point_mass(s.anchor, a, b, pose);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
-    apply_angular_impulse(a, b, s.friction_impulse);
+    // Without friction torque the friction impulse is zero (make_constraint_solver).
+    if (s.friction_torque > 0) apply_angular_impulse(a, b, s.friction_impulse);
 }
 
 void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body &a, solver_body &b,
