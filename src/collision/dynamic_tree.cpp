@@ -111,7 +111,7 @@ bool dynamic_tree::needs_move(node_id id, const AABB &aabb, const vector3 &displ
     if (!contains(fat, aabb)) return true;
     // Still enclosed. Reinsert anyway when the fat box is far larger than what the current
     // motion asks for (e.g. after a fast body slowed down), or it keeps spurious pairs.
-    auto largest = inset(fatten(aabb, displacement), vector3_one * (fat_margin * 4));
+    auto largest = inset(fatten(aabb, displacement), vector3_one * (fat_margin * shrink_slack_margins));
     return !contains(largest, fat);
 }
 

@@ -187,6 +187,31 @@ TEST(dynamic_tree_test, move_stretches_along_displacement) {
     EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 1.6, 1e-5);
 }
 
+// A box that reaches past what the motion asks for by less than the slack is kept: a body
+// slowing down a little is not reinserted; one that reaches further is.
+TEST(dynamic_tree_test, a_slowing_leaf_is_shrunk_only_past_the_slack) {
+    const auto margin = scalar(0.1);
+    const auto slack = margin * dynamic_tree::shrink_slack_margins;
+    const auto k = dynamic_tree::displacement_multiplier;
+    dynamic_tree tree(margin);
+    auto id = tree.create({{0, 0, 0}, {1, 1, 1}}, edyn::make_entity(1, 0));
+    tree.create({{9, 9, 9}, {10, 10, 10}}, edyn::make_entity(2, 0));
+
+    // Moved out of its fat box at speed d: stretched by k d along +x; then the body stops.
+    auto near = slack / k * scalar(0.9);
+    auto box = AABB{{2, 0, 0}, {3, 1, 1}};
+    ASSERT_TRUE(tree.move(id, box, {near, 0, 0}));
+    EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 3 + margin + k * near, 1e-5);
+    EXPECT_FALSE(tree.needs_move(id, box, edyn::vector3_zero)) << "within the slack";
+
+    auto far = slack / k * scalar(1.1);
+    box = AABB{{5, 0, 0}, {6, 1, 1}};
+    ASSERT_TRUE(tree.move(id, box, {far, 0, 0}));
+    EXPECT_TRUE(tree.move(id, box, edyn::vector3_zero)) << "past the slack";
+    EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 6 + margin, 1e-5);
+    EXPECT_EQ(tree.validate(), "");
+}
+
 TEST(dynamic_tree_test, random_operations_match_brute_force) {
     random_boxes rnd;
     tree_fixture f;
