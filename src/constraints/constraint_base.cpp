@@ -1,7 +1,4 @@
 #include "edyn/constraints/constraint_base.hpp"
-#include "edyn/dynamics/mass.hpp"
-#include "edyn/dynamics/orientation.hpp"
-#include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/math/transform.hpp"
 #include <cmath>
@@ -82,11 +79,9 @@ joint_anchor make_joint_anchor(const registry &registry, const entity (&body)[2]
     vector3 world_pivot[2];
     vector3 r[2];
     for (int i = 0; i < 2; ++i) {
-        // The shape's origin as get_rigidbody_origin() finds it, each component looked up once.
         auto &pos = registry.get<position>(body[i]);
         auto &orn = registry.get<orientation>(body[i]);
-        auto *com = registry.try_get<center_of_mass>(body[i]);
-        auto origin = com ? pos - rotate(orn, *com) : static_cast<vector3>(pos);
+        auto origin = rigidbody_origin(pos, orn, registry.try_get<center_of_mass>(body[i]));
         world_pivot[i] = to_world_space(pivot[i], origin, orn);
         r[i] = world_pivot[i] - pos;
     }

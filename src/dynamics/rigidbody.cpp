@@ -429,10 +429,9 @@ void set_center_of_mass(registry &registry, entity e, const vector3 &com) {
 }
 
 vector3 get_rigidbody_origin(const registry &registry, entity e) {
-    auto &pos = registry.get<position>(e);
     auto *com = registry.try_get<center_of_mass>(e);
-    if (!com) return pos;
-    return pos - rotate(registry.get<orientation>(e), *com);
+    if (!com) return registry.get<position>(e);
+    return rigidbody_origin(registry.get<position>(e), registry.get<orientation>(e), com);
 }
 
 void rigidbody_set_mass(registry &registry, entity e, scalar new_mass) {

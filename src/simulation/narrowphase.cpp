@@ -73,8 +73,9 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
     if (!body.has_shape) return body;
     body.bounding_radius =
         visit_shape(registry, e, [](const auto &shape) { return shape_bounding_radius(shape); });
-    body.origin = get_rigidbody_origin(registry, e);
     body.orientation = registry.get<orientation>(e);
+    body.origin =
+        rigidbody_origin(registry.get<position>(e), body.orientation, registry.try_get<center_of_mass>(e));
     // An upper bound of how fast any of its points moves: its centre's speed and the spin's
     // reach across its AABB.
     auto *lv = registry.try_get<linvel>(e);

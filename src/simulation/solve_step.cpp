@@ -357,9 +357,7 @@ void write_back(registry &registry, world_state &world, scalar dt) {
                          world_inertias.get(e) = r * inertias.get(e) * transpose(r);
                      }
                      if (auto *aabb = aabbs.try_get(e)) {
-                         // The shape's origin (get_rigidbody_origin).
-                         auto *com = centres.try_get(e);
-                         auto origin = com ? pos - rotate(orn, *com) : static_cast<vector3>(pos);
+                         auto origin = rigidbody_origin(pos, orn, centres.try_get(e));
                          *aabb = visit_shape(
                              registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
                          // Swept over the next step's motion, so that pairs are found before they touch.

@@ -1,6 +1,9 @@
 #ifndef EDYN_DYNAMICS_RIGIDBODY_HPP
 #define EDYN_DYNAMICS_RIGIDBODY_HPP
 
+#include "edyn/dynamics/mass.hpp"
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/rigidbody_def.hpp"
 #include "edyn/ecs/registry.hpp"
 #include <optional>
@@ -104,6 +107,17 @@ void set_center_of_mass(registry &registry, entity entity, const vector3 &com);
 /// @param entity A rigid body; not checked, other than by assertions in debug builds.
 /// @return The origin, in world space, in metres.
 vector3 get_rigidbody_origin(const registry &registry, entity entity);
+
+/// The body's origin from components the caller already holds, as get_rigidbody_origin()
+/// computes it: for loops that have looked them up already.
+/// @param pos The body's position (its centre of mass).
+/// @param orn The body's orientation.
+/// @param com The body's center_of_mass component, or null when it has none.
+/// @return The origin, in world space, in metres.
+inline vector3 rigidbody_origin(const position &pos, const orientation &orn,
+                                const center_of_mass *com) noexcept {
+    return com ? pos - rotate(orn, *com) : static_cast<vector3>(pos);
+}
 
 /// Sets the mass of a dynamic body and scales its inertia to match.
 /// mass_inv, the inertia and the world-space inverse inertia are updated with it.

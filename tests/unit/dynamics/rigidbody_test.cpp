@@ -334,6 +334,23 @@ TEST_F(rigidbody_test, options_of_the_definition_become_components) {
     EXPECT_NEAR(length(origin - def.position), 0, 1e-6);
 }
 
+// rigidbody_origin() from the components gives get_rigidbody_origin()'s bits, with a centre of
+// mass and without one.
+TEST_F(rigidbody_test, the_origin_from_components_is_get_rigidbody_origins) {
+    auto def = valid_box();
+    def.position = {1, 2, 3};
+    def.orientation = quaternion_axis_angle(normalize(vector3{1, 1, 0}), scalar(0.7));
+    auto plain = make_rigidbody(reg, def);
+    def.center_of_mass = vector3{scalar(0.1), scalar(-0.2), scalar(0.3)};
+    auto shifted = make_rigidbody(reg, def);
+    for (auto e : {plain, shifted}) {
+        auto origin =
+            rigidbody_origin(reg.get<position>(e), reg.get<orientation>(e), reg.try_get<center_of_mass>(e));
+        EXPECT_EQ(origin, get_rigidbody_origin(reg, e));
+        EXPECT_NEAR(length(origin - def.position), 0, 1e-5);
+    }
+}
+
 TEST_F(rigidbody_test, the_entity_overload_keeps_the_programs_components) {
     struct health {
         int points;
