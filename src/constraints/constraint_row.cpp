@@ -130,16 +130,6 @@ void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, co
     move_body(b, -p * b.inv_mass, b.inv_inertia * cross(rB, -p), inv_h);
 }
 
-matrix3x3 lever_product(const vector3 &u, const matrix3x3 &inv_inertia, const vector3 &v) noexcept {
-    // Entry (i, j) is (e_i x u) . I (e_j x v).
-    const vector3 s[3]{{0, -u.z, u.y}, {u.z, 0, -u.x}, {-u.y, u.x, 0}};
-    const vector3 t[3]{{0, -v.z, v.y}, {v.z, 0, -v.x}, {-v.y, v.x, 0}};
-    const vector3 w[3]{inv_inertia * t[0], inv_inertia * t[1], inv_inertia * t[2]};
-    return {{{dot(s[0], w[0]), dot(s[0], w[1]), dot(s[0], w[2])},
-             {dot(s[1], w[0]), dot(s[1], w[1]), dot(s[1], w[2])},
-             {dot(s[2], w[0]), dot(s[2], w[1]), dot(s[2], w[2])}}};
-}
-
 matrix3x3 point_mass_matrix(const solver_body &a, const solver_body &b, const joint_pose &pose) noexcept {
     return diagonal_matrix(vector3_one * (a.inv_mass + b.inv_mass)) + lever_inertia(pose.rA, a.inv_inertia) +
            lever_inertia(pose.rB, b.inv_inertia);
@@ -166,11 +156,6 @@ bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_
 void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
                        const joint_pose &pose) noexcept {
     anchor.point_mass_valid = inverse_point_mass(a, b, pose, anchor.point_mass);
-}
-
-void keep_point_mass(joint_anchor &anchor, const matrix3x3 &k) noexcept {
-    anchor.point_mass_valid = invert_point_mass(k, anchor.point_mass);
-    anchor.point_mass_current = true;
 }
 
 void warm_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,

@@ -231,6 +231,16 @@ inline wide3 wide3_load(const scalar (&p)[3][wide_lanes]) noexcept {
     return {wide_load(p[0]), wide_load(p[1]), wide_load(p[2])};
 }
 
+// A 3x3 matrix in each lane, by rows.
+struct wide_matrix3x3 {
+    wide3 row[3];
+};
+
+// The matrix times a column vector in each lane, as edyn's matrix3x3 operator* computes it.
+inline wide3 operator*(const wide_matrix3x3 &m, const wide3 &v) noexcept {
+    return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)};
+}
+
 // A quaternion in each lane, rotating as edyn::rotate does.
 struct wide_quaternion {
     wide x, y, z, w;

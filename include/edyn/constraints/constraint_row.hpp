@@ -269,14 +269,6 @@ void move_body(solver_body &body, const vector3 &dv, const vector3 &dw, scalar i
 void apply_position_impulse(solver_body &a, solver_body &b, const vector3 &p, const vector3 &rA,
                             const vector3 &rB, scalar inv_h) noexcept;
 
-/// -[u] I [v] for a symmetric I, [x] the cross-product matrix of x: how a point at lever arm u
-/// of a body moves, through the body's turning, under a unit impulse at lever arm v.
-/// @param u The lever arm of the point that moves (m).
-/// @param inv_inertia The body's inverse inertia, world space.
-/// @param v The lever arm of the impulse (m).
-/// @return The 3x3 matrix, symmetric when u equals v.
-matrix3x3 lever_product(const vector3 &u, const matrix3x3 &inv_inertia, const vector3 &v) noexcept;
-
 /// The pivots' effective mass matrix K = (1/mA + 1/mB) I - [rA] IA^-1 [rA] - [rB] IB^-1 [rB]:
 /// how the pivot separation changes under a position-level impulse at the pivots.
 /// @param a Body A's solver state.
@@ -307,13 +299,6 @@ bool inverse_point_mass(const solver_body &a, const solver_body &b, const joint_
 /// @param pose The current pose, from current_pose().
 void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
                        const joint_pose &pose) noexcept;
-
-/// Sets `anchor.point_mass` to the inverse of K, as update_point_mass() does, from a K measured
-/// by the caller, and marks it current: the next warm_point_mass() keeps it.
-/// @param anchor The joint's pivots; its `point_mass`, `point_mass_valid` and
-/// `point_mass_current` are written.
-/// @param k The pivots' effective mass matrix, from point_mass_matrix().
-void keep_point_mass(joint_anchor &anchor, const matrix3x3 &k) noexcept;
 
 /// The warm start's update_point_mass(): skipped once when the position projection measured K
 /// after the integration just before (`anchor.point_mass_current`), at poses that the

@@ -42,10 +42,10 @@ struct joint_path_set {
     /// The poses the present pass measured, one per anchor (indexed as `anchors`).
     std::vector<joint_pose> poses;
     /// Per anchor, the inverse of its pivot block's Schur complement D_k, from the factors of the
-    /// sub-step's first pass, which its other passes reuse.
+    /// sub-step's first pass, which its other passes reuse. While a path is factored, its K_kk.
     std::vector<matrix3x3> inverse_pivot;
     /// Per anchor after the first of its path, D_k-1^-1 K_k-1,k: its coupling to the anchor before
-    /// it, folded into the factors.
+    /// it, folded into the factors. While a path is factored, K_k-1,k.
     std::vector<matrix3x3> coupling;
     std::vector<vector3> work; ///< Right-hand side, then the position impulses, of a solve.
     /// Per path: whether both its ends are bodies that do not move or that nothing else the
