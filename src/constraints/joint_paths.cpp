@@ -2,6 +2,7 @@
 #include "../math/wide_scalar.hpp"
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace edyn {
 
@@ -29,12 +30,46 @@ constexpr scalar wide_gap_sqr = scalar(1e-6);
 // eigenvalue is too badly conditioned to invert in the scalar's precision.
 constexpr scalar min_conditioning = scalar(1e-6);
 
-bool invert_pivot_block(const matrix3x3 &d, matrix3x3 &inverse_d) noexcept {
-    auto c0 = cross(d[1], d[2]), c1 = cross(d[2], d[0]), c2 = cross(d[0], d[1]);
-    auto det = dot(d[0], c0);
-    auto mean = (d[0][0] + d[1][1] + d[2][2]) / 3;
+// A row of a path_block as one register. Every operation on rows below is the matrix3x3 or
+// vector3 operation of the same name, component by component in the same order, so that the
+// padding changes no result.
+using row4 = scalar __attribute__((vector_size(4 * sizeof(scalar))));
+
+row4 load_row(const path_block &m, int i) noexcept {
+    row4 r;
+    std::memcpy(&r, m.row[i], sizeof r);
+    return r;
+}
+
+void store_row(path_block &m, int i, row4 r) noexcept { std::memcpy(m.row[i], &r, sizeof r); }
+
+row4 to_row(const vector3 &v) noexcept { return row4{v.x, v.y, v.z, 0}; }
+
+vector3 to_vector(row4 r) noexcept { return {r[0], r[1], r[2]}; }
+
+// v^T m, as vector3 * matrix3x3 computes it: m's rows weighted by v.
+row4 weighted_rows(const path_block &m, const vector3 &v) noexcept {
+    return (load_row(m, 0) * v.x + load_row(m, 1) * v.y) + load_row(m, 2) * v.z;
+}
+
+// m v, as matrix3x3 * vector3 computes it.
+vector3 times(const path_block &m, const vector3 &v) noexcept {
+    auto dot_row = [&](int i) { return m.row[i][0] * v.x + m.row[i][1] * v.y + m.row[i][2] * v.z; };
+    return {dot_row(0), dot_row(1), dot_row(2)};
+}
+
+bool invert_pivot_block(const path_block &d, path_block &inverse_d) noexcept {
+    const vector3 d0{d.row[0][0], d.row[0][1], d.row[0][2]}, d1{d.row[1][0], d.row[1][1], d.row[1][2]},
+        d2{d.row[2][0], d.row[2][1], d.row[2][2]};
+    auto c0 = cross(d1, d2), c1 = cross(d2, d0), c2 = cross(d0, d1);
+    auto det = dot(d0, c0);
+    auto mean = (d0.x + d1.y + d2.z) / 3;
     if (!(mean > 0) || !(det > min_conditioning * mean * mean * mean)) return false;
-    inverse_d = matrix3x3_columns(c0, c1, c2) * (scalar(1) / det);
+    // The cofactors are the inverse's columns.
+    auto inv_det = scalar(1) / det;
+    store_row(inverse_d, 0, row4{c0.x, c1.x, c2.x, 0} * inv_det);
+    store_row(inverse_d, 1, row4{c0.y, c1.y, c2.y, 0} * inv_det);
+    store_row(inverse_d, 2, row4{c0.z, c1.z, c2.z, 0} * inv_det);
     return true;
 }
 
@@ -354,10 +389,12 @@ void lane_batch::flush() noexcept {
         auto &anchor = *set.anchors[k];
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
-                set.inverse_pivot[k][i][j] = k_out[3 * i + j][lane];
+                set.inverse_pivot[k].row[i][j] = k_out[3 * i + j][lane];
                 anchor.point_mass[i][j] = inverse_out[3 * i + j][lane];
-                if (has_coupling[lane]) set.coupling[k][i][j] = coupling_out[3 * i + j][lane];
+                if (has_coupling[lane]) set.coupling[k].row[i][j] = coupling_out[3 * i + j][lane];
             }
+            set.inverse_pivot[k].row[i][3] = 0;
+            set.coupling[k].row[i][3] = 0;
         }
         anchor.point_mass_valid = valid_out[lane] != 0;
         anchor.point_mass_current = true;
@@ -378,10 +415,20 @@ bool factor_path(joint_path_set &set, std::uint32_t first, std::uint32_t last) {
     for (auto k = first; k < last; ++k) {
         auto d = set.inverse_pivot[k];
         if (k > first) {
-            auto c = set.coupling[k];
-            auto g = set.inverse_pivot[k - 1] * c;
-            set.coupling[k] = g;
-            d = d - transpose(c) * g;
+            // G = D_k-1^-1 C, row by row as matrix3x3's product; then D_k = K_kk - C^T G, whose
+            // row i is G's rows weighted by C's column i.
+            auto &c = set.coupling[k];
+            auto &previous = set.inverse_pivot[k - 1];
+            const row4 c_rows[3]{load_row(c, 0), load_row(c, 1), load_row(c, 2)};
+            row4 g[3];
+            for (int i = 0; i < 3; ++i)
+                g[i] = (c_rows[0] * previous.row[i][0] + c_rows[1] * previous.row[i][1]) +
+                       c_rows[2] * previous.row[i][2];
+            for (int i = 0; i < 3; ++i)
+                store_row(d, i,
+                          load_row(d, i) - ((g[0] * c.row[0][i] + g[1] * c.row[1][i]) + g[2] * c.row[2][i]));
+            for (int i = 0; i < 3; ++i)
+                store_row(c, i, g[i]);
         }
         if (!invert_pivot_block(d, set.inverse_pivot[k])) return false;
     }
@@ -458,10 +505,10 @@ void finish_path(joint_path_set &set, std::uint32_t p, std::span<solver_body> bo
     auto &work = set.work;
     work[first] = set.poses[first].d * -fraction;
     for (auto k = first + 1; k < last; ++k)
-        work[k] = set.poses[k].d * -fraction - work[k - 1] * set.coupling[k];
-    work[last - 1] = set.inverse_pivot[last - 1] * work[last - 1];
+        work[k] = to_vector(to_row(set.poses[k].d) * -fraction - weighted_rows(set.coupling[k], work[k - 1]));
+    work[last - 1] = times(set.inverse_pivot[last - 1], work[last - 1]);
     for (auto k = last - 1; k-- > first;)
-        work[k] = set.inverse_pivot[k] * work[k] - set.coupling[k + 1] * work[k + 1];
+        work[k] = times(set.inverse_pivot[k], work[k]) - times(set.coupling[k + 1], work[k + 1]);
     // Each body moves once: a body shared by two pivots takes both their corrections in one turn.
     vector3 carried_dv = vector3_zero, carried_dw = vector3_zero;
     for (auto k = first; k < last; ++k) {

@@ -11,6 +11,12 @@
 
 namespace edyn {
 
+/// A 3x3 block of a path's factors, each row padded to four scalars, so that the recursion along a
+/// path handles a row as one SIMD register.
+struct alignas(4 * sizeof(scalar)) path_block {
+    scalar row[3][4];
+};
+
 /// The joints whose pivots position projection brings together, cut into paths: runs of joints
 /// one after another, each sharing with the next a moving body that no other projected joint
 /// touches (the links of a chain, a rope, a limb). A path's pivots are projected at once, by an
@@ -43,10 +49,10 @@ struct joint_path_set {
     std::vector<joint_pose> poses;
     /// Per anchor, the inverse of its pivot block's Schur complement D_k, from the factors of the
     /// sub-step's first pass, which its other passes reuse. While a path is factored, its K_kk.
-    std::vector<matrix3x3> inverse_pivot;
+    std::vector<path_block> inverse_pivot;
     /// Per anchor after the first of its path, D_k-1^-1 K_k-1,k: its coupling to the anchor before
     /// it, folded into the factors. While a path is factored, K_k-1,k.
-    std::vector<matrix3x3> coupling;
+    std::vector<path_block> coupling;
     std::vector<vector3> work; ///< Right-hand side, then the position impulses, of a solve.
     /// Per path: whether both its ends are bodies that do not move or that nothing else the
     /// projection moves touches (a chain hanging from the world). The first pass of a sub-step
