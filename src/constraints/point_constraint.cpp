@@ -35,23 +35,25 @@ void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body
     // Solved as a block with the inverse of K, the pivots' relative velocity change per unit
     // impulse (anchor.point_mass, see update_point_mass), so the three directions do not fight.
     auto &pose = anchor.pose;
-    auto mass = anchor.point_mass;
+    const matrix3x3 *mass = &anchor.point_mass;
+    matrix3x3 remeasured;
     if (length_sqr(pose.d) > large_point_separation_sqr) {
         // Pivots far apart move far when corrected: the mass is recomputed, not reused.
-        if (!inverse_point_mass(a, b, pose, mass)) return;
+        if (!inverse_point_mass(a, b, pose, remeasured)) return;
+        mass = &remeasured;
     } else if (!anchor.point_mass_valid) {
         return;
     }
 
-    scalar mass_scale = 1, impulse_scale = 0;
-    vector3 bias = vector3_zero;
-    if (ctx.use_bias && !ctx.rigid_pivots) {
-        bias = pose.d * ctx.joint.bias_rate;
-        mass_scale = ctx.joint.mass_scale;
-        impulse_scale = ctx.joint.impulse_scale;
-    }
     auto v = relative_velocity(a, b, pose.rA, pose.rB);
-    auto delta = -(mass * (v + bias)) * mass_scale - impulse * impulse_scale;
+    vector3 delta;
+    if (ctx.use_bias && !ctx.rigid_pivots) {
+        // The soft correction of the pivots' separation.
+        auto bias = pose.d * ctx.joint.bias_rate;
+        delta = -(*mass * (v + bias)) * ctx.joint.mass_scale - impulse * ctx.joint.impulse_scale;
+    } else {
+        delta = -(*mass * v);
+    }
     impulse += delta;
     apply_impulse(a, b, delta, pose.rA, pose.rB);
 }
