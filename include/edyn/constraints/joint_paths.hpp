@@ -14,6 +14,7 @@ namespace edyn {
 /// A 3x3 block of a path's factors, each row padded to four scalars, so that the recursion along a
 /// path handles a row as one SIMD register.
 struct alignas(4 * sizeof(scalar)) path_block {
+    /// The block's rows, each followed by a zero.
     scalar row[3][4];
 };
 
