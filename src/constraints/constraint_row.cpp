@@ -13,7 +13,8 @@ softness make_spring_softness(scalar k, scalar c, scalar mass, scalar h) noexcep
     return {k / d, a / (1 + a), 1 / (1 + a)};
 }
 
-void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
+template<constraint_row Row>
+void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                         const constraint_solve_context &ctx) noexcept {
     auto mass = row_effective_mass(j, a, b);
     if (mass == 0) return;
@@ -29,7 +30,8 @@ void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_bod
     apply_row_impulse(j, a, b, delta);
 }
 
-void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
+template<constraint_row Row>
+void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                      const constraint_solve_context &ctx, scalar bounce_velocity) noexcept {
     // An open limit holding no impulse, which the motion does not close within the sub-step,
     // has nothing to do (the common case, far from the limit): its effective mass is not needed.
@@ -55,7 +57,8 @@ void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &
     apply_row_impulse(j, a, b, delta);
 }
 
-void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, solver_body &a,
+template<constraint_row Row>
+void solve_friction_row(const Row &j, scalar max_impulse, scalar &impulse, solver_body &a,
                         solver_body &b) noexcept {
     auto mass = row_effective_mass(j, a, b);
     if (mass == 0) return;
@@ -66,7 +69,8 @@ void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, 
     apply_row_impulse(j, a, b, delta);
 }
 
-void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
+template<constraint_row Row>
+void solve_spring_row(const Row &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
                       solver_body &b, const constraint_solve_context &ctx, bool unilateral) noexcept {
     // A spring is a force of the model: applied once per sub-step, in the biased pass. Solving
     // it again in the relax pass would integrate it twice and damp it.
@@ -81,6 +85,19 @@ void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &i
     impulse = new_impulse;
     apply_row_impulse(j, a, b, delta);
 }
+
+// The rows the joints use: full jacobians and angular rows.
+#define EDYN_INSTANTIATE_ROW_SOLVERS(Row)                                                                    \
+    template void solve_equality_row(const Row &, scalar, scalar &, solver_body &, solver_body &,            \
+                                     const constraint_solve_context &) noexcept;                             \
+    template void solve_limit_row(const Row &, scalar, scalar &, solver_body &, solver_body &,               \
+                                  const constraint_solve_context &, scalar) noexcept;                        \
+    template void solve_friction_row(const Row &, scalar, scalar &, solver_body &, solver_body &) noexcept;  \
+    template void solve_spring_row(const Row &, scalar, scalar, scalar, scalar &, solver_body &,             \
+                                   solver_body &, const constraint_solve_context &, bool) noexcept;
+EDYN_INSTANTIATE_ROW_SOLVERS(jacobian)
+EDYN_INSTANTIATE_ROW_SOLVERS(angular_row)
+#undef EDYN_INSTANTIATE_ROW_SOLVERS
 
 namespace {
 

@@ -109,7 +109,7 @@ void solve_twist_bounce(cvjoint_constraint_solver &s, const vector3 &axis, const
     constexpr int iterations = 16;
     auto rigid = ctx;
     rigid.use_bias = false;
-    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    const angular_row rows[2]{{-axis}, {axis}};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
@@ -148,7 +148,7 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
     warm_point_mass(s.anchor, a, b, pose);
     auto &axis = s.twist_axis;
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
-    apply_row_impulse(angular_jacobian(-axis), a, b, s.twist_impulse);
+    apply_row_impulse(angular_row{-axis}, a, b, s.twist_impulse);
     apply_angular_impulse(a, b, axis * (s.friction_impulse + s.spring_impulse) + s.bend_friction_impulse);
     warm_start_angular_limit(s.limit, axis, a, b);
 }
@@ -159,11 +159,11 @@ void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
     auto &b = bodies[s.anchor.body[1]];
     const auto &axis = s.twist_axis;
     const auto twist = s.present_twist;
-    auto row = angular_jacobian(axis); // its rate is minus the twist rate
+    auto row = angular_row{axis}; // its rate is minus the twist rate
 
     if (s.bend_friction_torque > 0) solve_bend_friction(s, axis, a, b, ctx);
     if (s.locked) {
-        solve_equality_row(angular_jacobian(-axis), twist - s.limit.min, s.twist_impulse, a, b, ctx);
+        solve_equality_row(angular_row{-axis}, twist - s.limit.min, s.twist_impulse, a, b, ctx);
     } else {
         if (s.friction_torque > 0)
             solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);

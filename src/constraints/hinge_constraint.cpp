@@ -78,7 +78,7 @@ bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, 
 
 void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (&impulse)[2], solver_body &a,
                         solver_body &b) noexcept {
-    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    const angular_row rows[2]{{-axis}, {axis}};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         auto mass = row_effective_mass(rows[i], a, b);
@@ -90,7 +90,7 @@ void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (
 
 void solve_angular_limit(angular_limit &limit, const vector3 &axis, scalar angle, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept {
-    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    const angular_row rows[2]{{-axis}, {axis}};
     const scalar gaps[2]{angle - limit.min, limit.max - angle};
     for (int i = 0; i < 2; ++i) {
         if (!std::isfinite(gaps[i])) continue;
@@ -113,7 +113,7 @@ void solve_axis_alignment(const matrix3x3 &frameA, const vector3 &axisB, scalar 
     // dot(uA_i x axisB, wA - wB).
     for (int i = 0; i < 2; ++i) {
         auto u = frameA.column(i + 1);
-        solve_equality_row(angular_jacobian(cross(u, axisB)), dot(u, axisB), impulse[i], a, b, ctx);
+        solve_equality_row(angular_row{cross(u, axisB)}, dot(u, axisB), impulse[i], a, b, ctx);
     }
 }
 
@@ -161,7 +161,7 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     auto axis = s.present_frameA.column(0);
     // The limit's warm-started push is part of the approach being answered: take it back, or
     // the limit row would remove it from the bounce once the hinge separates.
-    const jacobian rows[2]{angular_jacobian(-axis), angular_jacobian(axis)};
+    const angular_row rows[2]{{-axis}, {axis}};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
@@ -208,7 +208,7 @@ void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
     auto &b = bodies[s.anchor.body[1]];
     auto axis = s.present_frameA.column(0);
     auto angle = s.present_angle;
-    auto row = angular_jacobian(axis);
+    auto row = angular_row{axis};
 
     // Motion-resisting rows first; the limits and the joint itself have the final word.
     if (s.friction_torque > 0) solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);

@@ -3,6 +3,7 @@
 
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/math/quaternion.hpp"
+#include <type_traits>
 
 namespace edyn {
 
@@ -162,6 +163,48 @@ inline void apply_row_impulse(const jacobian &j, solver_body &a, solver_body &b,
     }
 }
 
+/// A row that only turns the bodies: angular_jacobian(axis) without its zero linear parts, which
+/// the row functions then skip. Every function gives the same bits for it as for that jacobian
+/// (the zero terms it leaves out add nothing), only sooner: hinge and cone-twist rows are such.
+struct angular_row {
+    /// Axis, world space, unit or not (as angular_jacobian()'s): the row's velocity is
+    /// dot(axis, wA - wB).
+    vector3 axis;
+};
+
+/// Velocity of an angular row: dot(axis, wA) - dot(axis, wB) (rad/s for a unit axis).
+/// @param j The row.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @return The rate of the row's angle.
+inline scalar row_velocity(const angular_row &j, const solver_body &a, const solver_body &b) noexcept {
+    return dot(j.axis, a.angvel) - dot(j.axis, b.angvel);
+}
+
+/// Inverse of axis . (IA^-1 + IB^-1) axis, or zero when neither body can turn about the axis.
+/// @param j The row.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @return The row's effective mass (kg m^2 for a unit axis), or 0.
+inline scalar row_effective_mass(const angular_row &j, const solver_body &a, const solver_body &b) noexcept {
+    auto k = dot(j.axis, a.inv_inertia * j.axis) + dot(j.axis, b.inv_inertia * j.axis);
+    return k > 0 ? scalar(1) / k : scalar(0);
+}
+
+/// Applies an angular impulse `lambda` about the row's axis: +lambda to A, -lambda to B.
+/// Bodies that do not move are left untouched, as apply_row_impulse() for a jacobian leaves them.
+/// @param j The row.
+/// @param a Body A's solver state, changed when it moves.
+/// @param b Body B's solver state, changed when it moves.
+/// @param lambda The impulse about the axis (N m s).
+inline void apply_row_impulse(const angular_row &j, solver_body &a, solver_body &b, scalar lambda) noexcept {
+    apply_angular_impulse(a, b, j.axis * lambda);
+}
+
+/// The rows that the row solvers below take: a full jacobian or an angular row.
+template<typename Row>
+concept constraint_row = std::is_same_v<Row, jacobian> || std::is_same_v<Row, angular_row>;
+
 /// Soft coefficients of an implicit spring of stiffness k and damping c acting on a row of
 /// effective mass `mass` over the sub-step h (the rigid softness formula expressed in physical
 /// units, so that the spring's frequency is sqrt(k / mass) whatever the sub-step).
@@ -181,7 +224,8 @@ softness make_spring_softness(scalar k, scalar c, scalar mass, scalar h) noexcep
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
 /// @param ctx The pass: sub-step, softness and whether to correct position errors.
-void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
+template<constraint_row Row>
+void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                         const constraint_solve_context &ctx) noexcept;
 
 /// Unilateral row keeping C >= 0 (impulse >= 0). A gap (C > 0) may close within the sub-step
@@ -195,7 +239,8 @@ void solve_equality_row(const jacobian &j, scalar C, scalar &impulse, solver_bod
 /// @param b Body B's solver state.
 /// @param ctx The pass: sub-step, softness and whether to correct position errors.
 /// @param bounce_velocity Separating velocity to reach when positive (m/s or rad/s); 0 for none.
-void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
+template<constraint_row Row>
+void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
                      const constraint_solve_context &ctx, scalar bounce_velocity = 0) noexcept;
 
 /// Row driving its velocity to zero with an impulse bounded by max_impulse per sub-step.
@@ -207,7 +252,8 @@ void solve_limit_row(const jacobian &j, scalar C, scalar &impulse, solver_body &
 /// [-max_impulse, max_impulse], updated.
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
-void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, solver_body &a,
+template<constraint_row Row>
+void solve_friction_row(const Row &j, scalar max_impulse, scalar &impulse, solver_body &a,
                         solver_body &b) noexcept;
 
 /// Spring and damper pulling C towards zero with stiffness k and damping c; solved in every
@@ -223,7 +269,8 @@ void solve_friction_row(const jacobian &j, scalar max_impulse, scalar &impulse, 
 /// @param b Body B's solver state.
 /// @param ctx The pass: its sub-step sets the spring's softness; `use_bias` must be true.
 /// @param unilateral Whether the spring may only push.
-void solve_spring_row(const jacobian &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
+template<constraint_row Row>
+void solve_spring_row(const Row &j, scalar C, scalar k, scalar c, scalar &impulse, solver_body &a,
                       solver_body &b, const constraint_solve_context &ctx, bool unilateral = false) noexcept;
 
 /// Position projection, after the sub-step's positions are integrated: moves the bodies so that

@@ -70,6 +70,69 @@ TEST(constraint_row, friction_row_is_bounded) {
     EXPECT_NEAR(a.angvel.z, 9.5, 1e-6);
 }
 
+// Angular rows leave out the jacobian's zero linear parts: every row solver must give the same
+// bits either way, for a non-unit axis, turned inertias, each pass and a body that does not move.
+TEST(constraint_row, an_angular_row_gives_the_bits_of_its_jacobian) {
+    auto turned_body = [](scalar inv_mass, const vector3 &diagonal, const quaternion &q) {
+        solver_body body;
+        body.inv_mass = inv_mass;
+        auto r = to_matrix3x3(q);
+        body.inv_inertia = r * diagonal_matrix(diagonal) * transpose(r);
+        body.linvel = {scalar(0.3), scalar(-1.1), scalar(0.7)};
+        body.angvel = vector3{scalar(1.7), scalar(-0.4), scalar(2.3)} * inv_mass;
+        return body;
+    };
+    const vector3 axis{scalar(0.3), scalar(-0.8), scalar(0.45)};
+    const auto a0 = turned_body(scalar(0.5), {scalar(2), scalar(3), scalar(5)},
+                                quaternion_axis_angle(normalize(vector3{1, 2, 3}), scalar(0.7)));
+    // The bodies turn at different rates, so that every row has something to stop.
+    const auto b0 = turned_body(scalar(0.25), {scalar(4), scalar(1), scalar(7)},
+                                quaternion_axis_angle(normalize(vector3{-2, 1, 1}), scalar(1.9)));
+    const solver_body fixed{};
+    const auto full = angular_jacobian(axis);
+    const angular_row angular{axis};
+
+    for (const auto *b_start : {&b0, &fixed}) {
+        for (bool biased : {false, true}) {
+            auto ctx = make_constraint_solve_context(constraint_solver_settings{}, scalar(1) / 240, biased);
+            // Each solver runs twice in a row, so that the second works from a non-zero impulse.
+            auto run = [&](auto &&solve_once) {
+                solver_body a1 = a0, b1 = *b_start, a2 = a0, b2 = *b_start;
+                scalar impulse1 = scalar(0.02), impulse2 = scalar(0.02);
+                for (int k = 0; k < 2; ++k) {
+                    solve_once(full, impulse1, a1, b1);
+                    solve_once(angular, impulse2, a2, b2);
+                }
+                EXPECT_EQ(impulse1, impulse2);
+                for (int i = 0; i < 3; ++i) {
+                    EXPECT_EQ(a1.linvel[i], a2.linvel[i]);
+                    EXPECT_EQ(a1.angvel[i], a2.angvel[i]);
+                    EXPECT_EQ(b1.linvel[i], b2.linvel[i]);
+                    EXPECT_EQ(b1.angvel[i], b2.angvel[i]);
+                }
+            };
+            run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
+                solve_equality_row(row, scalar(0.01), impulse, a, b, ctx);
+            });
+            run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
+                solve_limit_row(row, scalar(-0.01), impulse, a, b, ctx);
+            });
+            run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
+                solve_limit_row(row, scalar(0.001), impulse, a, b, ctx, scalar(0.5));
+            });
+            run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
+                solve_friction_row(row, scalar(0.05), impulse, a, b);
+            });
+            run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
+                solve_spring_row(row, scalar(0.1), 50, 2, impulse, a, b, ctx);
+            });
+        }
+    }
+    EXPECT_EQ(row_velocity(full, a0, b0), row_velocity(angular, a0, b0));
+    EXPECT_EQ(row_effective_mass(full, a0, b0), row_effective_mass(angular, a0, b0));
+    EXPECT_EQ(row_effective_mass(angular, fixed, fixed), 0);
+}
+
 TEST(constraint_row, spring_softness_matches_implicit_euler) {
     // m x'' = -k x - c x' integrated implicitly: v1 = (v0 - h k x0 / m) / (1 + h (c + h k) / m).
     const scalar k = 100, c = 3, m = 2, h = scalar(0.01), x0 = scalar(0.2), v0 = scalar(-1);
