@@ -44,12 +44,20 @@ void validate_constraint(const cvjoint_constraint &c) {
     check_constraint_non_negative(type, "twist_bump_stop_stiffness", c.twist_bump_stop_stiffness);
 }
 
+namespace {
+
+// The twist from the frames' first two columns, all the third column would add: the axes and
+// the reference directions whose angle about B's axis the twist is.
+scalar twist_of(const vector3 &axisA, const vector3 &refA, const vector3 &axisB,
+                const vector3 &refB) noexcept {
+    auto p = rotate(shortest_arc(axisA, axisB), refA);
+    return detail::arctan2(dot(cross(p, refB), axisB), dot(p, refB));
+}
+
+} // namespace
+
 scalar cvjoint_twist(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept {
-    auto axisB = frameB.column(0);
-    auto swing = shortest_arc(frameA.column(0), axisB);
-    auto p = rotate(swing, frameA.column(1));
-    auto q = frameB.column(1);
-    return detail::arctan2(dot(cross(p, q), axisB), dot(p, q));
+    return twist_of(frameA.column(0), frameA.column(1), frameB.column(0), frameB.column(1));
 }
 
 vector3 cvjoint_twist_axis(const vector3 &axisA, const vector3 &axisB) noexcept {
@@ -94,10 +102,13 @@ cvjoint_constraint_solver make_constraint_solver(const registry &registry, const
 }
 
 void refresh_geometry(cvjoint_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
-    auto frameA = rotate_frame(bodies[s.anchor.body[0]].delta_rotation, s.frameA);
-    auto frameB = rotate_frame(bodies[s.anchor.body[1]].delta_rotation, s.frameB);
-    s.twist_axis = cvjoint_twist_axis(frameA.column(0), frameB.column(0));
-    s.present_twist = unwrap_angle(s.twist, cvjoint_twist(frameA, frameB));
+    // The frames' first two columns turned with the bodies: the twist needs no more.
+    const auto &qA = bodies[s.anchor.body[0]].delta_rotation;
+    const auto &qB = bodies[s.anchor.body[1]].delta_rotation;
+    auto axisA = rotate(qA, s.frameA.column(0)), refA = rotate(qA, s.frameA.column(1));
+    auto axisB = rotate(qB, s.frameB.column(0)), refB = rotate(qB, s.frameB.column(1));
+    s.twist_axis = cvjoint_twist_axis(axisA, axisB);
+    s.present_twist = unwrap_angle(s.twist, twist_of(axisA, refA, axisB, refB));
 }
 
 namespace {
@@ -127,12 +138,11 @@ void solve_twist_bounce(cvjoint_constraint_solver &s, const vector3 &axis, const
 // direction of bending.
 void solve_bend_friction(cvjoint_constraint_solver &s, const vector3 &twist_axis, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept {
-    auto k = a.inv_inertia + b.inv_inertia;
-    if (!(std::abs(determinant(k)) > scalar(1e-12))) return;
+    if (!s.bend_mass_valid) return;
     auto u = normalize(twist_axis);
     auto max_impulse = s.bend_friction_torque * ctx.h;
     auto bend_rate = project_plane(a.angvel - b.angvel, u);
-    auto new_impulse = project_plane(s.bend_friction_impulse - inverse(k) * bend_rate, u);
+    auto new_impulse = project_plane(s.bend_friction_impulse - s.bend_mass * bend_rate, u);
     auto len_sqr = length_sqr(new_impulse);
     if (len_sqr > max_impulse * max_impulse) new_impulse *= max_impulse / std::sqrt(len_sqr);
     apply_angular_impulse(a, b, new_impulse - s.bend_friction_impulse);
@@ -146,11 +156,21 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
     auto &b = bodies[s.anchor.body[1]];
     auto &pose = s.anchor.pose;
     warm_point_mass(s.anchor, a, b, pose);
-    auto &axis = s.twist_axis;
+    if (s.bend_friction_torque > 0) {
+        // The bodies' inertia is the step's: the bend friction's mass is measured once a sub-step
+        // for its velocity passes.
+        auto k = a.inv_inertia + b.inv_inertia;
+        s.bend_mass_valid = std::abs(determinant(k)) > scalar(1e-12);
+        if (s.bend_mass_valid) s.bend_mass = inverse(k);
+    }
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
-    apply_row_impulse(angular_row{-axis}, a, b, s.twist_impulse);
-    apply_angular_impulse(a, b, axis * (s.friction_impulse + s.spring_impulse) + s.bend_friction_impulse);
-    warm_start_angular_limit(s.limit, axis, a, b);
+    // The locked twist's row turns about -axis; friction, spring and limits about the axis;
+    // bend friction across it. One angular impulse carries them all.
+    auto &axis = s.twist_axis;
+    apply_angular_impulse(
+        a, b,
+        axis * (s.friction_impulse + s.spring_impulse + warm_start_impulse(s.limit) - s.twist_impulse) +
+            s.bend_friction_impulse);
 }
 
 void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,

@@ -43,15 +43,6 @@ scalar relative_angle(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept
     return detail::arctan2(dot(cross(a1, b1), axis), dot(a1, b1));
 }
 
-void warm_start_angular_limit(const angular_limit &limit, const vector3 &axis, solver_body &a,
-                              solver_body &b) noexcept {
-    // Rows of the lower limit and lower bump stop push along -axis (raising the angle); the
-    // upper ones along +axis.
-    auto lower = limit.impulse[0] + limit.bump_impulse[0];
-    auto upper = limit.impulse[1] + limit.bump_impulse[1];
-    apply_angular_impulse(a, b, axis * (upper - lower));
-}
-
 bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
                        const solver_body &b, const constraint_solve_context &ctx,
                        scalar (&bounce)[2]) noexcept {
@@ -193,13 +184,13 @@ void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexc
     warm_point_mass(s.anchor, a, b, pose);
     auto axis = s.present_frameA.column(0);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
+    // The alignment rows turn about uA_i x axisB; friction, spring and limits about the axis
+    // (their rate is dot(axis, wA - wB)). One angular impulse carries them all.
+    auto turn = axis * (s.friction_impulse + s.spring_impulse + warm_start_impulse(s.limit));
     for (int i = 0; i < 2; ++i) {
-        apply_angular_impulse(a, b,
-                              cross(s.present_frameA.column(i + 1), s.present_axisB) * s.align_impulse[i]);
+        turn += cross(s.present_frameA.column(i + 1), s.present_axisB) * s.align_impulse[i];
     }
-    // Friction and spring rows act on the rate dot(axis, wA - wB).
-    apply_angular_impulse(a, b, axis * (s.friction_impulse + s.spring_impulse));
-    warm_start_angular_limit(s.limit, axis, a, b);
+    apply_angular_impulse(a, b, turn);
 }
 
 void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,

@@ -145,6 +145,11 @@ struct cvjoint_constraint_solver {
     scalar friction_impulse;       ///< Twist friction impulse (N m s).
     scalar spring_impulse;         ///< Twist spring and damper impulse (N m s).
     vector3 bend_friction_impulse; ///< Bend friction impulse (N m s, world space).
+    /// Inverse of IA^-1 + IB^-1, the bend friction's mass (kg m^2), measured at each sub-step's
+    /// warm start when the joint has bend friction.
+    matrix3x3 bend_mass{matrix3x3_zero};
+    /// Whether `bend_mass` holds an inverse: false when neither body can turn.
+    bool bend_mass_valid{false};
 };
 
 /// Prepares a CV joint for this step's solve: pivots and frames in world space, the unwrapped

@@ -133,14 +133,15 @@ struct angular_limit {
     scalar bump_impulse[2]{0, 0}; ///< Impulses of the two bump stops over the sub-step (N m s).
 };
 
-/// Re-applies the accumulated impulses of the limits and bump stops, at the start of each
-/// sub-step.
+/// The accumulated impulses of the limits and bump stops as one angular impulse about +axis
+/// (N m s), which each sub-step's warm start re-applies with the joint's other angular impulses:
+/// the lower limit and its bump stop push along -axis (raising the angle), the upper ones along
+/// +axis.
 /// @param limit The limits and their impulses.
-/// @param axis The axis about which the angle turns, world space.
-/// @param a Body A's solver state.
-/// @param b Body B's solver state.
-void warm_start_angular_limit(const angular_limit &limit, const vector3 &axis, solver_body &a,
-                              solver_body &b) noexcept;
+/// @return The upper impulses minus the lower ones.
+inline scalar warm_start_impulse(const angular_limit &limit) noexcept {
+    return (limit.impulse[1] + limit.bump_impulse[1]) - (limit.impulse[0] + limit.bump_impulse[0]);
+}
 /// One pass over the rows of the finite limits and, where both bump stop values are positive,
 /// their bump stops (a spring that only pushes, within `bump_angle` of a limit).
 /// @param limit The limits; their impulses accumulate.
