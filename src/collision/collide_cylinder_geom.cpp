@@ -208,6 +208,13 @@ namespace {
 // opposite to both end values, if there is one.
 bool hermite_dip(double f0, double f1, double d0, double d1, double &t) noexcept {
     if ((f0 < 0) != (f1 < 0)) return false;
+    // In Hermite form H = f0 h00 + f1 h01 + d0 h10 + d1 h11, where h00 + h01 = 1 with both
+    // non-negative and |h10|, |h11| <= 4/27 on [0, 1]: H keeps the end values' sign while the
+    // smaller of them outweighs 4/27 (|d0| + |d1|). Most intervals are such, and need no roots;
+    // the margin is far above the rounding of the search below, which would find no dip either.
+    auto reach = (std::abs(d0) + std::abs(d1)) * (4.0 / 27.0);
+    auto low = std::min(std::abs(f0), std::abs(f1));
+    if (low - reach > 1e-9 * (low + reach)) return false;
     // H(t) = a t^3 + b t^2 + d0 t + f0.
     auto a = 2 * f0 - 2 * f1 + d0 + d1;
     auto b = -3 * f0 + 3 * f1 - 2 * d0 - d1;
