@@ -103,11 +103,13 @@ cvjoint_constraint_solver make_constraint_solver(const registry &registry, const
 
 void refresh_geometry(cvjoint_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
     // The frames' first two columns turned with the bodies: the twist needs no more.
-    const auto &qA = bodies[s.anchor.body[0]].delta_rotation;
-    const auto &qB = bodies[s.anchor.body[1]].delta_rotation;
+    const auto &a = bodies[s.anchor.body[0]];
+    const auto &b = bodies[s.anchor.body[1]];
+    const auto &qA = a.delta_rotation;
+    const auto &qB = b.delta_rotation;
     auto axisA = rotate(qA, s.frameA.column(0)), refA = rotate(qA, s.frameA.column(1));
     auto axisB = rotate(qB, s.frameB.column(0)), refB = rotate(qB, s.frameB.column(1));
-    s.twist_axis = cvjoint_twist_axis(axisA, axisB);
+    s.twist_row = make_angular_row(cvjoint_twist_axis(axisA, axisB), a, b);
     s.present_twist = unwrap_angle(s.twist, twist_of(axisA, refA, axisB, refB));
 }
 
@@ -115,12 +117,13 @@ namespace {
 
 // A twist limit hit with restitution, solved as an isolated collision of the limit and the
 // pivot, iterated from zero impulses until they agree.
-void solve_twist_bounce(cvjoint_constraint_solver &s, const vector3 &axis, const scalar (&bounce)[2],
-                        solver_body &a, solver_body &b, const constraint_solve_context &ctx) {
+void solve_twist_bounce(cvjoint_constraint_solver &s, const scalar (&bounce)[2], solver_body &a,
+                        solver_body &b, const constraint_solve_context &ctx) {
     constexpr int iterations = 16;
     auto rigid = ctx;
     rigid.use_bias = false;
-    const angular_row rows[2]{{-axis}, {axis}};
+    const auto &row = s.twist_row;
+    const angular_row rows[2]{{-row.axis, row.mass}, row};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
@@ -129,7 +132,7 @@ void solve_twist_bounce(cvjoint_constraint_solver &s, const vector3 &axis, const
     scalar limit_impulse[2]{0, 0};
     vector3 point_impulse = vector3_zero;
     for (int k = 0; k < iterations; ++k) {
-        solve_limit_bounce(axis, bounce, limit_impulse, a, b);
+        solve_limit_bounce(row, bounce, limit_impulse, a, b);
         solve_point_block(s.anchor, point_impulse, a, b, rigid);
     }
 }
@@ -166,7 +169,7 @@ void warm_start(cvjoint_constraint_solver &s, std::span<solver_body> bodies) noe
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     // The locked twist's row turns about -axis; friction, spring and limits about the axis;
     // bend friction across it. One angular impulse carries them all.
-    auto &axis = s.twist_axis;
+    const auto &axis = s.twist_row.axis;
     apply_angular_impulse(
         a, b,
         axis * (s.friction_impulse + s.spring_impulse + warm_start_impulse(s.limit) - s.twist_impulse) +
@@ -177,13 +180,12 @@ void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    const auto &axis = s.twist_axis;
+    const auto &row = s.twist_row; // its rate is minus the twist rate
     const auto twist = s.present_twist;
-    auto row = angular_row{axis}; // its rate is minus the twist rate
 
-    if (s.bend_friction_torque > 0) solve_bend_friction(s, axis, a, b, ctx);
+    if (s.bend_friction_torque > 0) solve_bend_friction(s, row.axis, a, b, ctx);
     if (s.locked) {
-        solve_equality_row(angular_row{-axis}, twist - s.limit.min, s.twist_impulse, a, b, ctx);
+        solve_equality_row(angular_row{-row.axis, row.mass}, twist - s.limit.min, s.twist_impulse, a, b, ctx);
     } else {
         if (s.friction_torque > 0)
             solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);
@@ -191,10 +193,10 @@ void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
             solve_spring_row(row, s.rest_angle - twist, s.stiffness, s.damping, s.spring_impulse, a, b, ctx);
         }
         scalar bounce[2];
-        if (detect_limit_hits(s.limit, axis, twist, a, b, ctx, bounce)) {
-            solve_twist_bounce(s, axis, bounce, a, b, ctx);
+        if (detect_limit_hits(s.limit, row.axis, twist, a, b, ctx, bounce)) {
+            solve_twist_bounce(s, bounce, a, b, ctx);
         }
-        solve_angular_limit(s.limit, axis, twist, a, b, ctx);
+        solve_angular_limit(s.limit, row, twist, a, b, ctx);
     }
     solve_point_block(s.anchor, s.impulse, a, b, ctx);
     if (!ctx.use_bias) s.twist = twist;

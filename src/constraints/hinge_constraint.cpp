@@ -67,9 +67,9 @@ bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, 
     return any;
 }
 
-void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (&impulse)[2], solver_body &a,
-                        solver_body &b) noexcept {
-    const angular_row rows[2]{{-axis}, {axis}};
+void solve_limit_bounce(const angular_row &row, const scalar (&bounce)[2], scalar (&impulse)[2],
+                        solver_body &a, solver_body &b) noexcept {
+    const angular_row rows[2]{{-row.axis, row.mass}, row};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         auto mass = row_effective_mass(rows[i], a, b);
@@ -79,9 +79,9 @@ void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (
     }
 }
 
-void solve_angular_limit(angular_limit &limit, const vector3 &axis, scalar angle, solver_body &a,
+void solve_angular_limit(angular_limit &limit, const angular_row &row, scalar angle, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept {
-    const angular_row rows[2]{{-axis}, {axis}};
+    const angular_row rows[2]{{-row.axis, row.mass}, row};
     const scalar gaps[2]{angle - limit.min, limit.max - angle};
     for (int i = 0; i < 2; ++i) {
         if (!std::isfinite(gaps[i])) continue;
@@ -98,14 +98,10 @@ void solve_angular_limit(angular_limit &limit, const vector3 &axis, scalar angle
     }
 }
 
-void solve_axis_alignment(const matrix3x3 &frameA, const vector3 &axisB, scalar (&impulse)[2], solver_body &a,
-                          solver_body &b, const constraint_solve_context &ctx) noexcept {
-    // C_i = dot(uA_i, axisB) is zero when the axes are parallel; its rate is
-    // dot(uA_i x axisB, wA - wB).
-    for (int i = 0; i < 2; ++i) {
-        auto u = frameA.column(i + 1);
-        solve_equality_row(angular_row{cross(u, axisB)}, dot(u, axisB), impulse[i], a, b, ctx);
-    }
+void solve_axis_alignment(const angular_row (&rows)[2], const scalar (&errors)[2], scalar (&impulse)[2],
+                          solver_body &a, solver_body &b, const constraint_solve_context &ctx) noexcept {
+    for (int i = 0; i < 2; ++i)
+        solve_equality_row(rows[i], errors[i], impulse[i], a, b, ctx);
 }
 
 hinge_constraint_solver make_constraint_solver(const registry &registry, const hinge_constraint &c,
@@ -149,10 +145,10 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     constexpr int iterations = 32;
     auto rigid = ctx;
     rigid.use_bias = false;
-    auto axis = s.present_frameA.column(0);
+    const auto &row = s.axis_row;
     // The limit's warm-started push is part of the approach being answered: take it back, or
     // the limit row would remove it from the bounce once the hinge separates.
-    const angular_row rows[2]{{-axis}, {axis}};
+    const angular_row rows[2]{{-row.axis, row.mass}, row};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
@@ -161,8 +157,8 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     scalar limit_impulse[2]{0, 0}, align_impulse[2]{0, 0};
     vector3 point_impulse = vector3_zero;
     for (int k = 0; k < iterations; ++k) {
-        solve_limit_bounce(axis, bounce, limit_impulse, a, b);
-        solve_axis_alignment(s.present_frameA, s.present_axisB, align_impulse, a, b, rigid);
+        solve_limit_bounce(row, bounce, limit_impulse, a, b);
+        solve_axis_alignment(s.align_rows, s.align_errors, align_impulse, a, b, rigid);
         solve_point_block(s.anchor, point_impulse, a, b, rigid);
     }
 }
@@ -170,10 +166,17 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
 } // namespace
 
 void refresh_geometry(hinge_constraint_solver &s, std::span<const solver_body> bodies) noexcept {
-    auto frameA = rotate_frame(bodies[s.anchor.body[0]].delta_rotation, s.frameA);
-    auto frameB = rotate_frame(bodies[s.anchor.body[1]].delta_rotation, s.frameB);
-    s.present_frameA = frameA;
-    s.present_axisB = frameB.column(0);
+    const auto &a = bodies[s.anchor.body[0]];
+    const auto &b = bodies[s.anchor.body[1]];
+    auto frameA = rotate_frame(a.delta_rotation, s.frameA);
+    auto frameB = rotate_frame(b.delta_rotation, s.frameB);
+    auto axisB = frameB.column(0);
+    s.axis_row = make_angular_row(frameA.column(0), a, b);
+    for (int i = 0; i < 2; ++i) {
+        auto u = frameA.column(i + 1);
+        s.align_rows[i] = make_angular_row(cross(u, axisB), a, b);
+        s.align_errors[i] = dot(u, axisB);
+    }
     s.present_angle = unwrap_angle(s.angle, relative_angle(frameA, frameB));
 }
 
@@ -182,13 +185,12 @@ void warm_start(hinge_constraint_solver &s, std::span<solver_body> bodies) noexc
     auto &b = bodies[s.anchor.body[1]];
     auto &pose = s.anchor.pose;
     warm_point_mass(s.anchor, a, b, pose);
-    auto axis = s.present_frameA.column(0);
     apply_impulse(a, b, s.impulse, pose.rA, pose.rB);
     // The alignment rows turn about uA_i x axisB; friction, spring and limits about the axis
     // (their rate is dot(axis, wA - wB)). One angular impulse carries them all.
-    auto turn = axis * (s.friction_impulse + s.spring_impulse + warm_start_impulse(s.limit));
+    auto turn = s.axis_row.axis * (s.friction_impulse + s.spring_impulse + warm_start_impulse(s.limit));
     for (int i = 0; i < 2; ++i) {
-        turn += cross(s.present_frameA.column(i + 1), s.present_axisB) * s.align_impulse[i];
+        turn += s.align_rows[i].axis * s.align_impulse[i];
     }
     apply_angular_impulse(a, b, turn);
 }
@@ -197,9 +199,8 @@ void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
            const constraint_solve_context &ctx) noexcept {
     auto &a = bodies[s.anchor.body[0]];
     auto &b = bodies[s.anchor.body[1]];
-    auto axis = s.present_frameA.column(0);
+    const auto &row = s.axis_row;
     auto angle = s.present_angle;
-    auto row = angular_row{axis};
 
     // Motion-resisting rows first; the limits and the joint itself have the final word.
     if (s.friction_torque > 0) solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);
@@ -208,11 +209,11 @@ void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
         solve_spring_row(row, s.rest_angle - angle, s.stiffness, s.damping, s.spring_impulse, a, b, ctx);
     }
     scalar bounce[2];
-    if (detect_limit_hits(s.limit, axis, angle, a, b, ctx, bounce)) {
+    if (detect_limit_hits(s.limit, row.axis, angle, a, b, ctx, bounce)) {
         solve_hinge_bounce(s, bounce, a, b, ctx);
     }
-    solve_angular_limit(s.limit, axis, angle, a, b, ctx);
-    solve_axis_alignment(s.present_frameA, s.present_axisB, s.align_impulse, a, b, ctx);
+    solve_angular_limit(s.limit, row, angle, a, b, ctx);
+    solve_axis_alignment(s.align_rows, s.align_errors, s.align_impulse, a, b, ctx);
     solve_point_block(s.anchor, s.impulse, a, b, ctx);
     if (!ctx.use_bias) s.angle = angle;
 }

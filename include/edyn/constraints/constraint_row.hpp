@@ -164,13 +164,29 @@ inline void apply_row_impulse(const jacobian &j, solver_body &a, solver_body &b,
 }
 
 /// A row that only turns the bodies: angular_jacobian(axis) without its zero linear parts, which
-/// the row functions then skip. Every function gives the same bits for it as for that jacobian
-/// (the zero terms it leaves out add nothing), only sooner: hinge and cone-twist rows are such.
+/// the row functions then skip, and with its effective mass measured when the row is made (the
+/// bodies' inertia is the step's, so a joint measures its axes' rows once a sub-step, when it
+/// refreshes its geometry). Every row function gives the same bits for it as for that jacobian
+/// (the zero terms it leaves out add nothing): hinge and cone-twist rows are such.
 struct angular_row {
     /// Axis, world space, unit or not (as angular_jacobian()'s): the row's velocity is
     /// dot(axis, wA - wB).
     vector3 axis;
+    /// The row's effective mass, 1 / axis . (IA^-1 + IB^-1) axis, or 0 when neither body can
+    /// turn about the axis (kg m^2 for a unit axis). The row about -axis has the same.
+    scalar mass;
 };
+
+/// Makes the angular row about `axis` for bodies a and b, its effective mass measured.
+/// @param axis Axis, world space, unit or not.
+/// @param a Body A's solver state.
+/// @param b Body B's solver state.
+/// @return The row.
+inline angular_row make_angular_row(const vector3 &axis, const solver_body &a,
+                                    const solver_body &b) noexcept {
+    auto k = dot(axis, a.inv_inertia * axis) + dot(axis, b.inv_inertia * axis);
+    return {axis, k > 0 ? scalar(1) / k : scalar(0)};
+}
 
 /// Velocity of an angular row: dot(axis, wA) - dot(axis, wB) (rad/s for a unit axis).
 /// @param j The row.
@@ -181,14 +197,11 @@ inline scalar row_velocity(const angular_row &j, const solver_body &a, const sol
     return dot(j.axis, a.angvel) - dot(j.axis, b.angvel);
 }
 
-/// Inverse of axis . (IA^-1 + IB^-1) axis, or zero when neither body can turn about the axis.
+/// The effective mass an angular row was made with (see make_angular_row()).
 /// @param j The row.
-/// @param a Body A's solver state.
-/// @param b Body B's solver state.
-/// @return The row's effective mass (kg m^2 for a unit axis), or 0.
-inline scalar row_effective_mass(const angular_row &j, const solver_body &a, const solver_body &b) noexcept {
-    auto k = dot(j.axis, a.inv_inertia * j.axis) + dot(j.axis, b.inv_inertia * j.axis);
-    return k > 0 ? scalar(1) / k : scalar(0);
+/// @return `j.mass`.
+inline scalar row_effective_mass(const angular_row &j, const solver_body &, const solver_body &) noexcept {
+    return j.mass;
 }
 
 /// Applies an angular impulse `lambda` about the row's axis: +lambda to A, -lambda to B.

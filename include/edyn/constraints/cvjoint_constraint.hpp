@@ -122,11 +122,12 @@ struct cvjoint_constraint_solver {
     /// Body B's frame in world space, at the start of the step.
     matrix3x3 frameA, frameB;
     scalar twist{0}; ///< Twist (radians, unwrapped), updated after each relax pass.
-    /// @var twist_axis
-    /// Axis of the twist's rate at the bodies' present poses (refresh_geometry()).
+    /// @var twist_row
+    /// The row about the axis of the twist's rate at the bodies' present poses
+    /// (refresh_geometry()).
     /// @var present_twist
     /// Twist at the bodies' present poses (radians, unwrapped from `twist`).
-    vector3 twist_axis{vector3_zero};
+    angular_row twist_row{vector3_zero, 0};
     scalar present_twist{0};
     bool locked{true}; ///< Whether the twist limits are equal, so that the twist is held.
     /// @var friction_torque

@@ -145,12 +145,13 @@ inline scalar warm_start_impulse(const angular_limit &limit) noexcept {
 /// One pass over the rows of the finite limits and, where both bump stop values are positive,
 /// their bump stops (a spring that only pushes, within `bump_angle` of a limit).
 /// @param limit The limits; their impulses accumulate.
-/// @param axis The axis about which the angle turns, world space.
+/// @param row The row about the axis about which the angle turns, world space (the lower limit's
+/// row is the same about -axis).
 /// @param angle The angle now (radians, unwrapped).
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
 /// @param ctx The pass (biased or relax).
-void solve_angular_limit(angular_limit &limit, const vector3 &axis, scalar angle, solver_body &a,
+void solve_angular_limit(angular_limit &limit, const angular_row &row, scalar angle, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept;
 /// Separating velocity for each limit hit in the coming sub-step faster than the threshold (0 for
 /// the others); marks them as bounced. Returns whether any was hit.
@@ -169,14 +170,14 @@ bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, 
                        scalar (&bounce)[2]) noexcept;
 /// Drives the rate of each hit limit to its bounce velocity (impulses that only push), as one
 /// row of an isolated collision solve.
-/// @param axis The axis about which the angle turns, world space.
+/// @param row The row about the axis about which the angle turns, world space.
 /// @param bounce The separating rate of the lower and upper limits (rad/s); rows at 0 or below
 /// are skipped.
 /// @param impulse The bounce impulses of the two limits (N m s), accumulated and not negative.
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
-void solve_limit_bounce(const vector3 &axis, const scalar (&bounce)[2], scalar (&impulse)[2], solver_body &a,
-                        solver_body &b) noexcept;
+void solve_limit_bounce(const angular_row &row, const scalar (&bounce)[2], scalar (&impulse)[2],
+                        solver_body &a, solver_body &b) noexcept;
 
 /// A hinge_constraint as the solver sees it during a step.
 struct hinge_constraint_solver {
@@ -188,14 +189,19 @@ struct hinge_constraint_solver {
     /// Body B's frame in world space, at the start of the step.
     matrix3x3 frameA, frameB;
     scalar angle{0}; ///< Hinge angle (radians, unwrapped), updated after each relax pass.
-    /// @var present_frameA
-    /// Body A's frame at the bodies' present poses (refresh_geometry()).
-    /// @var present_axisB
-    /// Body B's hinge axis there.
+    /// @var axis_row
+    /// The row about A's hinge axis at the bodies' present poses (refresh_geometry()): friction,
+    /// spring and limits act on its rate.
+    /// @var align_rows
+    /// The two rows keeping B's axis parallel to A's there, about uA_i x axisB for A's other two
+    /// frame axes uA_i.
+    /// @var align_errors
+    /// Their errors there, dot(uA_i, axisB).
     /// @var present_angle
     /// The hinge angle there (radians, unwrapped from `angle`).
-    matrix3x3 present_frameA{matrix3x3_identity};
-    vector3 present_axisB{vector3_zero};
+    angular_row axis_row{vector3_zero, 0};
+    angular_row align_rows[2]{{vector3_zero, 0}, {vector3_zero, 0}};
+    scalar align_errors[2]{0, 0};
     scalar present_angle{0};
     /// @var friction_torque
     /// Friction torque about the axis (N m).
@@ -247,15 +253,16 @@ void store_impulses(const hinge_constraint_solver &s, hinge_constraint &c) noexc
 inline joint_anchor *projected_pivots(hinge_constraint_solver &s) noexcept { return &s.anchor; }
 
 /// Shared with the other joints that align an axis: two angular rows keeping axisB parallel to
-/// axisA, measured against A's two other axes (frame columns 1 and 2).
-/// @param frameA Body A's frame now, world space (first column: the axis).
-/// @param axisB Body B's axis now, world space, unit length.
+/// axisA, measured against A's two other axes uA_i (frame columns 1 and 2): the error of each is
+/// C_i = dot(uA_i, axisB), its rate dot(uA_i x axisB, wA - wB).
+/// @param rows The rows about uA_i x axisB, world space, from make_angular_row().
+/// @param errors The errors C_i now.
 /// @param impulse Impulses of the two rows over the sub-step (N m s), updated.
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
 /// @param ctx The pass (biased or relax).
-void solve_axis_alignment(const matrix3x3 &frameA, const vector3 &axisB, scalar (&impulse)[2], solver_body &a,
-                          solver_body &b, const constraint_solve_context &ctx) noexcept;
+void solve_axis_alignment(const angular_row (&rows)[2], const scalar (&errors)[2], scalar (&impulse)[2],
+                          solver_body &a, solver_body &b, const constraint_solve_context &ctx) noexcept;
 
 } // namespace edyn
 
