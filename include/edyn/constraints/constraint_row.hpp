@@ -167,7 +167,8 @@ inline void apply_row_impulse(const jacobian &j, solver_body &a, solver_body &b,
 /// the row functions then skip, and with its effective mass measured when the row is made (the
 /// bodies' inertia is the step's, so a joint measures its axes' rows once a sub-step, when it
 /// refreshes its geometry). Every row function gives the same bits for it as for that jacobian
-/// (the zero terms it leaves out add nothing): hinge and cone-twist rows are such.
+/// (the zero terms it leaves out add nothing): the hinge's and the CV joint's rows about an axis
+/// are such.
 struct angular_row {
     /// Axis, world space, unit or not (as angular_jacobian()'s): the row's velocity is
     /// dot(axis, wA - wB).
