@@ -123,7 +123,7 @@ void solve_twist_bounce(cvjoint_constraint_solver &s, const scalar (&bounce)[2],
     auto rigid = ctx;
     rigid.use_bias = false;
     const auto &row = s.twist_row;
-    const angular_row rows[2]{{-row.axis, row.mass}, row};
+    const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
@@ -185,7 +185,7 @@ void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
 
     if (s.bend_friction_torque > 0) solve_bend_friction(s, row.axis, a, b, ctx);
     if (s.locked) {
-        solve_equality_row(angular_row{-row.axis, row.mass}, twist - s.limit.min, s.twist_impulse, a, b, ctx);
+        solve_equality_row(-row, twist - s.limit.min, s.twist_impulse, a, b, ctx);
     } else {
         if (s.friction_torque > 0)
             solve_friction_row(row, s.friction_torque * ctx.h, s.friction_impulse, a, b);

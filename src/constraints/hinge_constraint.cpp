@@ -69,7 +69,7 @@ bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, 
 
 void solve_limit_bounce(const angular_row &row, const scalar (&bounce)[2], scalar (&impulse)[2],
                         solver_body &a, solver_body &b) noexcept {
-    const angular_row rows[2]{{-row.axis, row.mass}, row};
+    const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         auto mass = row_effective_mass(rows[i], a, b);
@@ -81,7 +81,7 @@ void solve_limit_bounce(const angular_row &row, const scalar (&bounce)[2], scala
 
 void solve_angular_limit(angular_limit &limit, const angular_row &row, scalar angle, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept {
-    const angular_row rows[2]{{-row.axis, row.mass}, row};
+    const angular_row rows[2]{-row, row};
     const scalar gaps[2]{angle - limit.min, limit.max - angle};
     for (int i = 0; i < 2; ++i) {
         if (!std::isfinite(gaps[i])) continue;
@@ -148,7 +148,7 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     const auto &row = s.axis_row;
     // The limit's warm-started push is part of the approach being answered: take it back, or
     // the limit row would remove it from the bounce once the hinge separates.
-    const angular_row rows[2]{{-row.axis, row.mass}, row};
+    const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
         if (bounce[i] <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);

@@ -174,9 +174,15 @@ struct angular_row {
     /// dot(axis, wA - wB).
     vector3 axis;
     /// The row's effective mass, 1 / axis . (IA^-1 + IB^-1) axis, or 0 when neither body can
-    /// turn about the axis (kg m^2 for a unit axis). The row about -axis has the same.
+    /// turn about the axis (kg m^2 for a unit axis).
     scalar mass;
 };
+
+/// The row about -axis: its rate is the opposite, its effective mass the same (the lower and
+/// upper limits of an angle push along opposite rows).
+/// @param j The row.
+/// @return The row about -j.axis, with j's mass.
+inline angular_row operator-(const angular_row &j) noexcept { return {-j.axis, j.mass}; }
 
 /// Makes the angular row about `axis` for bodies a and b, its effective mass measured.
 /// @param axis Axis, world space, unit or not.

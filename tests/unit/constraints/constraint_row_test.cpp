@@ -133,6 +133,12 @@ TEST(constraint_row, an_angular_row_gives_the_bits_of_its_jacobian) {
     }
     EXPECT_EQ(row_velocity(full, a0, b0), row_velocity(make_angular_row(axis, a0, b0), a0, b0));
     EXPECT_EQ(make_angular_row(axis, fixed, fixed).mass, 0);
+    // The reversed row is the row made about -axis, mass included.
+    auto reversed = -make_angular_row(axis, a0, b0);
+    auto made = make_angular_row(-axis, a0, b0);
+    EXPECT_EQ(reversed.mass, made.mass);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(reversed.axis[i], made.axis[i]);
 }
 
 TEST(constraint_row, spring_softness_matches_implicit_euler) {
