@@ -1,0 +1,114 @@
+#include <edyn/edyn.hpp>
+#include <edyn/shapes/shape_bounding_radius.hpp>
+#include <gtest/gtest.h>
+#include <random>
+#include <variant>
+
+// The step's narrowphase rules a pair without points out by its bounding spheres and its AABBs
+// before it calls collide(). Pairs of spheres, boxes, capsules and cylinders, turned at random
+// and placed about where they begin to touch along a random line: a pair must get points in the
+// step exactly when collide() finds one within the contact threshold.
+
+namespace edyn {
+namespace {
+
+using test_shape = std::variant<sphere_shape, box_shape, capsule_shape, cylinder_shape>;
+
+quaternion random_orientation(std::mt19937 &rng) {
+    std::normal_distribution<scalar> normal;
+    return normalize(quaternion{normal(rng), normal(rng), normal(rng), normal(rng)});
+}
+
+vector3 random_direction(std::mt19937 &rng) {
+    std::normal_distribution<scalar> normal;
+    return normalize(vector3{normal(rng), normal(rng), normal(rng)});
+}
+
+// How far a shape turned by `orn` reaches from its origin along the unit direction `dir`: its
+// AABB's face on x once the direction is turned onto x.
+template<typename Shape>
+scalar reach_along(const Shape &shape, const quaternion &orn, const vector3 &dir) {
+    auto axis = cross(dir, vector3_x);
+    auto sin_angle = length(axis);
+    auto turn = sin_angle > scalar(1e-6)
+                    ? quaternion_axis_angle(axis / sin_angle, std::atan2(sin_angle, dot(dir, vector3_x)))
+                    : (dot(dir, vector3_x) > 0 ? quaternion_identity : quaternion_axis_angle(vector3_y, pi));
+    return shape_aabb(shape, vector3_zero, normalize(turn * orn)).max.x;
+}
+
+struct trial_counts {
+    int touching{0};      // collide() found a point within the threshold
+    int apart{0};         // it found none
+    int beyond_bounds{0}; // apart, though the spheres and the AABBs overlap: collide() decided
+};
+
+void run_trial(const test_shape &shape_a, const test_shape &shape_b, std::mt19937 &rng,
+               trial_counts &counts) {
+    auto orn_a = random_orientation(rng), orn_b = random_orientation(rng);
+    auto dir = random_direction(rng);
+    // Where the shapes' reaches along `dir` meet: they touch there or nearer.
+    auto meet = std::visit([&](auto &s) { return reach_along(s, orn_a, dir); }, shape_a) +
+                std::visit([&](auto &s) { return reach_along(s, orn_b, -dir); }, shape_b);
+    auto offset = std::uniform_real_distribution<scalar>(scalar(-0.25), scalar(0.06))(rng);
+    auto pos_a = vector3{scalar(0.3), 2, scalar(-0.1)};
+    auto pos_b = pos_a + dir * (meet + offset);
+
+    auto result = collision_result{};
+    auto ctx = collision_context{pos_a, orn_a, pos_b, orn_b, contact_breaking_threshold};
+    std::visit([&](auto &a, auto &b) { collide(a, b, ctx, result); }, shape_a, shape_b);
+    auto touching = false;
+    for (std::size_t i = 0; i < result.num_points; ++i)
+        touching |= result.point[i].distance <= contact_breaking_threshold;
+
+    registry reg;
+    attach(reg, init_config{execution_mode::sequential});
+    set_gravity(reg, vector3_zero);
+    auto make = [&](const test_shape &shape, const vector3 &pos, const quaternion &orn) {
+        auto def = rigidbody_def{};
+        std::visit([&](auto &s) { def.shape = s; }, shape);
+        def.position = pos;
+        def.orientation = orn;
+        return make_rigidbody(reg, def);
+    };
+    auto a = make(shape_a, pos_a, orn_a);
+    auto b = make(shape_b, pos_b, orn_b);
+    step_simulation(reg);
+    auto points = std::size_t{0};
+    for (auto [e, manifold] : reg.view<contact_manifold>().each())
+        points += manifold.num_points;
+    EXPECT_EQ(points > 0, touching) << "offset " << offset << " from where the extents meet";
+
+    if (touching) {
+        ++counts.touching;
+        return;
+    }
+    ++counts.apart;
+    auto radius_a = std::visit([](auto &s) { return shape_bounding_radius(s); }, shape_a);
+    auto radius_b = std::visit([](auto &s) { return shape_bounding_radius(s); }, shape_b);
+    auto spheres_overlap = length(pos_b - pos_a) <= radius_a + radius_b + contact_breaking_threshold;
+    auto aabbs_overlap =
+        intersect(inset(reg.get<AABB>(a), vector3_one * contact_breaking_threshold), reg.get<AABB>(b));
+    counts.beyond_bounds += spheres_overlap && aabbs_overlap;
+}
+
+TEST(narrowphase, rules_out_only_pairs_that_collide_would_give_no_point) {
+    auto shapes = std::vector<test_shape>{
+        sphere_shape{scalar(0.4)},
+        box_shape{vector3{scalar(0.5), scalar(0.3), scalar(0.2)}},
+        capsule_shape{scalar(0.2), scalar(0.5), coordinate_axis::y},
+        cylinder_shape{scalar(0.35), scalar(0.45), coordinate_axis::x},
+    };
+    std::mt19937 rng(3);
+    auto counts = trial_counts{};
+    for (auto &a : shapes)
+        for (auto &b : shapes)
+            for (int trial = 0; trial < 40; ++trial)
+                run_trial(a, b, rng, counts);
+    // Both outcomes come up often, and so do pairs that only collide() tells apart.
+    EXPECT_GT(counts.touching, 100);
+    EXPECT_GT(counts.apart, 100);
+    EXPECT_GT(counts.beyond_bounds, 50);
+}
+
+} // namespace
+} // namespace edyn
