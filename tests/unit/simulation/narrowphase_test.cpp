@@ -76,7 +76,7 @@ void run_trial(const test_shape &shape_a, const test_shape &shape_b, std::mt1993
     auto points = std::size_t{0};
     for (auto [e, manifold] : reg.view<contact_manifold>().each())
         points += manifold.num_points;
-    EXPECT_EQ(points > 0, touching) << "offset " << offset << " from where the extents meet";
+    EXPECT_EQ(points > 0, touching) << "offset " << offset << " from where the reaches meet";
 
     if (touching) {
         ++counts.touching;
