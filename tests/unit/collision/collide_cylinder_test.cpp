@@ -4,6 +4,7 @@
 #include "edyn/math/geom.hpp"
 #include "edyn/math/math.hpp"
 #include "edyn/math/transform.hpp"
+#include "unit/shapes/shape_test_util.hpp"
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -22,6 +23,8 @@ using namespace edyn;
 using collide_test::expect_feature;
 using collide_test::expect_vec_near;
 using collide_test::min_distance;
+using edyn::test::random_direction;
+using edyn::test::random_orientation;
 
 constexpr coordinate_axis all_axes[] = {coordinate_axis::x, coordinate_axis::y, coordinate_axis::z};
 // Geometry of one collide() call is exact to float rounding on shapes of about a metre.
@@ -349,11 +352,6 @@ scalar searched_distance(const support_set &a, const support_set &b) {
     return best;
 }
 
-quaternion random_orientation(std::mt19937 &rng) {
-    std::normal_distribution<scalar> g(0, 1);
-    return normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
-}
-
 // Half the time a multiple of quarter turns about the axes, a third of those tilted by 1e-3 rad:
 // the parallel and face-to-face configurations where degenerate cases live.
 quaternion aligned_or_random_orientation(std::mt19937 &rng) {
@@ -366,11 +364,6 @@ quaternion aligned_or_random_orientation(std::mt19937 &rng) {
     }
     if (kind == 5) q = quaternion_axis_angle(normalize(vector3{1, 2, 3}), scalar(1e-3)) * q;
     return q;
-}
-
-vector3 random_direction(std::mt19937 &rng) {
-    std::normal_distribution<scalar> g(0, 1);
-    return normalize(vector3{g(rng), g(rng), g(rng)});
 }
 
 // Random placements of A around B, from deep overlap to apart: the reported distance must match

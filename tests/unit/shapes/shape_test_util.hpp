@@ -60,6 +60,13 @@ inline quaternion random_orientation(std::mt19937 &rng) {
     return normalize(q);
 }
 
+// A unit vector, uniform over the sphere.
+inline vector3 random_direction(std::mt19937 &rng) {
+    std::normal_distribution<scalar> n(0, 1);
+    vector3 v{n(rng), n(rng), n(rng)};
+    return normalize(v);
+}
+
 inline vector3 random_vector(std::mt19937 &rng, scalar lo, scalar hi) {
     std::uniform_real_distribution<scalar> u(lo, hi);
     return {u(rng), u(rng), u(rng)};

@@ -1,3 +1,4 @@
+#include "unit/shapes/shape_test_util.hpp"
 #include <edyn/edyn.hpp>
 #include <edyn/shapes/shape_bounding_radius.hpp>
 #include <gtest/gtest.h>
@@ -14,26 +15,11 @@ namespace {
 
 using test_shape = std::variant<sphere_shape, box_shape, capsule_shape, cylinder_shape>;
 
-quaternion random_orientation(std::mt19937 &rng) {
-    std::normal_distribution<scalar> normal;
-    return normalize(quaternion{normal(rng), normal(rng), normal(rng), normal(rng)});
-}
-
-vector3 random_direction(std::mt19937 &rng) {
-    std::normal_distribution<scalar> normal;
-    return normalize(vector3{normal(rng), normal(rng), normal(rng)});
-}
-
 // How far a shape turned by `orn` reaches from its origin along the unit direction `dir`: its
 // AABB's face on x once the direction is turned onto x.
 template<typename Shape>
 scalar reach_along(const Shape &shape, const quaternion &orn, const vector3 &dir) {
-    auto axis = cross(dir, vector3_x);
-    auto sin_angle = length(axis);
-    auto turn = sin_angle > scalar(1e-6)
-                    ? quaternion_axis_angle(axis / sin_angle, std::atan2(sin_angle, dot(dir, vector3_x)))
-                    : (dot(dir, vector3_x) > 0 ? quaternion_identity : quaternion_axis_angle(vector3_y, pi));
-    return shape_aabb(shape, vector3_zero, normalize(turn * orn)).max.x;
+    return shape_aabb(shape, vector3_zero, normalize(shortest_arc(dir, vector3_x) * orn)).max.x;
 }
 
 struct trial_counts {
@@ -44,8 +30,8 @@ struct trial_counts {
 
 void run_trial(const test_shape &shape_a, const test_shape &shape_b, std::mt19937 &rng,
                trial_counts &counts) {
-    auto orn_a = random_orientation(rng), orn_b = random_orientation(rng);
-    auto dir = random_direction(rng);
+    auto orn_a = test::random_orientation(rng), orn_b = test::random_orientation(rng);
+    auto dir = test::random_direction(rng);
     // Where the shapes' reaches along `dir` meet: they touch there or nearer.
     auto meet = std::visit([&](auto &s) { return reach_along(s, orn_a, dir); }, shape_a) +
                 std::visit([&](auto &s) { return reach_along(s, orn_b, -dir); }, shape_b);
