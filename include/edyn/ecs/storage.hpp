@@ -188,12 +188,15 @@ private:
 
     Type *slot(size_type pos) const noexcept { return pages[pos / page_capacity] + pos % page_capacity; }
 
+    // A pool that outgrows its pages takes a sixteenth more than it needs (one page at least),
+    // so that a count wavering about its highest (the contact manifolds of a settled heap, as
+    // neighbours part and meet) does not allocate at every new high.
     void assure_payload_page(size_type page) {
-        if (page >= pages.size()) {
-            pages.reserve(page + 1);
-            while (pages.size() <= page) {
-                pages.push_back(std::allocator<Type>{}.allocate(page_capacity));
-            }
+        if (page < pages.size()) return;
+        auto wanted = page + 2 + (page + 1) / 16;
+        pages.reserve(wanted);
+        while (pages.size() < wanted) {
+            pages.push_back(std::allocator<Type>{}.allocate(page_capacity));
         }
     }
 
