@@ -218,7 +218,7 @@ void gather_contacts(registry &registry, world_state &world) {
     wake_bodies_on_moving_kinematics(registry, world);
     auto *scheduler = world.scheduler.get();
 
-    // The manifolds are solved island by island, in the order of each island's edges. What each
+    // The manifolds are taken island by island, in the order of each island's edges. What each
     // edge needs from the registry is looked up at once on the scheduler's threads, a manifold
     // asked for a few edges ahead...
     world.island_edges.clear();
@@ -238,14 +238,22 @@ void gather_contacts(registry &registry, world_state &world) {
         world.edge_contacts[i] = contact_of_edge(registry, world, world.island_edges[i]);
     });
 
-    // ...then each contact is given its colour in that order, on this thread: the colour after
-    // those of the earlier contacts it shares a moving body with.
-    world.contact_colours.clear();
-    world.contact_places.clear();
-    world.colouring.reset(world.bodies);
+    // ...then the contacts to solve are put in the order they are solved in, outward from the
+    // bodies that do not move (contact_order.hpp), and each is given its colour in that order, on
+    // this thread: the colour after those of the earlier contacts it shares a moving body with.
+    world.solved_edges.clear();
+    world.ordering.reset(world.bodies);
     for (std::uint32_t i = 0; i < num_edges; ++i) {
         auto &edge = world.edge_contacts[i];
         if (edge.num_points == 0) continue;
+        world.solved_edges.push_back(i);
+        world.ordering.add(edge.body[0], edge.body[1]);
+    }
+    world.contact_colours.clear();
+    world.contact_places.clear();
+    world.colouring.reset(world.bodies);
+    for (auto k : world.ordering.sorted()) {
+        auto &edge = world.edge_contacts[world.solved_edges[k]];
         world.contact_colours.push_back(world.colouring.assign(edge.body[0], edge.body[1], edge.num_points));
         world.contact_places.push_back({0, 0, edge.num_points, edge.slot});
     }

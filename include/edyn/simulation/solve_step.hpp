@@ -18,7 +18,8 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
 
 /// Builds the contact constraints of every awake manifold in contact between bodies that both
 /// respond to collisions (sensors do not), with mixed materials and last step's impulses.
-/// Manifolds are taken island by island and given colours for parallel solving. Bodies resting
+/// Manifolds are taken island by island, put in solving order outward from the bodies that do
+/// not move (contact_order.hpp) and given colours for parallel solving. Bodies resting
 /// on a moving kinematic body are woken first. Call after gather_bodies.
 /// @param registry An attached registry.
 /// @param world The registry's world_state, whose contact arrays are refilled.

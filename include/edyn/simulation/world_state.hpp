@@ -6,6 +6,7 @@
 #include "edyn/collision/manifold_update.hpp"
 #include "edyn/constraints/constraint_colouring.hpp"
 #include "edyn/constraints/constraint_solver.hpp"
+#include "edyn/constraints/contact_order.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/parallel/background_tasks.hpp"
@@ -60,7 +61,11 @@ struct world_state {
     std::vector<entity> island_edges;
     /// The contact of each of island_edges.
     std::vector<edge_contact> edge_contacts;
-    /// The colour each contact solved this step was given, in the order found.
+    /// The index in edge_contacts of each contact solved this step, in island order.
+    std::vector<std::uint32_t> solved_edges;
+    /// Puts the contacts solved this step in the order they are solved in.
+    contact_order ordering;
+    /// The colour each contact solved this step was given, in solving order.
     std::vector<std::uint32_t> contact_colours;
     /// Where a contact's constraint and points go in `contacts`.
     struct contact_place {
@@ -69,7 +74,7 @@ struct world_state {
         std::uint32_t num_points{0};  ///< Its number of points.
         std::uint32_t slot{0};        ///< Where the manifold lies in its pool (`storage::value_at`).
     };
-    /// The place of each contact solved this step, in the order found (a constraint's `source`
+    /// The place of each contact solved this step, in solving order (a constraint's `source`
     /// indexes this), with its manifold's place in the pool.
     std::vector<contact_place> contact_places;
     /// Assigns colours to contacts, so that those of one colour share no moving body.
