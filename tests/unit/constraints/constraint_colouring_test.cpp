@@ -1,4 +1,5 @@
 #include "support/one_range_at_a_time.hpp"
+#include "support/solver_bodies.hpp"
 #include <algorithm>
 #include <cstring>
 #include <edyn/constraints/constraint_colouring.hpp>
@@ -18,16 +19,6 @@ struct pair {
     solver_body_index a, b;
 };
 
-// Bodies 1 to n move; body 0 (static) and the last two (kinematic) do not.
-std::vector<solver_body> make_bodies(std::size_t moving) {
-    std::vector<solver_body> bodies(moving + 3);
-    for (std::size_t i = 1; i <= moving; ++i) {
-        bodies[i].inv_mass = 1;
-        bodies[i].inv_inertia = matrix3x3_rows({6, 0, 0}, {0, 6, 0}, {0, 0, 6});
-    }
-    return bodies;
-}
-
 std::vector<pair> random_pairs(std::size_t count, std::size_t num_bodies, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_int_distribution<solver_body_index> body(0, solver_body_index(num_bodies - 1));
@@ -39,13 +30,11 @@ std::vector<pair> random_pairs(std::size_t count, std::size_t num_bodies, unsign
     return pairs;
 }
 
-bool moves(const std::vector<solver_body> &bodies, solver_body_index i) { return bodies[i].inv_mass > 0; }
-
 } // namespace
 
 TEST(constraint_colouring,
      no_two_constraints_of_a_colour_share_a_moving_body_and_shared_ones_keep_their_order) {
-    auto bodies = make_bodies(200);
+    auto bodies = test::make_solver_bodies(200, 2);
     auto pairs = random_pairs(2000, bodies.size(), 3);
     constraint_colouring colouring;
     colouring.reset(bodies);
@@ -56,7 +45,7 @@ TEST(constraint_colouring,
     for (std::size_t i = 0; i < pairs.size(); ++i) {
         for (std::size_t j = i + 1; j < pairs.size(); ++j) {
             auto shares = [&](solver_body_index x) {
-                return moves(bodies, x) && (x == pairs[j].a || x == pairs[j].b);
+                return moves(bodies[x]) && (x == pairs[j].a || x == pairs[j].b);
             };
             if (shares(pairs[i].a) || shares(pairs[i].b)) {
                 // Sharing a moving body: a later colour, so the earlier one is solved first.
@@ -68,7 +57,7 @@ TEST(constraint_colouring,
 }
 
 TEST(constraint_colouring, bodies_that_do_not_move_order_nothing) {
-    auto bodies = make_bodies(3);
+    auto bodies = test::make_solver_bodies(3, 2);
     solver_body_index kinematic = 4;
     constraint_colouring colouring;
     colouring.reset(bodies);
@@ -86,7 +75,7 @@ TEST(constraint_colouring, bodies_that_do_not_move_order_nothing) {
 }
 
 TEST(constraint_colouring, places_each_colour_together_in_the_order_asked) {
-    auto bodies = make_bodies(5);
+    auto bodies = test::make_solver_bodies(5, 2);
     constraint_colouring colouring;
     colouring.reset(bodies);
     std::uint32_t points[] = {4, 2, 3, 1, 4};
@@ -121,7 +110,7 @@ struct random_contacts {
 
 random_contacts make_contacts(std::size_t num_contacts, unsigned seed, bool coloured) {
     random_contacts set;
-    set.bodies = make_bodies(num_contacts / 3);
+    set.bodies = test::make_solver_bodies(num_contacts / 3, 2);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<scalar> unit(-1, 1);
     for (std::size_t i = 1; i < set.bodies.size(); ++i) {

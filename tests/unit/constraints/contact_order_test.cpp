@@ -1,3 +1,4 @@
+#include "support/solver_bodies.hpp"
 #include <algorithm>
 #include <cstdlib>
 #include <edyn/constraints/contact_order.hpp>
@@ -12,16 +13,6 @@ using namespace edyn;
 namespace {
 
 using contact = std::pair<solver_body_index, solver_body_index>;
-
-// Body 0 is the static body; bodies 1 to `moving` move; `kinematic` more after them do not.
-std::vector<solver_body> make_bodies(std::size_t moving, std::size_t kinematic = 0) {
-    std::vector<solver_body> bodies(1 + moving + kinematic);
-    for (std::size_t i = 1; i <= moving; ++i) {
-        bodies[i].inv_mass = 1;
-        bodies[i].inv_inertia = matrix3x3_rows({6, 0, 0}, {0, 6, 0}, {0, 0, 6});
-    }
-    return bodies;
-}
 
 std::vector<std::uint32_t> order_of(contact_order &ordering, const std::vector<solver_body> &bodies,
                                     const std::vector<contact> &contacts) {
@@ -58,7 +49,7 @@ std::vector<int> depths_by_relaxation(const std::vector<solver_body> &bodies,
 
 TEST(contact_order, a_stack_is_solved_from_the_ground_up_whatever_the_order_added) {
     // Bodies 1 to 5 stacked on the ground (body 0), added top first.
-    auto bodies = make_bodies(5);
+    auto bodies = test::make_solver_bodies(5);
     std::vector<contact> contacts{{5, 4}, {4, 3}, {3, 2}, {2, 1}, {1, 0}};
     contact_order ordering;
     EXPECT_EQ(order_of(ordering, bodies, contacts), (std::vector<std::uint32_t>{4, 3, 2, 1, 0}));
@@ -67,7 +58,7 @@ TEST(contact_order, a_stack_is_solved_from_the_ground_up_whatever_the_order_adde
 TEST(contact_order, a_layer_rests_before_its_neighbours_push_on_each_other) {
     // Bodies 1, 2 and 3 side by side on the ground, touching each other; body 4 on 1 and 2;
     // body 5 beside 4 on 3.
-    auto bodies = make_bodies(5);
+    auto bodies = test::make_solver_bodies(5);
     std::vector<contact> contacts{
         {1, 2}, // 0: side, depth 1
         {4, 1}, // 1: depth 1 to 2
@@ -87,7 +78,7 @@ TEST(contact_order, a_layer_rests_before_its_neighbours_push_on_each_other) {
 
 TEST(contact_order, kinematic_bodies_carry_like_the_ground_and_a_clump_in_mid_air_comes_last) {
     // Body 4 is kinematic. Bodies 1 and 2 touch each other in mid-air; body 3 rests on body 4.
-    auto bodies = make_bodies(3, 1);
+    auto bodies = test::make_solver_bodies(3, 1);
     std::vector<contact> contacts{{1, 2}, {3, 4}, {2, 1}};
     contact_order ordering;
     EXPECT_EQ(order_of(ordering, bodies, contacts), (std::vector<std::uint32_t>{1, 0, 2}));
@@ -98,7 +89,7 @@ TEST(contact_order, random_heaps_are_ordered_by_depth_groups_and_keep_the_order_
     for (unsigned seed = 1; seed <= 20; ++seed) {
         std::mt19937 rng(seed);
         auto num_moving = std::uniform_int_distribution<std::size_t>(1, 120)(rng);
-        auto bodies = make_bodies(num_moving, seed % 3);
+        auto bodies = test::make_solver_bodies(num_moving, seed % 3);
         std::uniform_int_distribution<solver_body_index> body(0, solver_body_index(bodies.size() - 1));
         std::vector<contact> contacts;
         auto num_contacts = std::uniform_int_distribution<std::size_t>(0, 3 * num_moving)(rng);
@@ -125,7 +116,7 @@ TEST(contact_order, random_heaps_are_ordered_by_depth_groups_and_keep_the_order_
 }
 
 TEST(contact_order, no_contacts_give_an_empty_order) {
-    auto bodies = make_bodies(3);
+    auto bodies = test::make_solver_bodies(3);
     contact_order ordering;
     EXPECT_TRUE(order_of(ordering, bodies, {}).empty());
 }
