@@ -58,20 +58,20 @@ std::span<const std::uint32_t> contact_order::sorted() {
     // (so that those come after the contacts up to the next depth), and the last group the
     // contacts that reach no resting body. Neighbours' depths differ by one at most.
     auto num_groups = std::size_t(2) * max_depth + 3;
-    auto group_of = [&](std::uint32_t k) {
-        auto da = depth[pairs[2 * k]], db = depth[pairs[2 * k + 1]];
-        if (da == unreached || db == unreached) return num_groups - 1;
-        auto low = std::min(da, db);
-        return std::size_t(2) * low + (da == db ? 1 : 0);
-    };
     group_begin.assign(num_groups + 1, 0);
-    for (std::uint32_t k = 0; k < num_contacts; ++k)
-        ++group_begin[group_of(k) + 1];
+    group.resize(num_contacts);
+    for (std::uint32_t k = 0; k < num_contacts; ++k) {
+        auto da = depth[pairs[2 * k]], db = depth[pairs[2 * k + 1]];
+        auto g = da == unreached || db == unreached ? num_groups - 1
+                                                    : std::size_t(2) * std::min(da, db) + (da == db ? 1 : 0);
+        group[k] = static_cast<std::uint32_t>(g);
+        ++group_begin[g + 1];
+    }
     for (std::size_t g = 0; g < num_groups; ++g)
         group_begin[g + 1] += group_begin[g];
     order.resize(num_contacts);
     for (std::uint32_t k = 0; k < num_contacts; ++k)
-        order[group_begin[group_of(k)]++] = k;
+        order[group_begin[group[k]]++] = k;
     return order;
 }
 

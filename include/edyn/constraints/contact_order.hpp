@@ -52,6 +52,7 @@ private:
     std::vector<solver_body_index> links;   ///< Per body, the other body of each of its contacts.
     std::vector<std::uint32_t> depth;       ///< Per body (unreached until found).
     std::vector<solver_body_index> queue;   ///< The breadth-first search's bodies, in order found.
+    std::vector<std::uint32_t> group;       ///< Per contact: its group.
     std::vector<std::uint32_t> group_begin; ///< Per group: where its contacts begin in `order`.
     std::vector<std::uint32_t> order;       ///< The contacts in solving order.
 };
