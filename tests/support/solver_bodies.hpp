@@ -8,8 +8,9 @@
 
 namespace edyn::test {
 
-/// Body 0 is the static body; bodies 1 to `moving` move (unit mass, the inertia of a unit
-/// cube's inverse); the `resting` bodies after them do not move, as kinematic bodies.
+/// Body 0 is the static body; bodies 1 to `moving` move (a unit cube of 1 kg: inverse mass 1,
+/// inverse inertia 6 about each axis); the `resting` bodies after them do not move, as kinematic
+/// bodies.
 inline std::vector<solver_body> make_solver_bodies(std::size_t moving, std::size_t resting = 0) {
     std::vector<solver_body> bodies(1 + moving + resting);
     for (std::size_t i = 1; i <= moving; ++i) {
