@@ -62,8 +62,10 @@ void solver_iteration(benchmark::State &state) {
     contact_set set(static_cast<std::size_t>(state.range(0)), 5);
     edyn::contact_solver_settings settings;
     auto h = scalar(1) / scalar(60 * 4);
+    edyn::stage_queue queue;
     for (auto _ : state) {
-        edyn::solve_contacts(set.contacts, set.bodies, h, settings, true);
+        edyn::solve_contacts(set.contacts, set.bodies, h, settings, true, queue);
+        queue.run(nullptr);
         benchmark::DoNotOptimize(set.bodies.data());
         benchmark::ClobberMemory();
     }
@@ -79,8 +81,10 @@ void solver_relax_iteration(benchmark::State &state) {
     contact_set set(static_cast<std::size_t>(state.range(0)), 5);
     edyn::contact_solver_settings settings;
     auto h = scalar(1) / scalar(60 * 4);
+    edyn::stage_queue queue;
     for (auto _ : state) {
-        edyn::solve_contacts(set.contacts, set.bodies, h, settings, false);
+        edyn::solve_contacts(set.contacts, set.bodies, h, settings, false, queue);
+        queue.run(nullptr);
         benchmark::DoNotOptimize(set.bodies.data());
         benchmark::ClobberMemory();
     }
@@ -94,8 +98,10 @@ void solver_warm_start(benchmark::State &state) {
     contact_set set(static_cast<std::size_t>(state.range(0)), 5);
     for (auto &p : set.contacts.points)
         p.normal_impulse = scalar(0.01);
+    edyn::stage_queue queue;
     for (auto _ : state) {
-        edyn::warm_start_contacts(set.contacts, set.bodies);
+        edyn::warm_start_contacts(set.contacts, set.bodies, queue);
+        queue.run(nullptr);
         benchmark::DoNotOptimize(set.bodies.data());
         benchmark::ClobberMemory();
     }

@@ -2,7 +2,7 @@
 #include "contact_bundle_solver.hpp"
 #include "edyn/constraints/constraint_row.hpp"
 #include "edyn/parallel/parallel_for.hpp"
-#include "edyn/parallel/parallel_for_stages.hpp"
+#include "edyn/parallel/stage_queue.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -74,7 +74,7 @@ decltype(auto) with_fixed_side(const contact_solver_constraint &c, Fn &&fn) {
 }
 
 // Constraints per parallel range: enough work to outweigh handing a range to a thread.
-constexpr std::size_t contacts_per_task = 64;
+constexpr std::uint32_t contacts_per_task = 64;
 // Bundles or single constraints per block of a colour: about this many blocks per thread, so
 // that the threads finish a colour close together, but blocks no smaller than this, so that
 // taking one costs little beside its work, nor larger.
@@ -106,29 +106,34 @@ void number_colour_blocks(contact_solver_set &contacts, std::uint32_t threads) {
     contacts.block_begin.push_back(blocks);
 }
 
-// Calls bundle(i) for every bundle i and single(k) for every constraint k solved on its own,
-// colour after colour, each colour's at once on the scheduler's threads (all colours in one task,
-// see parallel_for_stages); then the overflow, in order on the calling thread.
+// Queues bundle(i) for every bundle i and single(k) for every constraint k solved on its own,
+// colour after colour, each colour a stage whose blocks may run at once on different threads;
+// then the overflow, in order, as a stage of one block. Both functions are copied into the queue.
 template<typename Bundle, typename Single>
-void for_each_in_colour_order(const contact_solver_set &contacts, task_scheduler *scheduler, Bundle &&bundle,
-                              Single &&single) {
-    auto &blocks = contacts.block_begin;
-    parallel_for_stages(scheduler, contacts.block_sync, blocks, [&](std::size_t k, std::uint32_t b) {
-        auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
-        auto first = (b - blocks[k]) * contacts.block_items[k];
-        auto last = std::min(first + contacts.block_items[k], colour_items(contacts, k));
-        for (auto i = first; i < last; ++i) {
-            if (i < num_bundles) {
-                bundle(contacts.bundle_begin[k] + i);
-            } else {
-                single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
-            }
-        }
-    });
-    auto size = static_cast<std::uint32_t>(contacts.constraints.size());
+void queue_in_colour_order(const contact_solver_set &contacts, stage_queue &queue, Bundle bundle,
+                           Single single) {
+    for (std::uint32_t k = 0; k + 1 < contacts.block_begin.size(); ++k) {
+        queue.add(contacts.block_begin[k + 1] - contacts.block_begin[k],
+                  [&contacts, k, bundle, single](std::uint32_t b) {
+                      auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
+                      auto first = b * contacts.block_items[k];
+                      auto last = std::min(first + contacts.block_items[k], colour_items(contacts, k));
+                      for (auto i = first; i < last; ++i) {
+                          if (i < num_bundles) {
+                              bundle(contacts.bundle_begin[k] + i);
+                          } else {
+                              single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
+                          }
+                      }
+                  });
+    }
     auto &begin = contacts.colour_begin;
-    for (auto k = begin.empty() ? 0u : begin.back(); k < size; ++k) {
-        single(k);
+    auto overflow = begin.empty() ? 0u : begin.back();
+    if (overflow < contacts.constraints.size()) {
+        queue.add(1, [&contacts, overflow, single](std::uint32_t) {
+            for (auto k = overflow; k < contacts.constraints.size(); ++k)
+                single(k);
+        });
     }
 }
 
@@ -193,10 +198,9 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
     }
 }
 
-void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
-                         task_scheduler *scheduler) {
-    auto bundle = [&](std::uint32_t i) { detail::warm_start_bundle(contacts, i, bodies); };
-    auto single = [&](std::uint32_t k) {
+void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, stage_queue &queue) {
+    auto bundle = [&contacts, bodies](std::uint32_t i) { detail::warm_start_bundle(contacts, i, bodies); };
+    auto single = [&contacts, bodies](std::uint32_t k) {
         auto &c = contacts.constraints[k];
         solver_body copies[2];
         auto &a = solved(bodies[c.body[0]], copies[0]);
@@ -219,7 +223,7 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
         }
         apply_angular_impulse(a, b, angular);
     };
-    for_each_in_colour_order(contacts, scheduler, bundle, single);
+    queue_in_colour_order(contacts, queue, bundle, single);
 }
 
 namespace {
@@ -364,7 +368,7 @@ void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> 
 } // namespace
 
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
-                    const contact_solver_settings &settings, bool use_bias, task_scheduler *scheduler) {
+                    const contact_solver_settings &settings, bool use_bias, stage_queue &queue) {
     // A spring stiffer than a quarter of the sub-step rate cannot be integrated stably.
     auto hertz = std::min(settings.contact_hertz, settings.max_hertz_ratio / h);
     auto rigid = make_softness(hertz, settings.contact_damping_ratio, h);
@@ -373,8 +377,10 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
     auto anchor = make_softness(std::min(settings.friction_anchor_hertz, settings.max_hertz_ratio / h),
                                 settings.contact_damping_ratio, h);
     detail::bundle_pass pass{inv_h, rigid, anchor, settings.max_push_out_velocity, use_bias};
-    auto bundle = [&](std::uint32_t i) { detail::solve_bundle(contacts, i, bodies, pass); };
-    auto single = [&](std::uint32_t k) {
+    auto bundle = [&contacts, bodies, pass](std::uint32_t i) {
+        detail::solve_bundle(contacts, i, bodies, pass);
+    };
+    auto single = [&contacts, bodies, pass, &settings, h](std::uint32_t k) {
         auto &c = contacts.constraints[k];
         solver_body copies[2];
         auto &a = solved(bodies[c.body[0]], copies[0]);
@@ -382,12 +388,13 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
         with_fixed_side(
             c, [&](auto side) { solve_single<side()>(c, points_of(contacts, c), a, b, pass, settings, h); });
     };
-    for_each_in_colour_order(contacts, scheduler, bundle, single);
+    queue_in_colour_order(contacts, queue, bundle, single);
 }
 
-void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler) {
+void accumulate_contact_impulses(contact_solver_set &contacts, stage_queue &queue) {
     // Each constraint writes only its own totals: any order will do.
-    auto add = [&](contact_solver_constraint &c) {
+    auto add = [&contacts](std::uint32_t k) {
+        auto &c = contacts.constraints[k];
         for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
             auto &p = contacts.points[i];
             auto &t = contacts.totals[i];
@@ -400,13 +407,13 @@ void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *s
         c.total_roll_impulse[1] += c.roll_impulse[1];
     };
     // The bundled constraints' totals are kept in their bundles, side by side.
-    parallel_for(scheduler, 0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
-                 [&](std::uint32_t i) { detail::accumulate_bundle_impulses(contacts, i); });
-    parallel_for(scheduler, std::size_t(0), contacts.singles.size(), contacts_per_task,
-                 [&](std::size_t j) { add(contacts.constraints[contacts.singles[j]]); });
+    queue.add_for(0u, std::uint32_t(contacts.bundles.size()), contacts_per_task / 4,
+                  [&contacts](std::uint32_t i) { detail::accumulate_bundle_impulses(contacts, i); });
+    queue.add_for(0u, std::uint32_t(contacts.singles.size()), contacts_per_task,
+                  [&contacts, add](std::uint32_t j) { add(contacts.singles[j]); });
     auto &begin = contacts.colour_begin;
-    parallel_for(scheduler, begin.empty() ? 0u : begin.back(), std::uint32_t(contacts.constraints.size()),
-                 contacts_per_task, [&](std::uint32_t k) { add(contacts.constraints[k]); });
+    queue.add_for(begin.empty() ? 0u : begin.back(), std::uint32_t(contacts.constraints.size()),
+                  contacts_per_task, add);
 }
 
 void unpack_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler) {

@@ -108,6 +108,11 @@ struct constraint_solver_state {
     task_scheduler *scheduler{nullptr};
 };
 
+/// Whether the state holds any joint to solve.
+/// @param state The joints' state, as gathered.
+/// @return False when every joint pass would do nothing.
+inline bool has_joints(const constraint_solver_state &state) noexcept { return !state.blocks.empty(); }
+
 /// Maps an entity's index to its solver body (0, the static body, when it has none).
 using body_index_map = std::span<const std::uint32_t>;
 

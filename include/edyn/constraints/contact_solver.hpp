@@ -3,7 +3,7 @@
 
 #include "edyn/constraints/contact_bundle.hpp"
 #include "edyn/dynamics/solver_body.hpp"
-#include "edyn/parallel/parallel_for_stages.hpp"
+#include "edyn/parallel/stage_queue.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include <array>
 #include <cstdint>
@@ -157,8 +157,6 @@ struct contact_solver_set {
     /// Bundles and single constraints per block of each colour (a colour's last block may have
     /// fewer): colours are cut to keep every thread busy, whatever their size.
     std::vector<std::uint32_t> block_items;
-    /// What the threads of a pass over those blocks share (see parallel_for_stages).
-    mutable stage_sync block_sync;
     /// The constraints with restitution, in order: those solve_restitution() looks at. Listed
     /// by prepare_contacts().
     std::vector<std::uint32_t> bouncy;
@@ -241,8 +239,8 @@ struct contact_solver_settings {
 
 /// Computes tangent frames, effective masses and starting normal velocities; call after the
 /// points' rA, rB, normal and adjusted separation are set, and before any solve.
-/// The passes below spread their work over the scheduler's threads when one is given, colour by
-/// colour; the results do not depend on it, nor on its number of threads.
+/// The work of this and the passes below is spread over the scheduler's threads when there is
+/// one, colour by colour; the results do not depend on it, nor on its number of threads.
 /// Also resets each point's totals (keeping the carried approach) and each constraint's
 /// spinning and rolling totals, and packs each colour's plain constraints contact_bundle_lanes
 /// to a bundle (contact_bundle), which the passes below solve that many at a time with vector
@@ -255,16 +253,20 @@ struct contact_solver_settings {
 void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies,
                       task_scheduler *scheduler = nullptr);
 
-/// Re-applies the accumulated impulses as the initial guess: last step's at the first sub-step,
-/// then those of the sub-step before (they are applied as they are, not scaled).
-/// Called at the start of each sub-step, after the restitution solve.
+/// The passes below queue their work instead of running it (see stage_queue), a stage per
+/// colour, so that a sub-step's passes are handed to the scheduler together: they run, in the
+/// order they were queued, when the queue is run. `contacts`, the storage behind `bodies` and
+/// `settings` must outlive that run, and must not change before it.
+
+/// Queues re-applying the accumulated impulses as the initial guess: last step's at the first
+/// sub-step, then those of the sub-step before (they are applied as they are, not scaled).
+/// Queued at the start of each sub-step, after the restitution solve.
 /// @param contacts The step's contacts.
 /// @param bodies The step's solver bodies.
-/// @param scheduler Threads each colour is spread over; null runs it on the calling thread.
-void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
-                         task_scheduler *scheduler = nullptr);
+/// @param queue Where the pass is queued.
+void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, stage_queue &queue);
 
-/// One Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
+/// Queues one Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
 /// without it (relax pass) only the velocity constraints are enforced, removing the push-out
 /// velocity so that it does not turn into bounce. The springs of contacts with a material
 /// stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
@@ -275,18 +277,17 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
 /// @param h The sub-step (s).
 /// @param settings The contact settings.
 /// @param use_bias True for the biased pass, false for the relax pass.
-/// @param scheduler Threads each colour is spread over; null runs it on the calling thread.
+/// @param queue Where the pass is queued.
 void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
-                    const contact_solver_settings &settings, bool use_bias,
-                    task_scheduler *scheduler = nullptr);
+                    const contact_solver_settings &settings, bool use_bias, stage_queue &queue);
 
-/// Adds each impulse of the sub-step just solved to the step's totals; call once at the end of
-/// every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
+/// Queues adding each impulse of the sub-step just solved to the step's totals, once at the end
+/// of every sub-step. The accumulated impulses themselves are per sub-step (each sub-step starts
 /// from the last one's, warm starting), so their sum is what the contact gave over the step.
 /// The bundled constraints' totals are kept in their bundles until unpack_contact_impulses().
 /// @param contacts The step's contacts.
-/// @param scheduler Threads to spread the work over; null runs it on the calling thread.
-void accumulate_contact_impulses(contact_solver_set &contacts, task_scheduler *scheduler = nullptr);
+/// @param queue Where the work is queued.
+void accumulate_contact_impulses(contact_solver_set &contacts, stage_queue &queue);
 
 /// Copies the bundled constraints' impulses and step totals from their bundles back into their
 /// points and totals; call once after the last sub-step, before anything reads them (the

@@ -10,6 +10,7 @@
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/parallel/background_tasks.hpp"
+#include "edyn/parallel/stage_queue.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include "edyn/shapes/aabb.hpp"
 #include "edyn/simulation/island_manager.hpp"
@@ -112,6 +113,9 @@ struct world_state {
     /// Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
     /// other modes, where every phase runs on the calling thread.
     std::unique_ptr<task_scheduler> scheduler;
+    /// The solver's passes queued to be handed to `scheduler` together (see solve_constraints);
+    /// empty between steps.
+    stage_queue solver_stages;
     /// Runs the work that must not hold up the step (paged meshes' page loads): through the
     /// program's scheduler when init_config::scheduler gives one (sequential_multithreaded),
     /// otherwise on a background thread made when the first task comes. Never null once

@@ -182,12 +182,14 @@ void solve(random_contacts &set, task_scheduler *scheduler) {
     contact_solver_settings settings;
     auto h = scalar(1) / scalar(360);
     prepare_contacts(set.contacts, set.bodies, scheduler);
+    stage_queue queue;
     for (int i = 0; i < 2; ++i) {
-        warm_start_contacts(set.contacts, set.bodies, scheduler);
-        solve_contacts(set.contacts, set.bodies, h, settings, true, scheduler);
-        solve_contacts(set.contacts, set.bodies, h, settings, false, scheduler);
-        accumulate_contact_impulses(set.contacts, scheduler);
+        warm_start_contacts(set.contacts, set.bodies, queue);
+        solve_contacts(set.contacts, set.bodies, h, settings, true, queue);
+        solve_contacts(set.contacts, set.bodies, h, settings, false, queue);
+        accumulate_contact_impulses(set.contacts, queue);
     }
+    queue.run(scheduler);
     unpack_contact_impulses(set.contacts, scheduler);
 }
 
