@@ -254,7 +254,7 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
                       task_scheduler *scheduler = nullptr);
 
 /// The passes below queue their work instead of running it (see stage_queue), a stage per
-/// colour, so that a sub-step's passes are handed to the scheduler together: they run, in the
+/// colour, so that a step's passes are handed to the scheduler together: they run, in the
 /// order they were queued, when the queue is run. `contacts`, the storage behind `bodies` and
 /// `settings` must outlive that run, and must not change before it.
 

@@ -8,7 +8,7 @@
 namespace edyn {
 
 /// Queues adding each body's acceleration (gravity) over the sub-step `h` to its linear velocity.
-/// Index 0, the shared static body, is left alone. Both integrations are queued as one stage
+/// Index 0, the shared static body, is left alone. Each integration is queued as one stage
 /// (see stage_queue), whose blocks of bodies may run on different threads; each body's result
 /// is the same either way. The step queues it at the start of every sub-step, before the
 /// constraints are solved. The storage behind `bodies` must outlive the queue's run.
