@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <edyn/collision/contact_manifold.hpp>
 #include <edyn/serialization/memory_archive.hpp>
 #include <edyn/serialization/quantize.hpp>
+#include <edyn/simulation/world_state.hpp>
 #include <stdexcept>
 
 namespace edyn_netbench {
@@ -310,14 +312,31 @@ path_comparison compare_paths(const run_figures &a, const run_figures &b) {
 // rebuilt from their motion alone (position, orientation and velocities, what a snapshot
 // carries, rounded as snapshots round it with `quantised`), from where they are in the world that
 // ran on. A client with exact snapshots and every input can extrapolate no better: contact
-// points, their impulses, ages and order, and sleep timers are not carried. Rebuilt every third
-// step after the first second; metres, one value per body and rebuild.
+// points, their impulses, ages and order, and sleep timers are not carried. With `contacts` the
+// rebuilt world also starts with the original's contact points as they were (what no snapshot
+// carries): what is left is the rounding's own share. Rebuilt every third step after the first
+// second; metres, one value per body and rebuild.
 struct motion_record {
     edyn::vector3 position, linvel, angvel;
     edyn::quaternion orientation;
 };
 
-std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool quantised) {
+// Gives the rebuilt world's pairs the original's contact points, impulses and ages. The two
+// worlds were built alike, so that their bodies are the same entities.
+void seed_contacts(edyn::registry &rebuilt, const std::vector<edyn::contact_manifold> &manifolds) {
+    auto &world = rebuilt.ctx().get<edyn::world_state>();
+    world.broadphase.update(rebuilt);
+    for (auto &m : manifolds) {
+        auto e = world.broadphase.get_manifold(m.body[0], m.body[1]);
+        if (e == edyn::null) continue;
+        rebuilt.replace<edyn::contact_manifold>(e, m);
+        // The narrowphase links a pair to its island when its first point appears; these came
+        // with their points.
+        world.islands.link_edge(rebuilt, e, m.body[0], m.body[1]);
+    }
+}
+
+std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool quantised, bool contacts) {
     auto make_world = [&](edyn::registry &registry) {
         edyn::attach(registry, edyn::init_config{edyn::execution_mode::sequential});
         setup_registry(registry);
@@ -338,14 +357,21 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
     auto bodies = make_world(original);
     auto dt = double(edyn::get_fixed_dt(original));
     auto steps = std::size_t(std::llround(opt.seconds / dt));
+    auto first = std::size_t(std::llround(settle_time / dt));
+    auto rebuilt_at = [&](std::size_t k) { return k >= first && (k - first) % 3 == 0; };
     auto history = std::vector<std::vector<motion_record>>{record(original, bodies)};
-    for (std::size_t k = 0; k < steps; ++k) {
+    // The manifolds with points at each step a world is rebuilt at.
+    auto touching = std::vector<std::vector<edyn::contact_manifold>>(steps + 1);
+    for (std::size_t k = 1; k <= steps; ++k) {
         edyn::step_simulation(original);
         history.push_back(record(original, bodies));
+        if (!contacts || !rebuilt_at(k)) continue;
+        for (auto [e, manifold] : original.view<edyn::contact_manifold>().each())
+            if (manifold.num_points > 0) touching[k].push_back(manifold);
     }
 
     auto errors = std::vector<double>{};
-    for (auto k = std::size_t(std::llround(settle_time / dt)); k + horizon < history.size(); k += 3) {
+    for (auto k = first; k + horizon < history.size(); k += 3) {
         auto rebuilt = edyn::registry{};
         auto copies = make_world(rebuilt);
         for (std::size_t i = 0; i < copies.size(); ++i) {
@@ -369,6 +395,7 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
             rebuilt.replace<edyn::linvel>(copies[i], m.linvel);
             rebuilt.replace<edyn::angvel>(copies[i], m.angvel);
         }
+        if (contacts) seed_contacts(rebuilt, touching[k]);
         for (unsigned h = 0; h < horizon; ++h)
             edyn::step_simulation(rebuilt);
         for (std::size_t i = 0; i < copies.size(); ++i)
@@ -462,12 +489,15 @@ void run_convergence(const options &opt, results &out) {
     struct floor_case {
         unsigned horizon;
         bool quantised;
+        bool contacts;
     };
-    for (auto c : {floor_case{6, false}, floor_case{12, false}, floor_case{12, true}}) {
-        auto errors = rebuild_errors(opt, c.horizon, c.quantised);
+    for (auto c : {floor_case{6, false, false}, floor_case{12, false, false}, floor_case{12, true, false},
+                   floor_case{12, false, true}, floor_case{12, true, true}}) {
+        auto errors = rebuild_errors(opt, c.horizon, c.quantised, c.contacts);
         if (errors.empty()) continue;
-        auto name = std::string("world rebuilt from ") + (c.quantised ? "quantised" : "exact") +
-                    " motion vs the original, " + std::to_string(c.horizon) + " steps on, ";
+        auto name = std::string("world rebuilt from ") + (c.quantised ? "quantised" : "exact") + " motion" +
+                    (c.contacts ? " and the original's contact points" : "") + " vs the original, " +
+                    std::to_string(c.horizon) + " steps on, ";
         figures.push_back({name + "max", "cm", "", 0, {max_of(errors) * 100}});
         figures.push_back({name + "p99", "cm", "", 0, {percentile(errors, 0.99) * 100}});
     }
