@@ -314,7 +314,7 @@ path_comparison compare_paths(const run_figures &a, const run_figures &b) {
 // ran on. A client with exact snapshots and every input can extrapolate no better: contact
 // points, their impulses, ages and order, and sleep timers are not carried. With `contacts` the
 // rebuilt world also starts with the original's contact points as they were (what no snapshot
-// carries): what is left is the rounding's own share. Rebuilt every third step after the first
+// carries): what is then left is the rounding's share. Rebuilt every third step after the first
 // second; metres, one value per body and rebuild.
 struct motion_record {
     edyn::vector3 position, linvel, angvel;
@@ -371,7 +371,8 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
     }
 
     auto errors = std::vector<double>{};
-    for (auto k = first; k + horizon < history.size(); k += 3) {
+    for (auto k = first; k + horizon < history.size(); ++k) {
+        if (!rebuilt_at(k)) continue;
         auto rebuilt = edyn::registry{};
         auto copies = make_world(rebuilt);
         for (std::size_t i = 0; i < copies.size(); ++i) {
