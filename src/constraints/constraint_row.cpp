@@ -175,9 +175,23 @@ void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_
     anchor.point_mass_valid = inverse_point_mass(a, b, pose, anchor.point_mass);
 }
 
+namespace {
+
+// Whether K no longer fits the pivots: it was never measured (or is singular), or either lever arm
+// has turned by more than max_point_mass_turn of its length since the step began. The inertia is
+// fixed for the step, so K changes only with the lever arms.
+bool point_mass_stale(const joint_anchor &anchor, const joint_pose &pose) noexcept {
+    if (!anchor.point_mass_valid) return true;
+    constexpr auto turn_sqr = max_point_mass_turn * max_point_mass_turn;
+    return length_sqr(pose.rA - anchor.rA) > turn_sqr * length_sqr(anchor.rA) ||
+           length_sqr(pose.rB - anchor.rB) > turn_sqr * length_sqr(anchor.rB);
+}
+
+} // namespace
+
 void warm_point_mass(joint_anchor &anchor, const solver_body &a, const solver_body &b,
                      const joint_pose &pose) noexcept {
-    if (!anchor.point_mass_current) update_point_mass(anchor, a, b, pose);
+    if (!anchor.point_mass_current && point_mass_stale(anchor, pose)) update_point_mass(anchor, a, b, pose);
     anchor.point_mass_current = false;
 }
 

@@ -282,10 +282,20 @@ TEST(joint_paths, a_factored_pass_hands_each_joint_its_mass_for_the_next_warm_st
         // Kept once, even for a pose far from the one measured...
         auto far = current_pose(*anchor, a, b);
         far.rA = far.rA * scalar(3);
+        far.rB = far.rB * scalar(3);
         warm_point_mass(*anchor, a, b, far);
         EXPECT_FALSE(anchor->point_mass_current);
         EXPECT_NEAR(anchor->point_mass[0][0], expected[0][0], std::abs(expected[0][0]) * 1e-5);
-        // ...then measured at the pose given.
+        // ...then kept while neither arm has moved by more than max_point_mass_turn of its length
+        // since the step began...
+        auto near = current_pose(*anchor, a, b);
+        near.rA = anchor->rA * (1 + max_point_mass_turn / 2);
+        near.rB = anchor->rB * (1 + max_point_mass_turn / 2);
+        warm_point_mass(*anchor, a, b, near);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_EQ(anchor->point_mass[i][j], expected[i][j]);
+        // ...and measured at the pose given once one has.
         warm_point_mass(*anchor, a, b, far);
         matrix3x3 at_far;
         ASSERT_EQ(inverse_point_mass(a, b, far, at_far), anchor->point_mass_valid);
