@@ -380,8 +380,8 @@ void update_point_mass(joint_anchor &anchor, const solver_body &a, const solver_
 /// since the step began. Skipped too when the position projection measured K after the
 /// integration just before (`anchor.point_mass_current`), at poses that the projection's
 /// corrections have moved by micrometres since. (Measured at every sub-step's warm start
-/// instead, the 64 rag dolls of edyn-bench ran 2.7 % more instructions a step, for the same
-/// worst joint error.)
+/// instead, 300 steps of edyn-bench's 64 rag dolls ran 13.96 G instructions against 13.58 G, for
+/// the same worst joint error.)
 /// @param anchor The joint's pivots; its `point_mass`, `point_mass_valid` and
 /// `point_mass_current` are written.
 /// @param a Body A's solver state.
