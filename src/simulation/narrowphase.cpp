@@ -46,18 +46,20 @@ void set_material(contact_point &cp, const material_base &mixed) {
 // again every step so that material changes apply at once.
 void fill_materials(const registry &registry, contact_manifold &manifold,
                     const contact_point_changes &changes) {
+    // Most manifolds have no new point and no per-vertex material: they look nothing up.
+    auto per_vertex = has_per_vertex_material(registry, manifold);
+    if (changes.num_created == 0 && !per_vertex) return;
     auto *matA = registry.try_get<material>(manifold.body[0]);
     auto *matB = registry.try_get<material>(manifold.body[1]);
     if (!matA || !matB) return;
     // Per-vertex materials of a mesh: every point, every step, as points move over the mesh.
-    if (has_per_vertex_material(registry, manifold)) {
+    if (per_vertex) {
         for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
             auto &cp = manifold.point[manifold.ids[i]];
             set_material(cp, get_point_material(registry, manifold.body[0], manifold.body[1], cp));
         }
         return;
     }
-    if (changes.num_created == 0) return;
     auto mixed = get_mixed_material(registry, *matA, *matB);
     for (std::uint32_t i = 0; i < changes.num_created; ++i)
         set_material(manifold.point[changes.created[i]], mixed);
@@ -165,7 +167,8 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
 constexpr std::size_t manifolds_per_task = 64;
 // Bodies per parallel range when their collision_body is gathered.
 constexpr std::size_t bodies_per_task = 256;
-// How many manifolds ahead collision asks for a manifold's bodies.
+// How many manifolds ahead collision asks for a manifold's bodies, after asking for the manifold
+// itself twice as far ahead.
 constexpr std::size_t prefetch_distance = 8;
 
 } // namespace
@@ -215,30 +218,51 @@ void run_narrowphase(registry &registry, world_state &world) {
     // the materials of its new points...
     auto dt = registry.ctx().get<settings>().fixed_dt;
     world.manifold_changes.resize(num_manifolds);
+    world.manifold_live_slots.resize(num_manifolds);
+    world.pool_live_slots.resize(manifold_pool.size());
     auto collide_one = [&](std::size_t i) {
-        // The manifolds lie in storage order, but their bodies anywhere: the bodies of a
-        // manifold a few ahead are asked for now, to be in the cache when it comes.
+        // The manifolds lie in storage order, their bodies anywhere. A manifold twice the
+        // distance ahead is asked for now: its first two lines hold what every visit reads...
+        if (i + 2 * prefetch_distance < num_manifolds) {
+            prefetch(&manifold_pool.value_at(world.manifold_slots[i + 2 * prefetch_distance]),
+                     offsetof(contact_manifold, point));
+        }
+        // ...so that, by the time it is the distance ahead, its bodies can be read off it and
+        // asked for, with the point slots that were live after the last step (each point's
+        // first two lines are what a refresh reads and writes) or, if none were, the bodies'
+        // AABBs (what tells a pair without points apart). Which points are live now is not read
+        // off the manifold, since another thread may be colliding it.
         if (i + prefetch_distance < num_manifolds) {
-            auto &ahead = manifold_pool.value_at(world.manifold_slots[i + prefetch_distance]);
-            prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
-            prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
-            // Its first two lines hold what every visit reads, each point's first two what a
-            // refresh reads and writes. Every slot is asked for: which are live is not read here,
-            // since another thread may be colliding that manifold.
-            prefetch(&ahead, offsetof(contact_manifold, point));
-            for (auto &point : ahead.point)
-                prefetch(&point, 2 * cache_line_size);
+            auto slot = world.manifold_slots[i + prefetch_distance];
+            auto &ahead = manifold_pool.value_at(slot);
+            auto a = to_index(ahead.body[0]), b = to_index(ahead.body[1]);
+            prefetch(&world.collision_bodies[a], sizeof(world_state::collision_body));
+            prefetch(&world.collision_bodies[b], sizeof(world_state::collision_body));
+            if (auto live = world.pool_live_slots[slot]) {
+                for (std::size_t k = 0; k < contact_manifold::max_contacts; ++k) {
+                    if (live & (1u << k)) prefetch(&ahead.point[k], 2 * cache_line_size);
+                }
+            } else {
+                prefetch(&world.collision_aabbs[a], sizeof(AABB));
+                prefetch(&world.collision_aabbs[b], sizeof(AABB));
+            }
         }
         auto &manifold = manifold_pool.value_at(world.manifold_slots[i]);
         auto &changes = world.manifold_changes[i];
         changes = collide_manifold(registry, world, manifold, dt);
         fill_materials(registry, manifold, changes);
+        std::uint8_t live = 0;
+        for (std::uint32_t k = 0; k < manifold.num_points; ++k)
+            live |= static_cast<std::uint8_t>(1u << manifold.ids[k]);
+        world.manifold_live_slots[i] = live;
     };
     parallel_for(world.scheduler.get(), std::size_t(0), num_manifolds, manifolds_per_task, collide_one);
 
-    // ...then what the registry shares, in the manifolds' order: events and islands. Only the
-    // manifolds whose points came or went have any.
+    // ...then, in the manifolds' order, the live slots for the next step's look-ahead and what
+    // the registry shares: events and islands. Only the manifolds whose points came or went
+    // have any of the latter.
     for (std::size_t i = 0; i < num_manifolds; ++i) {
+        world.pool_live_slots[world.manifold_slots[i]] = world.manifold_live_slots[i];
         auto &changes = world.manifold_changes[i];
         if (changes.num_created == 0 && changes.num_destroyed == 0) continue;
         auto manifold_entity = world.manifolds[i];

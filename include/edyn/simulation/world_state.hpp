@@ -109,6 +109,14 @@ struct world_state {
     std::vector<std::uint32_t> manifold_slots;
     /// What changed in each of `manifolds` this step.
     std::vector<contact_point_changes> manifold_changes;
+    /// Which point slots of each of `manifolds` are live once it is collided this step, a bit
+    /// per slot, written by the thread that collided it.
+    std::vector<std::uint8_t> manifold_live_slots;
+    /// `manifold_live_slots` by slot of the contact_manifold pool as the last narrowphase left
+    /// them, copied on the calling thread, for the narrowphase to ask ahead for the memory a
+    /// manifold will need: its live points if it had some, its bodies' AABBs if not. Only a hint
+    /// (a manifold changes slots when another is destroyed), never read for results.
+    std::vector<std::uint8_t> pool_live_slots;
 
     /// Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
     /// other modes, where every phase runs on the calling thread.
