@@ -229,22 +229,16 @@ void run_narrowphase(registry &registry, world_state &world) {
         }
         // ...so that, by the time it is the distance ahead, its bodies can be read off it and
         // asked for, with the point slots that were live after the last step (each point's
-        // first two lines are what a refresh reads and writes) or, if none were, the bodies'
-        // AABBs (what tells a pair without points apart). Which points are live now is not read
-        // off the manifold, since another thread may be colliding it.
+        // first two lines are what a refresh reads and writes). Which points are live now is
+        // not read off the manifold, since another thread may be colliding it.
         if (i + prefetch_distance < num_manifolds) {
             auto slot = world.manifold_slots[i + prefetch_distance];
             auto &ahead = manifold_pool.value_at(slot);
-            auto a = to_index(ahead.body[0]), b = to_index(ahead.body[1]);
-            prefetch(&world.collision_bodies[a], sizeof(world_state::collision_body));
-            prefetch(&world.collision_bodies[b], sizeof(world_state::collision_body));
-            if (auto live = world.pool_live_slots[slot]) {
-                for (std::size_t k = 0; k < contact_manifold::max_contacts; ++k) {
-                    if (live & (1u << k)) prefetch(&ahead.point[k], 2 * cache_line_size);
-                }
-            } else {
-                prefetch(&world.collision_aabbs[a], sizeof(AABB));
-                prefetch(&world.collision_aabbs[b], sizeof(AABB));
+            prefetch(&world.collision_bodies[to_index(ahead.body[0])], sizeof(world_state::collision_body));
+            prefetch(&world.collision_bodies[to_index(ahead.body[1])], sizeof(world_state::collision_body));
+            auto live = world.pool_live_slots[slot];
+            for (std::size_t k = 0; k < contact_manifold::max_contacts; ++k) {
+                if (live & (1u << k)) prefetch(&ahead.point[k], 2 * cache_line_size);
             }
         }
         auto &manifold = manifold_pool.value_at(world.manifold_slots[i]);

@@ -113,9 +113,9 @@ struct world_state {
     /// per slot, written by the thread that collided it.
     std::vector<std::uint8_t> manifold_live_slots;
     /// `manifold_live_slots` by slot of the contact_manifold pool as the last narrowphase left
-    /// them, copied on the calling thread, for the narrowphase to ask ahead for the memory a
-    /// manifold will need: its live points if it had some, its bodies' AABBs if not. Only a hint
-    /// (a manifold changes slots when another is destroyed), never read for results.
+    /// them, copied on the calling thread, for the narrowphase to ask ahead only for the point
+    /// slots a manifold is likely to use. Only a hint (a manifold changes slots when another is
+    /// destroyed), never read for results.
     std::vector<std::uint8_t> pool_live_slots;
 
     /// Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
