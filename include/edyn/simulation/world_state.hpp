@@ -90,7 +90,7 @@ struct world_state {
         vector3 origin{vector3_zero};                ///< get_rigidbody_origin (m).
         quaternion orientation{quaternion_identity}; ///< The body's orientation.
         vector3 linvel{vector3_zero};                ///< Zero unless it has both velocities (m/s).
-        scalar spin_reach{0};                        ///< |angvel| × half its AABB's diagonal (m/s).
+        scalar spin_reach{0};                        ///< |angvel| × its reach from its centre of mass (m/s).
         scalar bounding_radius{large_scalar};        ///< shape_bounding_radius of its shape (m).
         std::uint32_t shape_epoch{0};                ///< Its shape_epoch, 0 without one.
         bool dynamic{false};                         ///< Whether it has a dynamic_tag.
