@@ -83,7 +83,7 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
     // distance the smaller is taken: the radius of the sphere about the origin that holds the
     // shape, and the AABB's half diagonal (meshes have no finite sphere), each plus the centre's
     // offset from the sphere's or the box's centre. (The box's alone is no bound where the centre
-    // of mass is off the box's centre, and it is up to 1.7 times the sphere's for a turned box.)
+    // of mass is off the box's centre, and it is up to 1.67 times the sphere's for a turned cube.)
     auto *lv = registry.try_get<linvel>(e);
     auto *av = registry.try_get<angvel>(e);
     if (lv && av) {
