@@ -99,26 +99,29 @@ TEST(narrowphase, rules_out_only_pairs_that_collide_would_give_no_point) {
 // Points are looked for as far as the bodies can close in within a step: their relative speed
 // and each body's spin times the farthest its shape reaches from its centre of mass. That reach
 // is the bounding sphere's radius (plus the centre's offset from the shape's origin) where that
-// is less than the AABB's half diagonal, as for a box turned corner up.
+// is less than the AABB's half diagonal, as for this box, turned about a slanted axis.
+const box_shape spinning_box{vector3{scalar(0.5), scalar(0.3), scalar(0.2)}};
+constexpr scalar spin_rate = 3; // rad/s
+
+// The box's pair's separation threshold after one step beside a static slab, and the reach the
+// AABB's half diagonal would give.
 scalar spinning_box_threshold(const vector3 &com_offset, scalar &aabb_reach) {
-    auto box = box_shape{vector3{scalar(0.5), scalar(0.3), scalar(0.2)}};
     auto orn = quaternion_axis_angle(normalize(vector3{1, 1, 1}), scalar(0.9));
     auto origin = vector3{0, 1, 0};
-    // Spinning about one of the box's principal axes, so that the spin stays as it is.
-    auto spin = rotate(orn, vector3{0, 0, 3});
     registry reg;
     attach(reg, init_config{execution_mode::sequential});
     set_gravity(reg, vector3_zero);
     auto def = rigidbody_def{};
-    def.shape = box;
+    def.shape = spinning_box;
     def.position = origin;
     def.orientation = orn;
-    def.angvel = spin;
+    // About one of the box's principal axes, so that the spin stays as it is.
+    def.angvel = rotate(orn, vector3{0, 0, spin_rate});
     if (com_offset != vector3_zero) def.center_of_mass = com_offset;
     make_rigidbody(reg, def);
     // A static slab 8 cm below the box's lowest corner: near enough for the broadphase to pair
     // them, too far for a contact point while that corner turns.
-    auto aabb = shape_aabb(box, origin, orn);
+    auto aabb = shape_aabb(spinning_box, origin, orn);
     auto ground = rigidbody_def{};
     ground.kind = rigidbody_kind::rb_static;
     ground.shape = box_shape{vector3{2, scalar(0.1), 2}};
@@ -137,20 +140,19 @@ scalar spinning_box_threshold(const vector3 &com_offset, scalar &aabb_reach) {
 }
 
 TEST(narrowphase, a_spinning_body_reaches_as_far_as_its_bounding_sphere) {
-    auto box = box_shape{vector3{scalar(0.5), scalar(0.3), scalar(0.2)}};
-    auto radius = shape_bounding_radius(box);
-    auto dt = scalar(1) / scalar(60);
+    auto radius = shape_bounding_radius(spinning_box);
+    auto per_metre = spin_rate * settings{}.fixed_dt; // m the spin carries a point 1 m out in a step
     auto aabb_reach = scalar(0);
     auto threshold = spinning_box_threshold(vector3_zero, aabb_reach);
     // The AABB's half diagonal would give a threshold at least 3 mm wider: the test tells them apart.
     ASSERT_GT(aabb_reach - radius, scalar(0.06));
-    EXPECT_NEAR(threshold, contact_breaking_threshold + 3 * radius * dt, scalar(1e-6));
+    EXPECT_NEAR(threshold, contact_breaking_threshold + radius * per_metre, scalar(1e-6));
 
     // Off the origin, the centre of mass reaches farther from one side of the shape.
     auto offset = vector3{scalar(0.25), 0, 0};
     threshold = spinning_box_threshold(offset, aabb_reach);
     auto reach = std::min(radius + length(offset), aabb_reach);
-    EXPECT_NEAR(threshold, contact_breaking_threshold + 3 * reach * dt, scalar(1e-6));
+    EXPECT_NEAR(threshold, contact_breaking_threshold + reach * per_metre, scalar(1e-6));
 }
 
 } // namespace
