@@ -38,15 +38,15 @@ void run_stages(benchmark::State &state) {
                 data[b].value = v;
             });
         }
-        queue.run(threads > 1 ? &scheduler : nullptr);
+        queue.run(&scheduler); // with one thread, on this one
         benchmark::DoNotOptimize(data[0].value);
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * stages_per_run);
 }
 
-// Threads; blocks a stage (a small colour, one a thread, a large colour); work a block (a few
-// bundles of contacts: about 0.1, 1 and 5 µs on a current core).
-// Thread counts up to the machine's.
+// Threads, up to the machine's; blocks a stage (a small colour, one a thread, a large colour);
+// work a block (one to a few bundles of contacts: about 0.06, 0.6 and 3 µs on the 2-core machine
+// of the performance guide).
 void stage_arguments(benchmark::internal::Benchmark *b) {
     auto cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     for (auto threads : {1, 2, 4, 8, 16}) {
