@@ -1,5 +1,6 @@
 #include "contact_bundle_solver.hpp"
 #include "../math/wide_scalar.hpp"
+#include "edyn/config/prefetch.hpp"
 #include "edyn/parallel/parallel_for.hpp"
 #include <cstddef>
 
@@ -612,6 +613,15 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
 }
 
 } // namespace
+
+void prefetch_bundle_bodies(const contact_solver_set &contacts, std::uint32_t index,
+                            std::span<const solver_body> bodies) noexcept {
+    auto &bundle = contacts.bundles[index];
+    for (std::uint32_t i = 0; i < lanes; ++i) {
+        prefetch(&bodies[bundle.body[0][i]]);
+        prefetch(&bodies[bundle.body[1][i]]);
+    }
+}
 
 void warm_start_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies) {
     auto &bundle = contacts.bundles[index];

@@ -39,6 +39,11 @@ inline fixed_side fixed_side_of(const contact_solver_constraint &c) noexcept {
 void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
                           task_scheduler *scheduler);
 
+// Asks for the cache line of each of the bundle's bodies that its passes read and write (the
+// first of solver_body's two), so that it is on its way while the bundle before is solved.
+void prefetch_bundle_bodies(const contact_solver_set &contacts, std::uint32_t bundle,
+                            std::span<const solver_body> bodies) noexcept;
+
 // Applies the bundle's impulses to its bodies (warm starting).
 void warm_start_bundle(contact_solver_set &contacts, std::uint32_t bundle, std::span<solver_body> bodies);
 

@@ -109,23 +109,28 @@ void number_colour_blocks(contact_solver_set &contacts, std::uint32_t threads) {
 // Queues bundle(i) for every bundle i and single(k) for every constraint k solved on its own,
 // colour after colour, each colour a stage whose blocks may run at once on different threads;
 // then the overflow, in order, as a stage of one block. Both functions are copied into the queue.
+// Before each bundle of a block, the bodies of the block's next bundle are asked for: a bundle's
+// sixteen bodies lie anywhere in `bodies` (and, on more than one thread, often in another core's
+// cache, written there by the colour before), so their loads otherwise stall the bundle's start.
 template<typename Bundle, typename Single>
-void queue_in_colour_order(const contact_solver_set &contacts, stage_queue &queue, Bundle bundle,
-                           Single single) {
+void queue_in_colour_order(const contact_solver_set &contacts, std::span<const solver_body> bodies,
+                           stage_queue &queue, Bundle bundle, Single single) {
     for (std::uint32_t k = 0; k + 1 < contacts.block_begin.size(); ++k) {
-        queue.add(contacts.block_begin[k + 1] - contacts.block_begin[k],
-                  [&contacts, k, bundle, single](std::uint32_t b) {
-                      auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
-                      auto first = b * contacts.block_items[k];
-                      auto last = std::min(first + contacts.block_items[k], colour_items(contacts, k));
-                      for (auto i = first; i < last; ++i) {
-                          if (i < num_bundles) {
-                              bundle(contacts.bundle_begin[k] + i);
-                          } else {
-                              single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
-                          }
-                      }
-                  });
+        auto block = [&contacts, bodies, k, bundle, single](std::uint32_t b) {
+            auto num_bundles = contacts.bundle_begin[k + 1] - contacts.bundle_begin[k];
+            auto first = b * contacts.block_items[k];
+            auto last = std::min(first + contacts.block_items[k], colour_items(contacts, k));
+            for (auto i = first; i < last; ++i) {
+                if (i < num_bundles) {
+                    if (i + 1 < last && i + 1 < num_bundles)
+                        detail::prefetch_bundle_bodies(contacts, contacts.bundle_begin[k] + i + 1, bodies);
+                    bundle(contacts.bundle_begin[k] + i);
+                } else {
+                    single(contacts.singles[contacts.single_begin[k] + i - num_bundles]);
+                }
+            }
+        };
+        queue.add(contacts.block_begin[k + 1] - contacts.block_begin[k], block);
     }
     auto &begin = contacts.colour_begin;
     auto overflow = begin.empty() ? 0u : begin.back();
@@ -223,7 +228,7 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
         }
         apply_angular_impulse(a, b, angular);
     };
-    queue_in_colour_order(contacts, queue, bundle, single);
+    queue_in_colour_order(contacts, bodies, queue, bundle, single);
 }
 
 namespace {
@@ -388,7 +393,7 @@ void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies,
         with_fixed_side(
             c, [&](auto side) { solve_single<side()>(c, points_of(contacts, c), a, b, pass, settings, h); });
     };
-    queue_in_colour_order(contacts, queue, bundle, single);
+    queue_in_colour_order(contacts, bodies, queue, bundle, single);
 }
 
 void accumulate_contact_impulses(contact_solver_set &contacts, stage_queue &queue) {
