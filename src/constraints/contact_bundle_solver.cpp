@@ -375,6 +375,15 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
     auto &bundle = contacts.bundles[index];
     bundle.moves_a = bundle.moves_b = 0;
     for (std::uint32_t i = 0; i < lanes; ++i) {
+        // A lane without points is empty: the static body on both sides.
+        bundle.body[0][i] = bundle.body[1][i] = static_solver_body;
+        bundle.friction[i] = 0;
+        if (bundle.num_points[i] > 0) {
+            auto &c = contacts.constraints[bundle.constraint[i]];
+            bundle.body[0][i] = c.body[0];
+            bundle.body[1][i] = c.body[1];
+            bundle.friction[i] = c.friction;
+        }
         if (moves(bodies[bundle.body[0][i]])) bundle.moves_a |= 1u << i;
         if (moves(bodies[bundle.body[1][i]])) bundle.moves_b |= 1u << i;
     }
@@ -401,6 +410,27 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
 bool is_bundled(const contact_solver_constraint &c) noexcept {
     return c.num_points > 0 && !(c.spin_friction > 0) && c.num_roll_axes == 0 && c.spin_impulse == 0 &&
            !(c.stiffness < large_scalar);
+}
+
+namespace {
+
+constexpr std::uint32_t buckets_per_side = contact_solver_constraint::max_points + 1;
+
+fixed_side side_of_key(std::uint8_t key) noexcept {
+    return fixed_side((key & bucket_key_mask) / buckets_per_side);
+}
+
+std::uint32_t points_of_key(std::uint8_t key) noexcept {
+    return contact_solver_constraint::max_points - (key & bucket_key_mask) % buckets_per_side;
+}
+
+} // namespace
+
+std::uint8_t pack_key(const contact_solver_constraint &c) noexcept {
+    auto key = is_bundled(c) ? std::uint32_t(fixed_side_of(c)) * buckets_per_side +
+                                   contact_solver_constraint::max_points - c.num_points
+                             : std::uint32_t(unbundled_key);
+    return static_cast<std::uint8_t>(key | (c.restitution > 0 ? bouncy_key : 0));
 }
 
 void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
@@ -431,38 +461,35 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
     reserve(contacts.bundle_begin, num_colours + 1);
     reserve(contacts.single_begin, num_colours + 1);
 
+    auto &keys = contacts.pack_keys;
     for (std::size_t k = 0; k + 1 < begin.size(); ++k) {
         contacts.bundle_begin.push_back(std::uint32_t(contacts.bundles.size()));
         contacts.single_begin.push_back(std::uint32_t(contacts.singles.size()));
 
-        // The colour's bundled constraints sorted by fixed side, then by point count, most
-        // first, so that a bundle holds contacts of one side and its lanes mostly have as many
-        // points as each other. Their order within a colour does not matter: they share no body
-        // that moves.
-        constexpr std::size_t per_side = contact_solver_constraint::max_points + 1;
-        auto bucket = [&](const contact_solver_constraint &c) {
-            return std::size_t(fixed_side_of(c)) * per_side + contact_solver_constraint::max_points -
-                   c.num_points;
-        };
-        std::uint32_t first_of[num_sides * per_side + 1]{};
+        // The colour's bundled constraints sorted by their keys: by fixed side, then by point
+        // count, most first, so that a bundle holds contacts of one side and its lanes mostly
+        // have as many points as each other. Their order within a colour does not matter: they
+        // share no body that moves.
+        std::uint32_t first_of[unbundled_key + 1]{};
         for (auto i = begin[k]; i < begin[k + 1]; ++i) {
-            auto &c = contacts.constraints[i];
-            if (is_bundled(c)) {
-                ++first_of[bucket(c) + 1];
+            auto bucket = keys[i] & bucket_key_mask;
+            if (bucket != unbundled_key) {
+                ++first_of[bucket + 1];
             } else {
                 contacts.singles.push_back(i);
             }
         }
         for (std::size_t n = 1; n < std::size(first_of); ++n)
             first_of[n] += first_of[n - 1];
-        contacts.packing.resize(first_of[std::size(first_of) - 1]);
+        contacts.packing.resize(first_of[unbundled_key]);
         for (auto i = begin[k]; i < begin[k + 1]; ++i) {
-            auto &c = contacts.constraints[i];
-            if (is_bundled(c)) contacts.packing[first_of[bucket(c)]++] = i;
+            auto bucket = keys[i] & bucket_key_mask;
+            if (bucket != unbundled_key) contacts.packing[first_of[bucket]++] = i;
         }
 
+        // Which constraint each lane holds; fill_bundle() reads the rest of them on the threads.
         for (std::size_t first = 0; first < contacts.packing.size();) {
-            auto side = fixed_side_of(contacts.constraints[contacts.packing[first]]);
+            auto side = side_of_key(keys[contacts.packing[first]]);
             auto &bundle = contacts.bundles.emplace_back();
             bundle.fixed_side = side;
             bundle.first_slot = num_slots;
@@ -470,21 +497,15 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
             bundle.full_slots = contact_solver_constraint::max_points;
             std::uint32_t filled = 0;
             for (std::uint32_t i = 0; i < lanes; ++i) {
-                auto *c = first + i < contacts.packing.size()
-                              ? &contacts.constraints[contacts.packing[first + i]]
-                              : nullptr;
-                if (c && fixed_side_of(*c) == side) {
-                    bundle.constraint[i] = contacts.packing[first + i];
-                    bundle.body[0][i] = c->body[0];
-                    bundle.body[1][i] = c->body[1];
-                    bundle.num_points[i] = c->num_points;
-                    bundle.friction[i] = c->friction;
-                    ++filled;
-                } else {
-                    bundle.constraint[i] = 0;
-                    bundle.body[0][i] = bundle.body[1][i] = static_solver_body;
-                    bundle.num_points[i] = 0;
-                    bundle.friction[i] = 0;
+                bundle.constraint[i] = 0;
+                bundle.num_points[i] = 0;
+                if (first + i < contacts.packing.size()) {
+                    auto constraint = contacts.packing[first + i];
+                    if (side_of_key(keys[constraint]) == side) {
+                        bundle.constraint[i] = constraint;
+                        bundle.num_points[i] = points_of_key(keys[constraint]);
+                        ++filled;
+                    }
                 }
                 bundle.num_slots = std::max(bundle.num_slots, bundle.num_points[i]);
                 bundle.full_slots = std::min(bundle.full_slots, bundle.num_points[i]);

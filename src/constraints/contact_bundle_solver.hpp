@@ -32,10 +32,20 @@ inline fixed_side fixed_side_of(const contact_solver_constraint &c) noexcept {
     return fixed_side::none;
 }
 
+// What the packing reads of a constraint, in one byte (contact_solver_set::pack_keys), so that
+// its part on the calling thread reads a byte per constraint instead of the constraint: the
+// bucket it is sorted into (fixed side, then point count, most first) or unbundled_key, and
+// bouncy_key when it has restitution.
+inline constexpr std::uint8_t unbundled_key = 3 * (contact_solver_constraint::max_points + 1);
+inline constexpr std::uint8_t bucket_key_mask = 0x1f;
+inline constexpr std::uint8_t bouncy_key = 0x20;
+static_assert(unbundled_key <= bucket_key_mask && (bucket_key_mask & bouncy_key) == 0);
+std::uint8_t pack_key(const contact_solver_constraint &c) noexcept;
+
 // Packs each colour's bundled constraints four to a bundle, contacts of one fixed side to a
 // bundle, most points first, and lists the
 // others in `singles`; copies the points' rows, masses and impulses into the bundles' slots.
-// Call once the points are prepared.
+// Call once the points are prepared and every constraint's pack_keys entry is set.
 void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
                           task_scheduler *scheduler);
 

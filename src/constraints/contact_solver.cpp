@@ -164,10 +164,12 @@ contact_solver_point *contact_solver_set::add(const contact_solver_constraint &c
 
 void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body> bodies,
                       task_scheduler *scheduler) {
-    // Each constraint writes only its own points: any order will do.
+    // Each constraint writes only its own points and key: any order will do.
     auto count = static_cast<std::uint32_t>(contacts.constraints.size());
+    contacts.pack_keys.resize(count);
     parallel_for(scheduler, 0u, count, contacts_per_task, [&](std::uint32_t k) {
         auto &c = contacts.constraints[k];
+        contacts.pack_keys[k] = detail::pack_key(c);
         auto &a = bodies[c.body[0]];
         auto &b = bodies[c.body[1]];
         // A bundled point's rows are made in its bundle (fill_bundle), eight or four at a time.
@@ -199,7 +201,7 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
 
     contacts.bouncy.clear();
     for (std::uint32_t k = 0; k < count; ++k) {
-        if (contacts.constraints[k].restitution > 0) contacts.bouncy.push_back(k);
+        if (contacts.pack_keys[k] & detail::bouncy_key) contacts.bouncy.push_back(k);
     }
 }
 

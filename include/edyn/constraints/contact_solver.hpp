@@ -162,6 +162,9 @@ struct contact_solver_set {
     std::vector<std::uint32_t> bouncy;
     /// Scratch of prepare_contacts(): one colour's bundled constraints, most points first.
     std::vector<std::uint32_t> packing;
+    /// Scratch of prepare_contacts(): what the bundle packing and the list of bouncy constraints
+    /// need of each constraint, a byte each, worked out on the scheduler's threads.
+    std::vector<std::uint8_t> pack_keys;
 
     /// Empties every array, keeping their capacity.
     void clear() noexcept {
