@@ -48,14 +48,22 @@ constexpr std::size_t bodies_per_task = 256;
 } // namespace
 
 void gather_bodies(registry &registry, world_state &world, const settings &settings) {
-    world.body_entities.clear();
-    world.body_entities.push_back(null);
-
-    // The bodies in the view's order, which numbers them...
+    // The bodies in the view's order, which numbers them: whether each candidate of the view
+    // belongs to it is looked up on the scheduler's threads, and those that do are listed here in
+    // the order the view walks them...
     auto view = registry.view<rigidbody_tag, linvel, angvel, mass_inv, inertia_world_inv>(
         exclude<sleeping_tag, static_tag>);
+    auto &candidates = view.handle();
+    auto num_candidates = candidates.size();
+    world.body_candidates.resize(num_candidates);
+    parallel_for(world.scheduler.get(), std::size_t(0), num_candidates, bodies_per_task,
+                 [&](std::size_t i) { world.body_candidates[i] = view.contains(candidates.data()[i]); });
+    world.body_entities.clear();
+    world.body_entities.push_back(null);
     std::size_t index_bound = 0;
-    for (auto e : view) {
+    for (auto i = num_candidates; i-- > 0;) {
+        if (!world.body_candidates[i]) continue;
+        auto e = candidates.data()[i];
         world.body_entities.push_back(e);
         index_bound = std::max(index_bound, std::size_t(to_index(e)) + 1);
     }

@@ -255,6 +255,12 @@ public:
         }
     }
 
+    /// The leading pool: its entities, from the back of its packed array to the front, are the
+    /// candidates iteration checks (with `contains`), so a program may check them on several
+    /// threads and keep the view's order.
+    /// @return The leading pool, valid while the registry is.
+    [[nodiscard]] const sparse_set &handle() const noexcept { return *lead; }
+
     /// Upper bound of the number of entities: the size of the leading pool.
     /// @return The size of the leading pool now.
     [[nodiscard]] size_type size_hint() const noexcept { return lead->size(); }

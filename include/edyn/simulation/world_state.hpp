@@ -47,6 +47,9 @@ struct world_state {
     std::vector<solver_body> bodies;
     /// body_entities[i] is bodies[i]'s entity (null for index 0).
     std::vector<entity> body_entities;
+    /// Scratch of gather_bodies: whether each candidate of its view (in the leading pool's
+    /// order) is a body to solve.
+    std::vector<std::uint8_t> body_candidates;
     /// Maps an entity's index to its solver body (0 when it has none).
     std::vector<std::uint32_t> body_index;
     /// The contact constraints and points being solved, in colour order.

@@ -290,3 +290,21 @@ TEST(view_empty_test, empty_registry_views) {
     view.each([&](position &, velocity &) { ++calls; });
     EXPECT_EQ(calls, 0);
 }
+
+TEST_F(view_test, handle_is_the_leading_pool_whose_candidates_back_to_front_give_the_order) {
+    auto view = reg.view<position, velocity>(exclude<tag>);
+    auto &lead = view.handle();
+    EXPECT_EQ(&lead, static_cast<const sparse_set *>(&reg.storage<velocity>())) << "the smallest pool leads";
+    EXPECT_EQ(lead.size(), view.size_hint());
+    // Checking each candidate apart (as threads may), then listing those that belong from the back
+    // of the packed array to the front, gives the view's own order.
+    std::vector<bool> belongs(lead.size());
+    for (std::size_t i = 0; i < lead.size(); ++i)
+        belongs[i] = view.contains(lead.data()[i]);
+    std::vector<std::uint32_t> listed;
+    for (auto i = lead.size(); i-- > 0;) {
+        if (belongs[i]) listed.push_back(to_index(lead.data()[i]));
+    }
+    EXPECT_EQ(listed, (std::vector<std::uint32_t>{8, 4, 2}));
+    EXPECT_EQ(listed, indices(view));
+}
