@@ -15,16 +15,6 @@ namespace edyn::detail {
 // friction and without a material spring. (A lane without points is an empty lane.)
 bool is_bundled(const contact_solver_constraint &c) noexcept;
 
-// Whether prepare_contacts() leaves constraint k's tangents, rows and masses to the bundle
-// packing, which makes them side by side in the bundle: a coloured constraint (the overflow past
-// the colours is solved one at a time) that goes in a bundle, unless it bounces (the restitution
-// solver reads its points' rows).
-inline bool rows_made_in_bundle(const contact_solver_set &contacts, std::uint32_t k) noexcept {
-    auto &c = contacts.constraints[k];
-    return !contacts.colour_begin.empty() && k < contacts.colour_begin.back() && is_bundled(c) &&
-           !(c.restitution > 0);
-}
-
 // The static side of a contact (see fixed_side): the side whose body is static_solver_body.
 inline fixed_side fixed_side_of(const contact_solver_constraint &c) noexcept {
     if (c.body[1] == static_solver_body) return fixed_side::b;
@@ -41,6 +31,16 @@ inline constexpr std::uint8_t bucket_key_mask = 0x1f;
 inline constexpr std::uint8_t bouncy_key = 0x20;
 static_assert(unbundled_key <= bucket_key_mask && (bucket_key_mask & bouncy_key) == 0);
 std::uint8_t pack_key(const contact_solver_constraint &c) noexcept;
+
+// Whether prepare_contacts() leaves constraint k's tangents, rows and masses to the bundle
+// packing, which makes them side by side in the bundle: a coloured constraint (the overflow past
+// the colours is solved one at a time) that goes in a bundle, unless it bounces (the restitution
+// solver reads its points' rows). Read off the constraint's pack_keys entry, which must be set.
+inline bool rows_made_in_bundle(const contact_solver_set &contacts, std::uint32_t k) noexcept {
+    auto key = contacts.pack_keys[k];
+    return !contacts.colour_begin.empty() && k < contacts.colour_begin.back() &&
+           (key & bucket_key_mask) != unbundled_key && !(key & bouncy_key);
+}
 
 // Packs each colour's bundled constraints four to a bundle, contacts of one fixed side to a
 // bundle, most points first, and lists the
