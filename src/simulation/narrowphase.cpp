@@ -171,6 +171,9 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
 
 // Manifolds per parallel range: below this many, collision runs on the calling thread.
 constexpr std::size_t manifolds_per_task = 64;
+// Pool slots per block when the manifolds awake are listed: a fixed size, so that the blocks
+// and the list are the same on any number of threads.
+constexpr std::uint32_t listed_per_block = 1024;
 // Bodies per parallel range when their collision_body is gathered.
 constexpr std::size_t bodies_per_task = 256;
 // How many manifolds ahead collision asks for a manifold's bodies, after asking for the manifold
@@ -188,19 +191,38 @@ void run_narrowphase(registry &registry, world_state &world) {
     auto &manifold_pool = registry.storage<contact_manifold>();
     auto &sleeping = registry.storage<sleeping_tag>();
     const entity *pooled = manifold_pool.data();
-    // (Resized from last step's size, neither cleared nor assigned: growth stays geometric, so
-    // that a growing world soon stops reallocating.)
-    world.manifolds.resize(manifold_pool.size());
-    world.manifold_slots.resize(manifold_pool.size());
-    std::size_t num_manifolds = 0;
-    for (std::uint32_t slot = 0; slot < manifold_pool.size(); ++slot) {
-        if (!sleeping.empty() && sleeping.contains(pooled[slot])) continue;
-        world.manifolds[num_manifolds] = pooled[slot];
-        world.manifold_slots[num_manifolds] = slot;
-        ++num_manifolds;
-    }
+    // They are listed on the scheduler's threads, the pool cut into blocks: each block counts
+    // its manifolds awake, and lists them after those of the blocks before it. (Resized from
+    // last step's size, neither cleared nor assigned: growth stays geometric, so that a growing
+    // world soon stops reallocating.)
+    auto pool_size = static_cast<std::uint32_t>(manifold_pool.size());
+    auto num_blocks = (pool_size + listed_per_block - 1) / listed_per_block;
+    auto awake = [&](std::uint32_t slot) { return sleeping.empty() || !sleeping.contains(pooled[slot]); };
+    auto &block_first = world.manifold_block_first;
+    block_first.resize(num_blocks + 1);
+    block_first[0] = 0;
+    parallel_for(world.scheduler.get(), 0u, num_blocks, 1, [&](std::uint32_t block) {
+        auto first = block * listed_per_block, last = std::min(pool_size, first + listed_per_block);
+        std::uint32_t count = 0;
+        for (auto slot = first; slot < last; ++slot)
+            count += awake(slot) ? 1 : 0;
+        block_first[block + 1] = count;
+    });
+    for (std::uint32_t block = 0; block < num_blocks; ++block)
+        block_first[block + 1] += block_first[block];
+    auto num_manifolds = std::size_t(block_first[num_blocks]);
     world.manifolds.resize(num_manifolds);
     world.manifold_slots.resize(num_manifolds);
+    parallel_for(world.scheduler.get(), 0u, num_blocks, 1, [&](std::uint32_t block) {
+        auto first = block * listed_per_block, last = std::min(pool_size, first + listed_per_block);
+        auto next = block_first[block];
+        for (auto slot = first; slot < last; ++slot) {
+            if (!awake(slot)) continue;
+            world.manifolds[next] = pooled[slot];
+            world.manifold_slots[next] = slot;
+            ++next;
+        }
+    });
 
     // What the manifolds read of their bodies, body by body...
     auto &proxies = world.broadphase;
@@ -254,17 +276,20 @@ void run_narrowphase(registry &registry, world_state &world) {
         std::uint8_t live = 0;
         for (std::uint32_t k = 0; k < manifold.num_points; ++k)
             live |= static_cast<std::uint8_t>(1u << manifold.ids[k]);
+        if (changes.num_created > 0 || changes.num_destroyed > 0) live |= world_state::points_changed_bit;
         world.manifold_live_slots[i] = live;
     };
     parallel_for(world.scheduler.get(), std::size_t(0), num_manifolds, manifolds_per_task, collide_one);
 
     // ...then, in the manifolds' order, the live slots for the next step's look-ahead and what
     // the registry shares: events and islands. Only the manifolds whose points came or went
-    // have any of the latter.
+    // have any of the latter, and a byte each says which those are: their changes, written on
+    // the other threads, are read for them alone.
     for (std::size_t i = 0; i < num_manifolds; ++i) {
-        world.pool_live_slots[world.manifold_slots[i]] = world.manifold_live_slots[i];
+        auto live = world.manifold_live_slots[i];
+        world.pool_live_slots[world.manifold_slots[i]] = live & ~world_state::points_changed_bit;
+        if (!(live & world_state::points_changed_bit)) continue;
         auto &changes = world.manifold_changes[i];
-        if (changes.num_created == 0 && changes.num_destroyed == 0) continue;
         auto manifold_entity = world.manifolds[i];
         if (record) record_events(events, manifold_entity, changes);
 

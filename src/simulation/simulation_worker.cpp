@@ -173,8 +173,7 @@ void worker_context::snapshot_contacts() {
     for (std::size_t i = 0; i < world.manifolds.size(); ++i) {
         auto e = world.manifolds[i];
         if (!reg.valid(e) || !pool.contains(e)) continue;
-        auto &changes = world.manifold_changes[i];
-        auto changed = changes.num_created > 0 || changes.num_destroyed > 0;
+        auto changed = (world.manifold_live_slots[i] & world_state::points_changed_bit) != 0;
         auto due = (to_index(e) + world.step_count) % manifold_refresh_steps == 0;
         if (changed || (due && pool.get(e).num_points > 0)) message.manifolds.emplace_back(e, pool.get(e));
     }

@@ -110,11 +110,18 @@ struct world_state {
     /// Where each of `manifolds` lies in the contact_manifold pool (`storage::value_at`), for
     /// the narrowphase's loop to reach it without a look-up.
     std::vector<std::uint32_t> manifold_slots;
+    /// Where the narrowphase's listing of `manifolds` puts the first awake manifold of each
+    /// block of the contact_manifold pool, and then how many there are in all.
+    std::vector<std::uint32_t> manifold_block_first;
     /// What changed in each of `manifolds` this step.
     std::vector<contact_point_changes> manifold_changes;
     /// Which point slots of each of `manifolds` are live once it is collided this step, a bit
-    /// per slot, written by the thread that collided it.
+    /// per slot, and points_changed_bit if a point was made or dropped (its entry in
+    /// `manifold_changes` then has something to say), written by the thread that collided it.
     std::vector<std::uint8_t> manifold_live_slots;
+    /// The bit of a `manifold_live_slots` entry that says its manifold's points changed.
+    static constexpr std::uint8_t points_changed_bit = 0x80;
+    static_assert(contact_manifold::max_contacts < 8, "a live slot's bit must not be points_changed_bit");
     /// `manifold_live_slots` by slot of the contact_manifold pool as the last narrowphase left
     /// them, copied on the calling thread, for the narrowphase to ask ahead only for the point
     /// slots a manifold is likely to use. Only a hint (a manifold changes slots when another is
