@@ -15,6 +15,7 @@
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 #include <algorithm>
+#include <utility>
 
 namespace edyn {
 
@@ -198,11 +199,15 @@ void run_narrowphase(registry &registry, world_state &world) {
     auto pool_size = static_cast<std::uint32_t>(manifold_pool.size());
     auto num_blocks = (pool_size + listed_per_block - 1) / listed_per_block;
     auto awake = [&](std::uint32_t slot) { return sleeping.empty() || !sleeping.contains(pooled[slot]); };
+    auto slots_of = [&](std::uint32_t block) {
+        auto first = block * listed_per_block;
+        return std::pair{first, std::min(pool_size, first + listed_per_block)};
+    };
     auto &block_first = world.manifold_block_first;
     block_first.resize(num_blocks + 1);
     block_first[0] = 0;
     parallel_for(world.scheduler.get(), 0u, num_blocks, 1, [&](std::uint32_t block) {
-        auto first = block * listed_per_block, last = std::min(pool_size, first + listed_per_block);
+        auto [first, last] = slots_of(block);
         std::uint32_t count = 0;
         for (auto slot = first; slot < last; ++slot)
             count += awake(slot) ? 1 : 0;
@@ -214,7 +219,7 @@ void run_narrowphase(registry &registry, world_state &world) {
     world.manifolds.resize(num_manifolds);
     world.manifold_slots.resize(num_manifolds);
     parallel_for(world.scheduler.get(), 0u, num_blocks, 1, [&](std::uint32_t block) {
-        auto first = block * listed_per_block, last = std::min(pool_size, first + listed_per_block);
+        auto [first, last] = slots_of(block);
         auto next = block_first[block];
         for (auto slot = first; slot < last; ++slot) {
             if (!awake(slot)) continue;
