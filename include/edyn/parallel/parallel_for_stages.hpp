@@ -3,6 +3,7 @@
 
 #include "edyn/parallel/parallel_for.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <exception>
@@ -101,8 +102,10 @@ private:
 /// same block), and adds how many it ran to the stage's count once it has run them. A thread
 /// runs a block as soon as it takes it and a stage is waited for only once all its blocks are
 /// taken, so a thread only ever waits for blocks that running threads hold: the stages cannot
-/// stall, however few of the task's ranges the scheduler runs at once. Without a scheduler, with
-/// one thread or with a single block, the blocks run in order on the calling thread.
+/// stall, however few of the task's ranges the scheduler runs at once. Consecutive stages of one
+/// block each are taken as one: the thread that takes the first block runs all of them in order,
+/// and the others wait for the last. Without a scheduler, with one thread, with a single block or
+/// with no stage of two blocks or more, the blocks run in order on the calling thread.
 /// @param scheduler Threads to spread each stage over; may be null.
 /// @param sync State the call's threads share, reused from call to call; calls that share one
 ///        must not overlap.
@@ -126,8 +129,25 @@ void parallel_for_stages(task_scheduler *scheduler, stage_sync &sync,
         }
     };
 
+    // Stage k is one of a run of stages of one block each (empty stages within the run aside):
+    // such a run goes to one thread as a whole, its blocks in order, since handing each block of
+    // it to the next thread would cost more than the block (a chain's joints, one colour each;
+    // the last, smallest colours of a pass). Returns the run's last stage with a block, or k when
+    // stage k has more blocks or the stage after it does.
+    auto run_end = [&](std::size_t k) {
+        auto last = k;
+        for (auto next = k + 1; next < num_stages && stage_begin[next + 1] - stage_begin[next] <= 1; ++next) {
+            if (stage_begin[next + 1] > stage_begin[next]) last = next;
+        }
+        return last;
+    };
+
     auto threads = scheduler ? scheduler->concurrency() : 1u;
-    if (threads < 2 || num_blocks < 2) {
+    // When no stage has two blocks, the whole call is one such run: it stays on this thread.
+    auto widest = std::uint32_t(0);
+    for (std::size_t k = 0; k < num_stages && widest < 2; ++k)
+        widest = std::max(widest, stage_begin[k + 1] - stage_begin[k]);
+    if (threads < 2 || num_blocks < 2 || widest < 2) {
         for (std::size_t k = 0; k < num_stages; ++k) {
             for (auto b = stage_begin[k]; b < stage_begin[k + 1]; ++b)
                 run(k, b);
@@ -145,6 +165,21 @@ void parallel_for_stages(task_scheduler *scheduler, stage_sync &sync,
             if (count == 0) continue;
             if (before < num_stages) {
                 detail::wait_until(sync.stages[before].done, stage_begin[before + 1] - stage_begin[before]);
+            }
+            if (count == 1) {
+                auto last = run_end(k);
+                // The thread that takes the run's first block runs the whole run; the others go
+                // on to wait for its last stage.
+                if (sync.claim(first)) {
+                    for (auto s = k; s <= last; ++s) {
+                        for (auto b = stage_begin[s]; b < stage_begin[s + 1]; ++b)
+                            run(s, b);
+                    }
+                    sync.stages[last].done.fetch_add(1, std::memory_order_release);
+                }
+                before = last;
+                k = last;
+                continue;
             }
             before = k;
             auto start = static_cast<std::uint32_t>(std::uint64_t(count) * t / threads);

@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <edyn/parallel/parallel_for_stages.hpp>
 #include <gtest/gtest.h>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace edyn;
@@ -129,4 +131,51 @@ TEST(parallel_for_stages, no_stages_or_empty_stages_run_nothing) {
     parallel_for_stages(&scheduler, sync, std::vector<std::uint32_t>{0, 0, 0},
                         [&](std::size_t, std::uint32_t) { ++calls; });
     EXPECT_EQ(calls, 0);
+}
+
+// Consecutive stages of one block each (a chain's joints, one colour each) run as one, in order,
+// on whichever thread takes the first; when no stage has two blocks, the call is never handed to
+// the scheduler at all.
+TEST(parallel_for_stages, runs_stages_of_one_block_in_a_row_on_one_thread) {
+    std::vector<std::uint32_t> stage_begin{0, 1, 2, 2, 3, 10, 11, 12, 13, 20};
+    task_scheduler scheduler(4);
+    stage_sync sync;
+    for (int repeat = 0; repeat < 20; ++repeat) {
+        std::vector<std::thread::id> ran_on(stage_begin.back());
+        std::vector<int> order;
+        std::mutex order_mutex;
+        parallel_for_stages(&scheduler, sync, stage_begin, [&](std::size_t, std::uint32_t block) {
+            ran_on[block] = std::this_thread::get_id();
+            std::lock_guard lock(order_mutex);
+            order.push_back(int(block));
+        });
+        ASSERT_EQ(order.size(), std::size_t(20));
+        // Blocks 0 to 2 (stages 0, 1 and 3) on one thread, in order; so are 10 to 12.
+        EXPECT_EQ(ran_on[1], ran_on[0]);
+        EXPECT_EQ(ran_on[2], ran_on[0]);
+        EXPECT_EQ(ran_on[11], ran_on[10]);
+        EXPECT_EQ(ran_on[12], ran_on[10]);
+        auto place = [&](int block) { return std::find(order.begin(), order.end(), block) - order.begin(); };
+        EXPECT_LT(place(0), place(1));
+        EXPECT_LT(place(1), place(2));
+        EXPECT_LT(place(10), place(11));
+        EXPECT_LT(place(11), place(12));
+        for (int b = 3; b < 10; ++b) {
+            EXPECT_GT(place(b), place(2)) << "block " << b;
+            EXPECT_LT(place(b), place(10)) << "block " << b;
+        }
+        for (int b = 13; b < 20; ++b)
+            EXPECT_GT(place(b), place(12)) << "block " << b;
+    }
+
+    test::one_range_at_a_time program;
+    task_scheduler counted(program.hooks());
+    std::vector<std::uint32_t> single_blocks{0, 1, 2, 2, 3, 4};
+    std::vector<int> order;
+    parallel_for_stages(&counted, sync, single_blocks,
+                        [&](std::size_t, std::uint32_t block) { order.push_back(int(block)); });
+    EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3}));
+    EXPECT_EQ(program.tasks, 0u) << "a call with no stage of two blocks stays on the calling thread";
+    parallel_for_stages(&counted, sync, stage_begin, [](std::size_t, std::uint32_t) {});
+    EXPECT_EQ(program.tasks, 1u);
 }
