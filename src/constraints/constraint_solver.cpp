@@ -1,8 +1,7 @@
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/dynamics/tags.hpp"
-#include "edyn/parallel/parallel_for.hpp"
-#include "edyn/parallel/parallel_for_stages.hpp"
+#include "edyn/parallel/stage_queue.hpp"
 #include <algorithm>
 #include <array>
 #include <tuple>
@@ -68,6 +67,8 @@ namespace {
 
 // Joints per parallel range: a joint's rows cost more than a contact's.
 constexpr std::uint32_t joints_per_task = 32;
+// Joints per parallel range when measuring their geometry, which costs a fraction of a pass.
+constexpr std::uint32_t joints_per_refresh = 256;
 constexpr std::size_t num_types = std::tuple_size_v<decltype(constraint_solver_state::batches)>;
 
 // Calls fn(batch) with the batch at place `type` of state.batches.
@@ -80,8 +81,7 @@ void with_batch(constraint_solver_state &state, std::uint32_t type, Fn &&fn) {
 }
 
 // Cuts each colour's joints of each type into blocks of at most joints_per_task, colour by
-// colour; then joins the blocks that follow one another in a batch into the runs of a pass on
-// one thread.
+// colour.
 void number_colour_blocks(constraint_solver_state &state) {
     // The types that have joints this step: a chain has as many colours as joints.
     std::array<std::uint32_t, num_types> active{};
@@ -104,16 +104,6 @@ void number_colour_blocks(constraint_solver_state &state) {
         }
     }
     state.colour_block_begin.push_back(static_cast<std::uint32_t>(state.blocks.size()));
-
-    state.runs.clear();
-    for (auto &block : state.blocks) {
-        if (!state.runs.empty() && state.runs.back().type == block.type &&
-            state.runs.back().last == block.first) {
-            state.runs.back().last = block.last;
-        } else {
-            state.runs.push_back(block);
-        }
-    }
 }
 
 } // namespace
@@ -143,24 +133,37 @@ void gather_constraints(const registry &registry, constraint_solver_state &state
 
 namespace {
 
-// Calls fn(solver) for every joint, colour after colour, each colour's joints (of every type) at
-// once on the scheduler's threads; all colours in one task (see parallel_for_stages). On one
-// thread the joints go in the same order, run after run.
+// Queues fn(solver) for every joint, colour after colour: each colour a stage of `queue`, its
+// blocks (of one type each) run at once on the scheduler's threads. Colours of one block each
+// that follow one another (a chain's joints, one colour each) are one stage of one block, run in
+// order on one thread: as parallel_for_stages would run them, at the cost of one stage. fn is
+// copied into the queue.
 template<typename Fn>
-void for_each_in_colour_order(constraint_solver_state &state, Fn &&fn) {
-    auto run_joints = [&](const constraint_solver_state::joint_run &run) {
-        with_batch(state, run.type, [&](auto &batch) {
-            for (auto i = run.first; i < run.last; ++i)
-                fn(batch.solvers[i]);
-        });
+void queue_in_colour_order(constraint_solver_state &state, stage_queue &queue, Fn fn) {
+    auto *joints = &state;
+    auto run_blocks = [joints, fn](std::uint32_t first, std::uint32_t last) {
+        for (auto b = first; b < last; ++b) {
+            auto &block = joints->blocks[b];
+            with_batch(*joints, block.type, [&](auto &batch) {
+                for (auto i = block.first; i < block.last; ++i)
+                    fn(batch.solvers[i]);
+            });
+        }
     };
-    if (!state.scheduler || state.scheduler->concurrency() < 2) {
-        for (auto &run : state.runs)
-            run_joints(run);
-        return;
+    auto &begin = state.colour_block_begin;
+    for (std::size_t k = 0; k + 1 < begin.size();) {
+        auto first = begin[k];
+        auto end = k + 1;
+        if (begin[k + 1] - first == 1) {
+            while (end + 1 < begin.size() && begin[end + 1] - begin[end] <= 1)
+                ++end;
+            queue.add(1, [run_blocks, first, last = begin[end]](std::uint32_t) { run_blocks(first, last); });
+        } else {
+            queue.add(begin[k + 1] - first,
+                      [run_blocks, first](std::uint32_t b) { run_blocks(first + b, first + b + 1); });
+        }
+        k = end;
     }
-    parallel_for_stages(state.scheduler, state.block_sync, state.colour_block_begin,
-                        [&](std::size_t, std::uint32_t b) { run_joints(state.blocks[b]); });
 }
 
 } // namespace
@@ -179,32 +182,36 @@ constraint_solve_context make_constraint_solve_context(const constraint_solver_s
     return ctx;
 }
 
-void refresh_joint_geometry(constraint_solver_state &state, std::span<const solver_body> bodies) {
+void refresh_joint_geometry(constraint_solver_state &state, std::span<const solver_body> bodies,
+                            stage_queue &queue) {
     // Each joint writes only its own state: any order gives the same result.
     for_each_batch(state, [&](auto &batch) {
-        parallel_for(state.scheduler, std::size_t(0), batch.solvers.size(), joints_per_task,
-                     [&](std::size_t i) {
-                         auto &s = batch.solvers[i];
-                         if constexpr (requires { s.anchor; }) {
-                             refresh_pose(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]]);
-                         }
-                         if constexpr (requires { refresh_geometry(s, bodies); }) refresh_geometry(s, bodies);
-                     });
+        auto *solvers = batch.solvers.data();
+        queue.add_for(0u, std::uint32_t(batch.solvers.size()), joints_per_refresh,
+                      [solvers, bodies](std::uint32_t i) {
+                          auto &s = solvers[i];
+                          if constexpr (requires { s.anchor; }) {
+                              refresh_pose(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]]);
+                          }
+                          if constexpr (requires { refresh_geometry(s, bodies); })
+                              refresh_geometry(s, bodies);
+                      });
     });
 }
 
-void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies) {
-    for_each_in_colour_order(state, [&](auto &s) { warm_start(s, bodies); });
+void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
+                            stage_queue &queue) {
+    queue_in_colour_order(state, queue, [bodies](auto &s) { warm_start(s, bodies); });
 }
 
 void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solve_context &ctx) {
+                             const constraint_solve_context &ctx, stage_queue &queue) {
     state.inv_h = ctx.inv_h;
-    for_each_in_colour_order(state, [&](auto &s) { solve(s, bodies, ctx); });
+    queue_in_colour_order(state, queue, [bodies, ctx](auto &s) { solve(s, bodies, ctx); });
 }
 
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solver_settings &settings) {
+                             const constraint_solver_settings &settings, stage_queue &queue) {
     if (settings.position_projection <= 0) return;
     // Each pass solves every path of pivots exactly, then the other joints one at a time; the
     // paths meet one another, and those joints, at shared bodies, which a few passes settle.
@@ -216,15 +223,14 @@ void project_joint_positions(constraint_solver_state &state, std::span<solver_bo
         if constexpr (requires(solver & s) { project_positions(s, bodies, scalar(1), scalar(1)); })
             others = others || !batch.solvers.empty();
     });
+    auto fraction = settings.position_projection;
+    auto inv_h = state.inv_h;
     for (unsigned pass = 0; pass < settings.position_projection_iterations; ++pass) {
-        project_joint_paths(state.paths, bodies, settings.position_projection, state.inv_h, pass == 0,
-                            state.scheduler);
+        project_joint_paths(state.paths, bodies, fraction, inv_h, pass == 0, queue);
         if (!others) continue;
-        for_each_in_colour_order(state, [&](auto &s) {
-            if constexpr (requires {
-                              project_positions(s, bodies, settings.position_projection, state.inv_h);
-                          }) {
-                project_positions(s, bodies, settings.position_projection, state.inv_h);
+        queue_in_colour_order(state, queue, [bodies, fraction, inv_h](auto &s) {
+            if constexpr (requires { project_positions(s, bodies, fraction, inv_h); }) {
+                project_positions(s, bodies, fraction, inv_h);
             }
         });
     }

@@ -541,20 +541,41 @@ void finish_path(joint_path_set &set, std::uint32_t p, std::span<solver_body> bo
 
 } // namespace
 
+namespace {
+
+// Projects the paths of one block, which are of one colour: all of them are measured, then all
+// of them move.
+void project_path_block(joint_path_set &set, std::span<solver_body> bodies, scalar fraction, scalar inv_h,
+                        bool refactor, std::uint32_t block) {
+    auto from = set.block_begin[block], to = set.block_begin[block + 1];
+    path_step steps[paths_per_task];
+    wide_blocks::lane_batch batch(set, bodies);
+    for (auto p = from; p < to; ++p)
+        steps[p - from] = begin_path(set, p, bodies, fraction, inv_h, refactor, batch);
+    batch.flush();
+    for (auto p = from; p < to; ++p)
+        if (steps[p - from] != path_step::done) finish_path(set, p, bodies, fraction, inv_h, steps[p - from]);
+}
+
+} // namespace
+
 void project_joint_paths(joint_path_set &set, std::span<solver_body> bodies, scalar fraction, scalar inv_h,
                          bool refactor, task_scheduler *scheduler) {
     parallel_for_stages(scheduler, set.sync, set.colour_block_begin, [&](std::size_t, std::uint32_t block) {
-        // The block's paths are of one colour: all of them are measured, then all of them move.
-        auto from = set.block_begin[block], to = set.block_begin[block + 1];
-        path_step steps[paths_per_task];
-        wide_blocks::lane_batch batch(set, bodies);
-        for (auto p = from; p < to; ++p)
-            steps[p - from] = begin_path(set, p, bodies, fraction, inv_h, refactor, batch);
-        batch.flush();
-        for (auto p = from; p < to; ++p)
-            if (steps[p - from] != path_step::done)
-                finish_path(set, p, bodies, fraction, inv_h, steps[p - from]);
+        project_path_block(set, bodies, fraction, inv_h, refactor, block);
     });
+}
+
+void project_joint_paths(joint_path_set &set, std::span<solver_body> bodies, scalar fraction, scalar inv_h,
+                         bool refactor, stage_queue &queue) {
+    auto *paths = &set;
+    for (std::size_t k = 0; k + 1 < set.colour_block_begin.size(); ++k) {
+        auto first = set.colour_block_begin[k];
+        queue.add(set.colour_block_begin[k + 1] - first,
+                  [paths, bodies, fraction, inv_h, refactor, first](std::uint32_t b) {
+                      project_path_block(*paths, bodies, fraction, inv_h, refactor, first + b);
+                  });
+    }
 }
 
 } // namespace edyn

@@ -307,43 +307,36 @@ void solve_constraints(world_state &world, const settings &settings) {
     auto biased = make_constraint_solve_context(settings.joint, h, true);
     auto relax = make_constraint_solve_context(settings.joint, h, false);
 
-    // Contacts are solved colour by colour, each colour on the scheduler's threads when there is
-    // one. The contact passes and the integrations are queued, and the queue is handed to the
-    // scheduler as one task: once per step when there is nothing else to solve. Joints and
-    // restitution run their own passes: the passes queued before them run first.
+    // Contacts and joints are solved colour by colour, each colour on the scheduler's threads
+    // when there is one. Their passes and the integrations are queued, and the queue is handed
+    // to the scheduler as one task: once per step when nothing bounces. Restitution runs its own
+    // passes: the passes queued before them run first.
     auto *scheduler = world.scheduler.get();
     prepare_contacts(contacts, bodies, scheduler);
-    refresh_joint_geometry(world.joints, bodies);
     auto &queue = world.solver_stages;
     queue.clear(); // of what a step that threw may have left
-    auto joints = has_joints(world.joints);
+    refresh_joint_geometry(world.joints, bodies, queue);
     auto bounces = !contacts.bouncy.empty();
-    auto after_queue = [&](bool needed, auto &&pass) {
-        if (!needed) return;
-        queue.run(scheduler);
-        pass();
-    };
 
     for (unsigned i = 0; i < substeps; ++i) {
         integrate_velocities(bodies, h, queue);
-        after_queue(bounces, [&] {
+        if (bounces) {
+            queue.run(scheduler);
             solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
                               settings.num_individual_restitution_iterations);
-        });
+        }
         // Joints before contacts in each pass: contacts, solved last, keep bodies apart.
-        after_queue(joints, [&] { warm_start_constraints(world.joints, bodies); });
+        warm_start_constraints(world.joints, bodies, queue);
         warm_start_contacts(contacts, bodies, queue);
-        after_queue(joints, [&] { solve_joint_constraints(world.joints, bodies, biased); });
+        solve_joint_constraints(world.joints, bodies, biased, queue);
         solve_contacts(contacts, bodies, h, settings.contact, true, queue);
         integrate_positions(bodies, h, queue);
-        after_queue(joints, [&] {
-            project_joint_positions(world.joints, bodies, settings.joint);
-            // Only integration and projection move bodies: the joints' rows measured now serve
-            // every velocity pass until the next sub-step's integration.
-            refresh_joint_geometry(world.joints, bodies);
-        });
+        project_joint_positions(world.joints, bodies, settings.joint, queue);
+        // Only integration and projection move bodies: the joints' rows measured now serve
+        // every velocity pass until the next sub-step's integration.
+        refresh_joint_geometry(world.joints, bodies, queue);
         for (unsigned k = 0; k < settings.num_relax_iterations; ++k) {
-            after_queue(joints, [&] { solve_joint_constraints(world.joints, bodies, relax); });
+            solve_joint_constraints(world.joints, bodies, relax, queue);
             solve_contacts(contacts, bodies, h, settings.contact, false, queue);
         }
         accumulate_contact_impulses(contacts, queue);

@@ -25,7 +25,6 @@ void run_step(registry &registry) {
     // 3. External forces: gravity becomes each body's acceleration for the sub-steps.
     gather_bodies(registry, world, settings);
     gather_contacts(registry, world);
-    world.joints.scheduler = world.scheduler.get();
     gather_constraints(registry, world.joints, world.body_index, world.bodies);
     // 4. Restitution solver, then the constraint solver's sub-steps, which apply the impulses
     //    (5) and integrate velocities into positions and orientations (6).

@@ -12,8 +12,7 @@
 #include "edyn/constraints/null_constraint.hpp"
 #include "edyn/constraints/point_constraint.hpp"
 #include "edyn/constraints/soft_distance_constraint.hpp"
-#include "edyn/parallel/parallel_for_stages.hpp"
-#include "edyn/parallel/task_scheduler.hpp"
+#include "edyn/parallel/stage_queue.hpp"
 #include <cstdint>
 #include <span>
 #include <tuple>
@@ -92,20 +91,12 @@ struct constraint_solver_state {
     std::vector<joint_run> blocks;
     /// The first block of each colour, then one past the last block.
     std::vector<std::uint32_t> colour_block_begin;
-    /// The same joints in the same order for a pass on one thread: blocks that follow one another
-    /// in their batch are joined, so that a chain, one colour per joint, is one run.
-    std::vector<joint_run> runs;
-    /// What the threads of a pass over those blocks share (see parallel_for_stages).
-    stage_sync block_sync;
     /// The pivots the position projection brings together, cut into paths solved exactly.
     joint_path_set paths;
     /// Scratch for building `paths`: every projected pivot in the order gathered.
     std::vector<joint_anchor *> projected_pivots;
     /// Scratch for building `paths`: the bodies of the other joints the projection moves.
     std::vector<solver_body_index> other_projected;
-    /// The threads each colour's joints are spread over. Null runs every pass on the calling
-    /// thread. Not owned.
-    task_scheduler *scheduler{nullptr};
 };
 
 /// Whether the state holds any joint to solve.
@@ -145,37 +136,45 @@ void gather_constraints(const registry &registry, constraint_solver_state &state
 constraint_solve_context make_constraint_solve_context(const constraint_solver_settings &settings, scalar h,
                                                        bool use_bias) noexcept;
 
+// The joint passes below are queued, like the contacts' passes: they run, in the order queued,
+// when the queue runs (stage_queue::run), each colour's joints at once on the scheduler's
+// threads; the result does not depend on the number of threads. The state and the bodies must
+// outlive that run.
+
 /// Measures every joint's pivots (`joint_anchor::pose`) and angles at the bodies' present
-/// poses: called before the first sub-step and after each sub-step's position projection, the
+/// poses: queued before the first sub-step and after each sub-step's position projection, the
 /// only times the bodies move, so that the velocity passes measure nothing themselves.
-/// Each joint on the state's scheduler when it has one.
 /// @param state The joints gathered this step.
 /// @param bodies The step's solver bodies.
-void refresh_joint_geometry(constraint_solver_state &state, std::span<const solver_body> bodies);
+/// @param queue The queue the pass is added to.
+void refresh_joint_geometry(constraint_solver_state &state, std::span<const solver_body> bodies,
+                            stage_queue &queue);
 
-/// Re-applies the accumulated impulses, at the start of each sub-step.
-/// Colour by colour, each colour's joints on the state's scheduler when it has one.
+/// Re-applies the accumulated impulses, at the start of each sub-step. Colour by colour.
 /// @param state The joints gathered this step.
 /// @param bodies The step's solver bodies.
-void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies);
+/// @param queue The queue the pass is added to.
+void warm_start_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
+                            stage_queue &queue);
 
-/// One Gauss-Seidel pass over every joint row (biased or relax, as ctx says).
-/// Colour by colour, each colour's joints on the state's scheduler when it has one; the result
-/// does not depend on the number of threads. Records `ctx.inv_h` for the projection.
+/// One Gauss-Seidel pass over every joint row (biased or relax, as ctx says). Colour by colour.
+/// Records `ctx.inv_h` for the projection.
 /// @param state The joints gathered this step; their impulses accumulate.
 /// @param bodies The step's solver bodies.
-/// @param ctx The pass, from make_constraint_solve_context().
+/// @param ctx The pass, from make_constraint_solve_context(); copied into the queue.
+/// @param queue The queue the pass is added to.
 void solve_joint_constraints(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solve_context &ctx);
+                             const constraint_solve_context &ctx, stage_queue &queue);
 
 /// Position projection of the joints that keep pivots together, after integrating positions.
-/// Runs `position_projection_iterations` passes; does nothing when `position_projection` is not
-/// positive. Uses the sub-step of the last solve_joint_constraints() call.
+/// Queues `position_projection_iterations` passes; queues nothing when `position_projection` is
+/// not positive. Uses the sub-step of the last solve_joint_constraints() call.
 /// @param state The joints gathered this step.
 /// @param bodies The step's solver bodies: their positions and velocities change.
 /// @param settings The joint settings.
+/// @param queue The queue the passes are added to.
 void project_joint_positions(constraint_solver_state &state, std::span<solver_body> bodies,
-                             const constraint_solver_settings &settings);
+                             const constraint_solver_settings &settings, stage_queue &queue);
 
 /// Stores the impulses in the components, for next step's warm start.
 /// Also writes the hinge angle and CV joint twist reached. Called once at the end of the step.

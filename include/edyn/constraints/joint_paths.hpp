@@ -4,6 +4,7 @@
 #include "edyn/constraints/constraint_colouring.hpp"
 #include "edyn/constraints/constraint_row.hpp"
 #include "edyn/parallel/parallel_for_stages.hpp"
+#include "edyn/parallel/stage_queue.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include <cstdint>
 #include <span>
@@ -108,6 +109,17 @@ void build_joint_paths(joint_path_set &set, std::span<joint_anchor *const> pivot
 /// @param scheduler The threads to use, or null for the calling thread alone.
 void project_joint_paths(joint_path_set &set, std::span<solver_body> bodies, scalar fraction, scalar inv_h,
                          bool refactor, task_scheduler *scheduler);
+
+/// The same pass queued: each colour of paths a stage of `queue`, run by stage_queue::run().
+/// The set and the bodies must outlive that run.
+/// @param set The paths, from build_joint_paths().
+/// @param bodies The step's solver bodies.
+/// @param fraction Share of the separation removed, in [0, 1].
+/// @param inv_h 1 / h of the sub-step just integrated (1/s).
+/// @param refactor True at a sub-step's first pass (see above).
+/// @param queue The queue the stages are added to.
+void project_joint_paths(joint_path_set &set, std::span<solver_body> bodies, scalar fraction, scalar inv_h,
+                         bool refactor, stage_queue &queue);
 
 } // namespace edyn
 
