@@ -40,8 +40,9 @@ struct update_guard {
     update_guard &operator=(const update_guard &) = delete;
 };
 
-// The predicted motion stretches the fat AABB; a teleport must not turn into a huge box, so the
-// prediction is capped at the body's own size (or the margin, for tiny bodies).
+// A body without an estimate is expected to move as it did since the last update; a teleport
+// must not turn into a huge box, so that is capped at the body's own size (or the margin, for
+// tiny bodies).
 vector3 predicted_displacement(const AABB &aabb, const vector3 &displacement, scalar margin) {
     auto cap = std::max(max_component(aabb.max - aabb.min), margin);
     auto len_sqr = length_sqr(displacement);
@@ -297,9 +298,9 @@ void broadphase::create_manifolds(registry &registry) {
     pairs_scratch.clear();
 }
 
-void broadphase::move_proxies(registry &registry, task_scheduler *scheduler) {
+void broadphase::move_proxies(registry &registry, task_scheduler *scheduler, motion_estimator estimate) {
     auto &tree = trees[0];
-    // Which proxies left their fat AABBs is found at once...
+    // Which proxies no longer cover their motion is found at once...
     motions.resize(dynamic_proxies.size());
     parallel_for(scheduler, std::size_t(0), dynamic_proxies.size(), proxies_per_task, [&](std::size_t i) {
         auto &p = dynamic_proxies[i];
@@ -311,8 +312,19 @@ void broadphase::move_proxies(registry &registry, task_scheduler *scheduler) {
 
         auto center = aabb_center(*aabb);
         motion.aabb = *aabb;
-        motion.displacement = predicted_displacement(*aabb, center - p.center, tree.margin());
-        motion.reinsert = tree.needs_move(p.node, *aabb, motion.displacement);
+        motion.expected = {};
+        if (!estimate || !estimate(registry, p.body, *aabb, motion.expected)) {
+            motion.expected = {predicted_displacement(*aabb, center - p.center, tree.margin()), 0};
+        }
+        auto &[displacement, reach] = motion.expected;
+        if (!tree.covers(p.node, *aabb, displacement, reach)) {
+            motion.reinsert = true;
+        } else if (tree.oversized(p.node, *aabb, displacement, reach)) {
+            // Too large: shrunk only once it stays so, not at each end of a swing.
+            motion.reinsert = ++p.oversized_updates > shrink_patience;
+        } else {
+            p.oversized_updates = 0;
+        }
         p.center = center;
     });
 
@@ -322,7 +334,8 @@ void broadphase::move_proxies(registry &registry, task_scheduler *scheduler) {
         auto &motion = motions[i];
         if (!motion.reinsert) continue;
         auto &p = dynamic_proxies[i];
-        tree.move(p.node, motion.aabb, motion.displacement);
+        tree.move(p.node, motion.aabb, motion.expected.displacement, motion.expected.reach);
+        p.oversized_updates = 0;
         moved_nodes.push_back(p.node);
         if (!p.queued) {
             p.queued = true;
@@ -331,10 +344,10 @@ void broadphase::move_proxies(registry &registry, task_scheduler *scheduler) {
     }
 }
 
-void broadphase::update(registry &registry, task_scheduler *scheduler) {
+void broadphase::update(registry &registry, task_scheduler *scheduler, motion_estimator estimate) {
     EDYN_ASSERT(!updating, "broadphase::update: called recursively");
     update_guard guard(updating);
-    move_proxies(registry, scheduler);
+    move_proxies(registry, scheduler, estimate);
 
     reinserted.resize(trees[0].capacity());
     for (auto node : moved_nodes)

@@ -72,26 +72,27 @@ void dynamic_tree::free_node(node_id id) noexcept {
     free_list = id;
 }
 
-AABB dynamic_tree::fatten(const AABB &aabb, const vector3 &displacement) const noexcept {
-    auto fat = inset(aabb, vector3_one * fat_margin);
-    auto stretch = displacement * displacement_multiplier;
-
+AABB dynamic_tree::sweep(const AABB &aabb, const vector3 &stretch, scalar grow) noexcept {
+    auto swept = inset(aabb, vector3_one * grow);
     for (int i = 0; i < 3; ++i) {
         if (stretch[i] < 0) {
-            fat.min[i] += stretch[i];
+            swept.min[i] += stretch[i];
         } else {
-            fat.max[i] += stretch[i];
+            swept.max[i] += stretch[i];
         }
     }
+    return swept;
+}
 
-    return fat;
+AABB dynamic_tree::fatten(const AABB &aabb, const vector3 &displacement, scalar reach) const noexcept {
+    return sweep(aabb, displacement * displacement_multiplier, std::max(reach, fat_margin));
 }
 
 dynamic_tree::node_id dynamic_tree::create(const AABB &aabb, entity payload) {
     EDYN_ASSERT(aabb.min.x <= aabb.max.x && aabb.min.y <= aabb.max.y && aabb.min.z <= aabb.max.z,
                 "dynamic_tree::create: inverted AABB");
     auto id = allocate_node();
-    nodes[id].aabb = fatten(aabb, vector3_zero);
+    nodes[id].aabb = fatten(aabb, vector3_zero, 0);
     nodes[id].payload = payload;
     insert_leaf(id);
     ++leaf_count;
@@ -105,20 +106,29 @@ void dynamic_tree::destroy(node_id id) {
     --leaf_count;
 }
 
-bool dynamic_tree::needs_move(node_id id, const AABB &aabb, const vector3 &displacement) const noexcept {
-    EDYN_ASSERT(is_leaf_id(id), "dynamic_tree::needs_move: not a leaf");
-    auto &fat = nodes[id].aabb;
-    if (!contains(fat, aabb)) return true;
-    // Still enclosed. Reinsert anyway when the fat box is far larger than what the current
-    // motion asks for (e.g. after a fast body slowed down), or it keeps spurious pairs.
-    auto largest = inset(fatten(aabb, displacement), vector3_one * (fat_margin * shrink_slack_margins));
-    return !contains(largest, fat);
+bool dynamic_tree::covers(node_id id, const AABB &aabb, const vector3 &displacement,
+                          scalar reach) const noexcept {
+    EDYN_ASSERT(is_leaf_id(id), "dynamic_tree::covers: not a leaf");
+    EDYN_ASSERT(reach >= 0, "dynamic_tree::covers: negative reach");
+    return contains(nodes[id].aabb, sweep(aabb, displacement, reach));
 }
 
-bool dynamic_tree::move(node_id id, const AABB &aabb, const vector3 &displacement) {
-    if (!needs_move(id, aabb, displacement)) return false;
+bool dynamic_tree::oversized(node_id id, const AABB &aabb, const vector3 &displacement,
+                             scalar reach) const noexcept {
+    EDYN_ASSERT(is_leaf_id(id), "dynamic_tree::oversized: not a leaf");
+    auto largest = inset(fatten(aabb, displacement, reach), vector3_one * shrink_slack);
+    return !contains(largest, nodes[id].aabb);
+}
+
+bool dynamic_tree::needs_move(node_id id, const AABB &aabb, const vector3 &displacement,
+                              scalar reach) const noexcept {
+    return !covers(id, aabb, displacement, reach) || oversized(id, aabb, displacement, reach);
+}
+
+bool dynamic_tree::move(node_id id, const AABB &aabb, const vector3 &displacement, scalar reach) {
+    if (!needs_move(id, aabb, displacement, reach)) return false;
     remove_leaf(id);
-    nodes[id].aabb = fatten(aabb, displacement);
+    nodes[id].aabb = fatten(aabb, displacement, reach);
     insert_leaf(id);
     return true;
 }

@@ -1,4 +1,5 @@
 #include "edyn/simulation/step.hpp"
+#include "edyn/simulation/body_motion_estimate.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/narrowphase.hpp"
 #include "edyn/simulation/paged_mesh_loading.hpp"
@@ -16,8 +17,9 @@ void run_step(registry &registry) {
 
     if (settings.pre_step_callback) settings.pre_step_callback(registry);
 
-    // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones.
-    world.broadphase.update(registry, world.scheduler.get());
+    // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones;
+    //    every body's fat box covers where its velocities take it in this step.
+    world.broadphase.update(registry, world.scheduler.get(), body_motion_estimator(settings));
     //    Paged meshes load the pages bodies are over and near, and unload those left behind.
     update_paged_meshes(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.

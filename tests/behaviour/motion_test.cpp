@@ -94,6 +94,31 @@ TEST_F(contact_motion, a_world_rebuilt_from_the_bodies_motion_bounces_the_same) 
     }
 }
 
+// A bar 2 m long lying 8 cm above the ground, turning at 6 rad/s so that one end comes down
+// 10 cm a step: its contact must be found before that end reaches the ground, though the two
+// bodies' broadphase margins (3 cm each) lie apart. The bar's box reaches out by how far it turns
+// in a step.
+TEST_F(contact_motion, a_fast_turning_bar_is_caught_before_its_end_reaches_the_ground) {
+    set_gravity(reg, vector3_zero);
+    scenes::make_ground(reg, scalar(0.5), 0);
+    const vector3 half{1, scalar(0.05), scalar(0.05)};
+    auto def = edyn::test::box_def(half, {0, scalar(0.13), 0});
+    def.angvel = {0, 0, -6};
+    auto bar = make_rigidbody(reg, def);
+    auto lowest = scalar(1);
+    for (int i = 0; i < 10; ++i) {
+        step_simulation(reg);
+        wait_for_simulation(reg);
+        auto orn = reg.get<orientation>(bar);
+        for (int c = 0; c < 8; ++c) {
+            vector3 corner{c & 1 ? half.x : -half.x, c & 2 ? half.y : -half.y, c & 4 ? half.z : -half.z};
+            lowest = std::min(lowest, (pos(bar) + rotate(orn, corner)).y);
+        }
+    }
+    // Without the contact, the end would be 2 cm into the ground after the first step.
+    EXPECT_GT(lowest, scalar(-0.005));
+}
+
 TEST_F(contact_motion, sliding_box_stops_after_v_squared_over_2_mu_g) {
     scenes::make_ground(reg, scalar(0.4), 0);
     auto def = edyn::test::box_def({scalar(0.5), scalar(0.5), scalar(0.5)}, {0, scalar(0.5), 0});

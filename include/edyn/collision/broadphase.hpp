@@ -4,6 +4,7 @@
 #include "edyn/collision/dynamic_tree.hpp"
 #include "edyn/collision/pair_map.hpp"
 #include "edyn/collision/should_collide.hpp"
+#include "edyn/ecs/delegate.hpp"
 #include "edyn/ecs/fwd.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
 #include <array>
@@ -12,6 +13,17 @@
 #include <vector>
 
 namespace edyn {
+
+/// What a body is expected to do in the coming step: its proxy's fat AABB is made to cover it.
+struct proxy_motion_estimate {
+    vector3 displacement{vector3_zero}; ///< Of its AABB, in the coming step (m).
+    scalar reach{0};                    ///< Growth of every side of its AABB by turning (m).
+};
+
+/// Estimates a body's motion in the coming step from its velocities, given its entity and its
+/// current AABB. Returns false where it cannot (a body moved by setting its position): its
+/// proxy then expects the displacement since the last update again.
+using motion_estimator = delegate<bool(const registry &, entity, const AABB &, proxy_motion_estimate &)>;
 
 /// Finds the pairs of bodies whose fattened AABBs overlap and keeps one manifold entity (with a
 /// contact_manifold component) per pair.
@@ -27,6 +39,11 @@ namespace edyn {
 /// lower entity value.
 class broadphase {
 public:
+    /// Updates in a row a proxy's fat AABB must stay too large for its motion (see
+    /// dynamic_tree::shrink_slack) before update() shrinks it: half a second at 60 Hz, longer
+    /// than a swinging body slows down at each end of its swing.
+    static constexpr std::uint16_t shrink_patience = 30;
+
     /// Creates an empty broadphase.
     /// @param margin Growth of every side of a proxy's AABB (m), as dynamic_tree's margin.
     /// @throws std::invalid_argument When `margin` is negative or not finite.
@@ -78,6 +95,8 @@ public:
     /// whose bodies' fat AABBs no longer overlap and creates manifolds for new overlapping pairs
     /// that should collide.
     ///
+    /// A proxy's fat AABB covers where its body is expected to be in the coming step, so that
+    /// two bodies that may touch in that step always have a manifold, whatever happened before.
     /// What only reads (which proxies left their fat AABBs, which pairs separated, the new pairs'
     /// search) runs on the scheduler's threads when one is given; the tree and the registry
     /// change on the calling thread, in the same order whatever the number of threads.
@@ -85,7 +104,10 @@ public:
     ///        created and destroyed in it.
     /// @param scheduler Threads to spread the reading over; null runs it all on the calling
     ///        thread.
-    void update(registry &registry, task_scheduler *scheduler = nullptr);
+    /// @param estimate Each dynamic body's motion in the coming step, called from the scheduler's
+    ///        threads; when empty (or where it returns false) a body is expected to move as it
+    ///        did since the last update, at most its own size.
+    void update(registry &registry, task_scheduler *scheduler = nullptr, motion_estimator estimate = {});
 
     /// The manifold entity of a pair of bodies, in either order.
     /// @param first One body.
@@ -128,6 +150,8 @@ private:
         dynamic_tree::node_id node;
         vector3 center; // of the tight AABB last seen, to predict motion
         bool queued;    // in `queue`, waiting for its pair search
+        // Updates in a row that found its fat AABB too large for its motion.
+        std::uint16_t oversized_updates{0};
     };
 
     struct locator {
@@ -151,7 +175,7 @@ private:
     // A dynamic proxy's motion in the current update.
     struct proxy_motion {
         AABB aabb;
-        vector3 displacement;
+        proxy_motion_estimate expected;
         bool reinsert;
     };
 
@@ -168,7 +192,7 @@ private:
     dynamic_tree &tree_of(bool is_static) noexcept { return trees[is_static ? 1 : 0]; }
     const dynamic_tree &tree_of(bool is_static) const noexcept { return trees[is_static ? 1 : 0]; }
     void destroy_record(registry &registry, std::size_t index);
-    void move_proxies(registry &registry, task_scheduler *scheduler);
+    void move_proxies(registry &registry, task_scheduler *scheduler, motion_estimator estimate);
     void destroy_separated(registry &registry, task_scheduler *scheduler);
     void destroy_pairs_of(registry &registry, entity e, bool is_static, AABB fat,
                           should_collide_func_t keep_if);

@@ -61,9 +61,9 @@ bool segment_intersects_aabb(const AABB &aabb, const vector3 &p0, const vector3 
 /// a surface-area-reducing rotation, which also keeps the height O(log n) for sorted insertion
 /// orders.
 ///
-/// A leaf stores its AABB grown by `margin` on every side (and stretched along the predicted
-/// displacement, see move()), so that small motions need no tree update. Queries test the fat
-/// AABBs: they may report leaves whose tight AABB does not touch the query box. Not
+/// A leaf stores its AABB grown by `margin` on every side (and by the reach and stretched along
+/// the predicted displacement, see move()), so that small motions need no tree update. Queries
+/// test the fat AABBs: they may report leaves whose tight AABB does not touch the query box. Not
 /// thread-safe: const queries may run concurrently, changes may not.
 class dynamic_tree {
 public:
@@ -72,16 +72,16 @@ public:
     /// The id of no node.
     static constexpr node_id null_node = -1;
     /// Default growth of every side of a leaf's AABB, in metres.
-    static constexpr scalar default_margin = scalar(0.1);
+    static constexpr scalar default_margin = scalar(0.03);
     /// A leaf's AABB is also stretched by this many times the displacement given to move(),
     /// so that a body at constant velocity is reinserted about every other step at most.
     static constexpr scalar displacement_multiplier = scalar(2);
-    /// A leaf still inside its fat AABB is reinserted all the same when that box reaches past
-    /// the one move() would make now by more than this many margins on a side (a fast body
-    /// slowed down), so that it does not keep spurious pairs. Within that slack it is kept: a
-    /// swinging body's speed rises and falls every swing, and at 4 margins 1 in 4 of a swinging
-    /// 100-link chain's reinsertions was such a shrink.
-    static constexpr scalar shrink_slack_margins = scalar(8);
+    /// move() reinserts a leaf that still covers its motion all the same when its fat AABB
+    /// reaches past the one move() would make now by more than this distance on a side (a fast
+    /// body slowed down), so that it does not keep spurious pairs. The broadphase waits until a
+    /// proxy has stayed that large for a while (a swinging body slows down at each end of every
+    /// swing).
+    static constexpr scalar shrink_slack = scalar(0.1);
 
     /// Creates an empty tree.
     /// @param margin Growth of every side of a leaf's AABB (m).
@@ -97,22 +97,47 @@ public:
     /// @param id A leaf's id (checked in debug builds only).
     void destroy(node_id id);
 
-    /// Updates a leaf whose tight AABB is now `aabb`, moving by about `displacement` per step.
+    /// Updates a leaf whose tight AABB is now `aabb`, expected to move by `displacement` and to
+    /// grow by at most `reach` on every side (by turning) in the coming step.
     ///
-    /// The leaf is reinserted only when `aabb` leaves its fat AABB or the fat AABB became much
-    /// larger than needed.
+    /// The leaf is reinserted only when its fat AABB no longer covers `aabb` grown by `reach` and
+    /// swept along `displacement`, or when it became much larger than needed (shrink_slack). A
+    /// reinserted leaf is stretched by displacement_multiplier times `displacement` and grown by
+    /// the margin or `reach`, whichever is larger, on every side.
+    /// Whether a leaf is kept thus depends on where it is and how it moves, not on how it got
+    /// there: two leaves whose swept boxes overlap always have overlapping fat boxes.
     /// @param id A leaf's id.
     /// @param aabb The leaf's new tight AABB (m).
-    /// @param displacement Expected motion per step (m), which stretches the fat AABB.
+    /// @param displacement Expected motion in the coming step (m), which stretches the fat AABB.
+    /// @param reach Expected growth of every side in the coming step (m), not negative.
     /// @return Whether the leaf was reinserted (its fat AABB changed).
-    bool move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero);
+    bool move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero, scalar reach = 0);
 
     /// Whether move() with these arguments would reinsert the leaf; changes nothing, so that
     /// many leaves can be asked at once from several threads.
     /// @param id A leaf's id.
     /// @param aabb The leaf's new tight AABB (m).
-    /// @param displacement Expected motion per step (m), as move() takes it.
-    bool needs_move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero) const noexcept;
+    /// @param displacement Expected motion in the coming step (m), as move() takes it.
+    /// @param reach Expected growth of every side in the coming step (m), as move() takes it.
+    bool needs_move(node_id id, const AABB &aabb, const vector3 &displacement = vector3_zero,
+                    scalar reach = 0) const noexcept;
+
+    /// Whether the leaf's fat AABB holds `aabb` grown by `reach` and swept along `displacement`:
+    /// move() with these arguments reinserts a leaf that does not, and one that does only when
+    /// its fat AABB is too large.
+    /// @param id A leaf's id.
+    /// @param aabb The leaf's new tight AABB (m).
+    /// @param displacement Expected motion in the coming step (m), as move() takes it.
+    /// @param reach Expected growth of every side in the coming step (m), as move() takes it.
+    bool covers(node_id id, const AABB &aabb, const vector3 &displacement, scalar reach) const noexcept;
+
+    /// Whether the leaf's fat AABB reaches past the one move() would make for these arguments by
+    /// more than shrink_slack on a side: move() reinserts such a leaf, though it covers its motion.
+    /// @param id A leaf's id.
+    /// @param aabb The leaf's new tight AABB (m).
+    /// @param displacement Expected motion in the coming step (m), as move() takes it.
+    /// @param reach Expected growth of every side in the coming step (m), as move() takes it.
+    bool oversized(node_id id, const AABB &aabb, const vector3 &displacement, scalar reach) const noexcept;
 
     /// Calls `fn(node_id)` for each leaf whose fat AABB intersects `aabb`.
     /// @param aabb The query box (m); touching counts.
@@ -216,7 +241,9 @@ private:
     void refit_node(node_id id) noexcept;
     void exchange(node_id x, node_id y) noexcept;
     void rotate(node_id a) noexcept;
-    AABB fatten(const AABB &aabb, const vector3 &displacement) const noexcept;
+    // `aabb` grown by `grow` on every side and stretched along `stretch`.
+    static AABB sweep(const AABB &aabb, const vector3 &stretch, scalar grow) noexcept;
+    AABB fatten(const AABB &aabb, const vector3 &displacement, scalar reach) const noexcept;
 
     std::vector<node> nodes;
     node_id root{null_node};

@@ -84,8 +84,8 @@ TEST_F(broadphase_fixture, manifold_lives_while_fat_aabbs_overlap) {
     auto m = bp.get_manifold(a, b);
     ASSERT_TRUE(registry.valid(m));
 
-    // Still inside b's fat box: no reinsertion, the pair stays.
-    move_to(b, cube({1.24f, 0, 0}));
+    // Its fat box still holds it and another step like this one: no reinsertion, the pair stays.
+    move_to(b, cube({1.19f, 0, 0}));
     bp.update(registry);
     EXPECT_EQ(bp.get_manifold(a, b), m);
     EXPECT_NEAR(bp.get_fat_aabb(b).min.x, 0.55, 1e-5);
@@ -104,6 +104,68 @@ TEST_F(broadphase_fixture, manifold_lives_while_fat_aabbs_overlap) {
     auto m2 = bp.get_manifold(a, b);
     EXPECT_TRUE(registry.valid(m2));
     EXPECT_EQ(manifold_components(), 1u);
+}
+
+// Moves every proxy given in `motion` by its displacement; bodies not in it are left to the
+// broadphase's own guess.
+struct fixed_motions {
+    std::vector<std::pair<entity, edyn::proxy_motion_estimate>> motion;
+    bool operator()(const edyn::registry &, entity e, const AABB &, edyn::proxy_motion_estimate &out) const {
+        for (auto &[body, estimate] : motion) {
+            if (body != e) continue;
+            out = estimate;
+            return true;
+        }
+        return false;
+    }
+};
+
+// Two new proxies 15 cm apart with 3 cm margins: their fat boxes lie apart, yet one closing in
+// at 10 cm a step has a manifold before the step it may touch in, and a turning one reaching
+// 13 cm out too. A proxy of the same box moving as fast but without an estimate has no history to
+// go by, and gets none.
+TEST(broadphase_test, a_proxy_covers_its_estimated_motion_from_its_first_update) {
+    for (int mode = 0; mode < 3; ++mode) {
+        edyn::registry registry;
+        broadphase bp{scalar(0.03)};
+        auto make_body = [&](const AABB &box) {
+            auto e = registry.create();
+            registry.emplace<AABB>(e, box);
+            bp.insert(e, box, false);
+            return e;
+        };
+        auto a = make_body(cube({0, 0, 0}));
+        auto b = make_body(cube({1.15f, 0, 0}));
+        fixed_motions motions;
+        if (mode == 0) motions.motion.push_back({a, {{scalar(0.1), 0, 0}, 0}});
+        if (mode == 1) motions.motion.push_back({a, {edyn::vector3_zero, scalar(0.13)}});
+        bp.update(registry, nullptr,
+                  edyn::motion_estimator{edyn::connect_arg<&fixed_motions::operator()>, motions});
+        EXPECT_EQ(bp.get_manifold(a, b) != edyn::null, mode < 2) << "mode " << mode;
+    }
+}
+
+// A proxy that sped up and stopped keeps its stretched box for shrink_patience updates (a
+// swinging body slows down at each end of its swing), then is shrunk to its margin.
+TEST(broadphase_test, an_oversized_box_is_shrunk_once_it_stays_oversized) {
+    edyn::registry registry;
+    broadphase bp{scalar(0.03)};
+    auto e = registry.create();
+    registry.emplace<AABB>(e, cube({0, 0, 0}));
+    bp.insert(e, cube({0, 0, 0}), false);
+    fixed_motions motions;
+    motions.motion.push_back({e, {{scalar(0.5), 0, 0}, 0}});
+    auto estimator = edyn::motion_estimator{edyn::connect_arg<&fixed_motions::operator()>, motions};
+    bp.update(registry, nullptr, estimator);
+    EXPECT_NEAR(bp.get_fat_aabb(e).max.x, 0.53 + 0.5 * edyn::dynamic_tree::displacement_multiplier, 1e-5);
+
+    motions.motion[0].second = {};
+    for (int i = 0; i < broadphase::shrink_patience; ++i) {
+        bp.update(registry, nullptr, estimator);
+        ASSERT_GT(bp.get_fat_aabb(e).max.x, scalar(1.5)) << "update " << i;
+    }
+    bp.update(registry, nullptr, estimator);
+    EXPECT_NEAR(bp.get_fat_aabb(e).max.x, 0.53, 1e-5);
 }
 
 TEST_F(broadphase_fixture, static_pairs) {

@@ -146,7 +146,7 @@ TEST(dynamic_tree_test, move_reinserts_only_when_leaving_fat_aabb) {
 TEST(dynamic_tree_test, needs_move_tells_whether_move_reinserts) {
     dynamic_tree tree(scalar(0.1));
     std::mt19937 rng(5);
-    std::uniform_real_distribution<scalar> step(-0.2f, 0.2f);
+    std::uniform_real_distribution<scalar> step(-0.06f, 0.06f);
     std::vector<std::pair<dynamic_tree::node_id, AABB>> leaves;
     for (int i = 0; i < 50; ++i) {
         AABB box{{scalar(i), 0, 0}, {scalar(i) + 1, 1, 1}};
@@ -191,7 +191,7 @@ TEST(dynamic_tree_test, move_stretches_along_displacement) {
 // slowing down a little is not reinserted; one that reaches further is.
 TEST(dynamic_tree_test, a_slowing_leaf_is_shrunk_only_past_the_slack) {
     const auto margin = scalar(0.1);
-    const auto slack = margin * dynamic_tree::shrink_slack_margins;
+    const auto slack = dynamic_tree::shrink_slack;
     const auto k = dynamic_tree::displacement_multiplier;
     dynamic_tree tree(margin);
     auto id = tree.create({{0, 0, 0}, {1, 1, 1}}, edyn::make_entity(1, 0));
@@ -203,12 +203,45 @@ TEST(dynamic_tree_test, a_slowing_leaf_is_shrunk_only_past_the_slack) {
     ASSERT_TRUE(tree.move(id, box, {near, 0, 0}));
     EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 3 + margin + k * near, 1e-5);
     EXPECT_FALSE(tree.needs_move(id, box, edyn::vector3_zero)) << "within the slack";
+    EXPECT_FALSE(tree.oversized(id, box, edyn::vector3_zero, 0));
 
     auto far = slack / k * scalar(1.1);
     box = AABB{{5, 0, 0}, {6, 1, 1}};
     ASSERT_TRUE(tree.move(id, box, {far, 0, 0}));
+    EXPECT_TRUE(tree.covers(id, box, edyn::vector3_zero, 0));
+    EXPECT_TRUE(tree.oversized(id, box, edyn::vector3_zero, 0));
     EXPECT_TRUE(tree.move(id, box, edyn::vector3_zero)) << "past the slack";
+    EXPECT_FALSE(tree.oversized(id, box, edyn::vector3_zero, 0));
     EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 6 + margin, 1e-5);
+    EXPECT_EQ(tree.validate(), "");
+}
+
+// The fat box must hold the coming step's motion, not only the body as it is now: a leaf well
+// inside its box is reinserted once its expected displacement or turning reaches out of it.
+TEST(dynamic_tree_test, a_leaf_is_reinserted_when_its_box_does_not_hold_its_next_step) {
+    const auto margin = scalar(0.03);
+    dynamic_tree tree(margin);
+    AABB box{{0, 0, 0}, {1, 1, 1}};
+    auto id = tree.create(box, edyn::make_entity(1, 0));
+
+    // Moving 2 cm or turning by 2 cm a step fits in the 3 cm margin; 5 cm does not.
+    EXPECT_TRUE(tree.covers(id, box, {0, scalar(-0.02), 0}, 0));
+    EXPECT_TRUE(tree.covers(id, box, edyn::vector3_zero, scalar(0.02)));
+    EXPECT_FALSE(tree.covers(id, box, {0, scalar(-0.05), 0}, 0));
+    EXPECT_FALSE(tree.covers(id, box, edyn::vector3_zero, scalar(0.05)));
+    EXPECT_FALSE(tree.covers(id, box, {0, scalar(-0.02), 0}, scalar(0.02)))
+        << "together they reach 4 cm down";
+    EXPECT_FALSE(tree.move(id, box, {0, scalar(-0.02), 0}, 0));
+
+    // Reinserted, it is stretched along the motion by the multiplier and grown by the reach
+    // where the reach exceeds the margin.
+    ASSERT_TRUE(tree.move(id, box, {0, scalar(-0.05), 0}, scalar(0.04)));
+    auto fat = tree.get_fat_aabb(id);
+    auto k = dynamic_tree::displacement_multiplier;
+    EXPECT_NEAR(fat.min.y, -0.04 - 0.05 * k, 1e-6);
+    EXPECT_NEAR(fat.max.y, 1.04, 1e-6);
+    EXPECT_NEAR(fat.min.x, -0.04, 1e-6);
+    EXPECT_TRUE(tree.covers(id, box, {0, scalar(-0.05), 0}, scalar(0.04)));
     EXPECT_EQ(tree.validate(), "");
 }
 

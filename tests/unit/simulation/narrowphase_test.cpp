@@ -103,9 +103,9 @@ TEST(narrowphase, rules_out_only_pairs_that_collide_would_give_no_point) {
 const box_shape spinning_box{vector3{scalar(0.5), scalar(0.3), scalar(0.2)}};
 constexpr scalar spin_rate = 3; // rad/s
 
-// The box's pair's separation threshold after one step beside a static slab, and the reach the
-// AABB's half diagonal would give.
-scalar spinning_box_threshold(const vector3 &com_offset, scalar &aabb_reach) {
+// The box's pair's separation threshold after one step beside a static slab `gap` below the box's
+// lowest corner, and the reach the AABB's half diagonal would give.
+scalar spinning_box_threshold(const vector3 &com_offset, scalar gap, scalar &aabb_reach) {
     auto orn = quaternion_axis_angle(normalize(vector3{1, 1, 1}), scalar(0.9));
     auto origin = vector3{0, 1, 0};
     registry reg;
@@ -119,13 +119,14 @@ scalar spinning_box_threshold(const vector3 &com_offset, scalar &aabb_reach) {
     def.angvel = rotate(orn, vector3{0, 0, spin_rate});
     if (com_offset != vector3_zero) def.center_of_mass = com_offset;
     make_rigidbody(reg, def);
-    // A static slab 8 cm below the box's lowest corner: near enough for the broadphase to pair
-    // them, too far for a contact point while that corner turns.
+    // A static slab near enough for the broadphase to pair them (the box's fat AABB reaches out
+    // by its turn in a step, the slab's by the 3 cm margin), too far for a contact point while
+    // that corner turns.
     auto aabb = shape_aabb(spinning_box, origin, orn);
     auto ground = rigidbody_def{};
     ground.kind = rigidbody_kind::rb_static;
     ground.shape = box_shape{vector3{2, scalar(0.1), 2}};
-    ground.position = vector3{0, aabb.min.y - scalar(0.18), 0};
+    ground.position = vector3{0, aabb.min.y - scalar(0.1) - gap, 0};
     make_rigidbody(reg, ground);
     step_simulation(reg);
 
@@ -143,14 +144,16 @@ TEST(narrowphase, a_spinning_body_reaches_as_far_as_its_bounding_sphere) {
     auto radius = shape_bounding_radius(spinning_box);
     auto per_metre = spin_rate * settings{}.fixed_dt; // m the spin carries a point 1 m out in a step
     auto aabb_reach = scalar(0);
-    auto threshold = spinning_box_threshold(vector3_zero, aabb_reach);
+    // The threshold is about 5.1 cm, the fat boxes reach 3.1 + 3 cm.
+    auto threshold = spinning_box_threshold(vector3_zero, scalar(0.056), aabb_reach);
     // The AABB's half diagonal would give a threshold at least 3 mm wider: the test tells them apart.
     ASSERT_GT(aabb_reach - radius, scalar(0.06));
     EXPECT_NEAR(threshold, contact_breaking_threshold + radius * per_metre, scalar(1e-6));
 
     // Off the origin, the centre of mass reaches farther from one side of the shape.
     auto offset = vector3{scalar(0.25), 0, 0};
-    threshold = spinning_box_threshold(offset, aabb_reach);
+    // The threshold is about 6.3 cm, the fat boxes reach 4.3 + 3 cm.
+    threshold = spinning_box_threshold(offset, scalar(0.068), aabb_reach);
     auto reach = std::min(radius + length(offset), aabb_reach);
     EXPECT_NEAR(threshold, contact_breaking_threshold + reach * per_metre, scalar(1e-6));
 }
