@@ -85,7 +85,10 @@ AABB dynamic_tree::sweep(const AABB &aabb, const vector3 &stretch, scalar grow) 
 }
 
 AABB dynamic_tree::fatten(const AABB &aabb, const vector3 &displacement, scalar reach) const noexcept {
-    return sweep(aabb, displacement * displacement_multiplier, std::max(reach, fat_margin));
+    auto length = edyn::length(displacement);
+    auto lookahead = std::min((displacement_multiplier - 1) * length, max_lookahead);
+    auto stretch = length > 0 ? displacement * (1 + lookahead / length) : vector3_zero;
+    return sweep(aabb, stretch, std::max(reach, fat_margin));
 }
 
 dynamic_tree::node_id dynamic_tree::create(const AABB &aabb, entity payload) {

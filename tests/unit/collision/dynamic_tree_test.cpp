@@ -174,17 +174,22 @@ TEST(dynamic_tree_test, needs_move_tells_whether_move_reinserts) {
 TEST(dynamic_tree_test, move_stretches_along_displacement) {
     dynamic_tree tree(scalar(0.1));
     auto id = tree.create({{0, 0, 0}, {1, 1, 1}}, edyn::make_entity(1, 0));
-    ASSERT_TRUE(tree.move(id, {{0.5f, 0, 0}, {1.5f, 1, 1}}, {0.5f, 0, -0.25f}));
+    // A slow body's box reaches ahead by displacement_multiplier of its steps.
+    ASSERT_TRUE(tree.move(id, {{0.5f, 0, 0}, {1.5f, 1, 1}}, {0.02f, 0, -0.01f}));
     auto fat = tree.get_fat_aabb(id);
     auto k = dynamic_tree::displacement_multiplier;
-    EXPECT_NEAR(fat.max.x, 1.6 + 0.5 * k, 1e-5);
+    EXPECT_NEAR(fat.max.x, 1.6 + 0.02 * k, 1e-5);
     EXPECT_NEAR(fat.min.x, 0.4, 1e-5);
-    EXPECT_NEAR(fat.min.z, -0.1 - 0.25 * k, 1e-5);
+    EXPECT_NEAR(fat.min.z, -0.1 - 0.01 * k, 1e-5);
     EXPECT_NEAR(fat.max.z, 1.1, 1e-5);
 
+    // A fast one's by its step and max_lookahead more.
+    ASSERT_TRUE(tree.move(id, {{3, 0, 0}, {4, 1, 1}}, {2, 0, 0}));
+    EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 4.1 + 2 + dynamic_tree::max_lookahead, 1e-5);
+
     // Once the body stops, the stretched box is far too large and gets shrunk back.
-    EXPECT_TRUE(tree.move(id, {{0.5f, 0, 0}, {1.5f, 1, 1}}, {0, 0, 0}));
-    EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 1.6, 1e-5);
+    EXPECT_TRUE(tree.move(id, {{3, 0, 0}, {4, 1, 1}}, {0, 0, 0}));
+    EXPECT_NEAR(tree.get_fat_aabb(id).max.x, 4.1, 1e-5);
 }
 
 // A box that reaches past what the motion asks for by less than the slack is kept: a body
@@ -237,8 +242,9 @@ TEST(dynamic_tree_test, a_leaf_is_reinserted_when_its_box_does_not_hold_its_next
     // where the reach exceeds the margin.
     ASSERT_TRUE(tree.move(id, box, {0, scalar(-0.05), 0}, scalar(0.04)));
     auto fat = tree.get_fat_aabb(id);
-    auto k = dynamic_tree::displacement_multiplier;
-    EXPECT_NEAR(fat.min.y, -0.04 - 0.05 * k, 1e-6);
+    auto ahead =
+        std::min((dynamic_tree::displacement_multiplier - 1) * scalar(0.05), dynamic_tree::max_lookahead);
+    EXPECT_NEAR(fat.min.y, -0.04 - 0.05 - ahead, 1e-6);
     EXPECT_NEAR(fat.max.y, 1.04, 1e-6);
     EXPECT_NEAR(fat.min.x, -0.04, 1e-6);
     EXPECT_TRUE(tree.covers(id, box, {0, scalar(-0.05), 0}, scalar(0.04)));

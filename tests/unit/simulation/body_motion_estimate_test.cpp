@@ -1,7 +1,7 @@
+#include <cmath>
 #include <edyn/edyn.hpp>
 #include <edyn/simulation/body_motion_estimate.hpp>
 #include <gtest/gtest.h>
-#include <cmath>
 #include <limits>
 
 // What the step tells the broadphase of a body's coming motion.
