@@ -106,8 +106,8 @@ TEST_F(broadphase_fixture, manifold_lives_while_fat_aabbs_overlap) {
     EXPECT_EQ(manifold_components(), 1u);
 }
 
-// Moves every proxy given in `motion` by its displacement; bodies not in it are left to the
-// broadphase's own guess.
+// An estimator that gives the bodies listed in `motion` their listed motion and leaves the others
+// to the broadphase's own guess.
 struct fixed_motions {
     std::vector<std::pair<entity, edyn::proxy_motion_estimate>> motion;
     bool operator()(const edyn::registry &, entity e, const AABB &, edyn::proxy_motion_estimate &out) const {
