@@ -80,18 +80,13 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
     auto &centre = registry.get<position>(e); // of mass
     body.origin = rigidbody_origin(centre, body.orientation, registry.try_get<center_of_mass>(e));
     // An upper bound of how fast any of its points moves: its centre of mass's speed, and the
-    // spin times the farthest a point of the shape lies from that centre. Of two bounds of that
-    // distance the smaller is taken: the radius of the sphere about the origin that holds the
-    // shape, and the AABB's half diagonal (meshes have no finite sphere), each plus the centre's
-    // offset from the sphere's or the box's centre. (The box's alone is no bound where the centre
-    // of mass is off the box's centre, and it is up to 1.67 times the sphere's for a turned cube.)
+    // spin times the farthest a point of the shape lies from that centre.
     auto *lv = registry.try_get<linvel>(e);
     auto *av = registry.try_get<angvel>(e);
     if (lv && av) {
-        auto by_sphere = body.bounding_radius + distance(body.origin, centre);
-        auto by_aabb = length(aabb_half_extents(aabb)) + distance(aabb_center(aabb), centre);
         body.linvel = *lv;
-        body.spin_reach = length(*av) * std::min(by_sphere, by_aabb);
+        body.spin_reach =
+            length(*av) * shape_reach(aabb, centre, body.bounding_radius, distance(body.origin, centre));
     }
     return body;
 }

@@ -19,7 +19,8 @@ void run_step(registry &registry) {
 
     // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones;
     //    every body's fat box covers where its velocities take it in this step.
-    world.broadphase.update(registry, world.scheduler.get(), body_motion_estimator(settings));
+    const body_motion_estimate estimate(settings, registry);
+    world.broadphase.update(registry, world.scheduler.get(), estimate.estimator());
     //    Paged meshes load the pages bodies are over and near, and unload those left behind.
     update_paged_meshes(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.

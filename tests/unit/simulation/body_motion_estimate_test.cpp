@@ -53,7 +53,8 @@ TEST(body_motion_estimate, a_dynamic_body_moves_by_its_velocity_and_turns_out_by
     EXPECT_NEAR(estimate.reach, 0, 1e-6);
 
     // Through the bound estimator, as the step uses it.
-    auto estimator = body_motion_estimator(s);
+    const body_motion_estimate source(s, reg);
+    auto estimator = source.estimator();
     proxy_motion_estimate again;
     ASSERT_TRUE(estimator(reg, e, aabb, again));
     EXPECT_NEAR(again.reach, half_diagonal - scalar(0.25), 1e-6);
