@@ -3,7 +3,9 @@
 
 #include "edyn/collision/collide.hpp"
 #include <benchmark/benchmark.h>
+#include <random>
 #include <span>
+#include <vector>
 
 namespace edyn::bench {
 
@@ -26,6 +28,24 @@ void run_collide(benchmark::State &state, const A &a, const B &b,
 template<typename A, typename B>
 void run_collide(benchmark::State &state, const A &a, const B &b, const collision_context &ctx) {
     run_collide(state, a, b, std::span<const collision_context>(&ctx, 1));
+}
+
+// 64 placements of B about A, both turned at random, B's centre in a random direction at
+// `min_offset` to `max_offset` times `reach` from A's: from overlapping to just apart when
+// `reach` is about the sum of the shapes' bounding radii.
+inline std::vector<collision_context> random_placements(scalar reach, scalar min_offset, scalar max_offset,
+                                                        unsigned seed = 5) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<scalar> g(0, 1);
+    std::uniform_real_distribution<scalar> offset(min_offset, max_offset);
+    std::vector<collision_context> out;
+    for (int i = 0; i < 64; ++i) {
+        auto orn_a = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
+        auto orn_b = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
+        auto dir = normalize(vector3{g(rng), g(rng), g(rng)});
+        out.push_back({dir * (offset(rng) * reach), orn_a, vector3_zero, orn_b, scalar(0.02)});
+    }
+    return out;
 }
 
 } // namespace edyn::bench

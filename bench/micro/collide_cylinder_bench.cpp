@@ -1,7 +1,6 @@
 #include "collide_bench_support.hpp"
 #include "edyn/collision/collide.hpp"
 #include <benchmark/benchmark.h>
-#include <random>
 #include <vector>
 
 // collide() for the pairs with a cylinder: a resting contact (the common steady state) and a
@@ -11,28 +10,9 @@ namespace {
 
 using namespace edyn;
 
-std::vector<collision_context> random_placements(scalar reach, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::normal_distribution<scalar> g(0, 1);
-    std::uniform_real_distribution<scalar> offset(scalar(0.5), scalar(0.95));
-    std::vector<collision_context> out;
-    for (int i = 0; i < 64; ++i) {
-        auto orn_a = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
-        auto orn_b = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
-        auto dir = normalize(vector3{g(rng), g(rng), g(rng)});
-        out.push_back({dir * (offset(rng) * reach), orn_a, vector3_zero, orn_b, scalar(0.02)});
-    }
-    return out;
-}
-
-template<typename A, typename B>
-void run_resting(benchmark::State &state, const A &a, const B &b, const collision_context &ctx) {
-    bench::run_collide(state, a, b, ctx);
-}
-
 template<typename A, typename B>
 void run_random(benchmark::State &state, const A &a, const B &b, scalar reach) {
-    auto placements = random_placements(reach, 5);
+    auto placements = bench::random_placements(reach, scalar(0.5), scalar(0.95));
     bench::run_collide(state, a, b, std::span<const collision_context>(placements));
 }
 
@@ -41,43 +21,44 @@ const auto upright = quaternion_identity;
 const auto lying = quaternion_axis_angle(vector3_z, half_pi);
 
 void cylinder_cylinder_stacked(benchmark::State &state) {
-    run_resting(state, cylinder, cylinder, {{0.1f, 0.995f, 0}, upright, vector3_zero, upright, 0.02f});
+    bench::run_collide(state, cylinder, cylinder, {{0.1f, 0.995f, 0}, upright, vector3_zero, upright, 0.02f});
 }
 void cylinder_cylinder_crossed(benchmark::State &state) {
-    run_resting(state, cylinder, cylinder,
-                {{0, 0.595f, 0}, lying, vector3_zero, quaternion_axis_angle(vector3_x, half_pi), 0.02f});
+    bench::run_collide(
+        state, cylinder, cylinder,
+        {{0, 0.595f, 0}, lying, vector3_zero, quaternion_axis_angle(vector3_x, half_pi), 0.02f});
 }
 void cylinder_cylinder_random(benchmark::State &state) { run_random(state, cylinder, cylinder, scalar(1.2)); }
 
 const box_shape box{{0.5f, 0.3f, 0.4f}};
 void cylinder_box_standing(benchmark::State &state) {
-    run_resting(state, cylinder, box, {{0.1f, 0.795f, 0}, upright, vector3_zero, upright, 0.02f});
+    bench::run_collide(state, cylinder, box, {{0.1f, 0.795f, 0}, upright, vector3_zero, upright, 0.02f});
 }
 void cylinder_box_lying(benchmark::State &state) {
-    run_resting(state, cylinder, box, {{0.1f, 0.595f, 0}, lying, vector3_zero, upright, 0.02f});
+    bench::run_collide(state, cylinder, box, {{0.1f, 0.595f, 0}, lying, vector3_zero, upright, 0.02f});
 }
 void cylinder_box_random(benchmark::State &state) { run_random(state, cylinder, box, scalar(1.3)); }
 void box_cylinder_random(benchmark::State &state) { run_random(state, box, cylinder, scalar(1.3)); }
 
 const capsule_shape capsule{scalar(0.2), scalar(0.4), coordinate_axis::x};
 void capsule_cylinder_lying(benchmark::State &state) {
-    run_resting(state, capsule, cylinder, {{0.1f, 0.695f, 0}, upright, vector3_zero, upright, 0.02f});
+    bench::run_collide(state, capsule, cylinder, {{0.1f, 0.695f, 0}, upright, vector3_zero, upright, 0.02f});
 }
 void cylinder_capsule_random(benchmark::State &state) { run_random(state, cylinder, capsule, scalar(1.2)); }
 
 const sphere_shape sphere{scalar(0.3)};
 void sphere_cylinder_resting(benchmark::State &state) {
-    run_resting(state, sphere, cylinder, {{0.1f, 0.795f, 0}, upright, vector3_zero, upright, 0.02f});
+    bench::run_collide(state, sphere, cylinder, {{0.1f, 0.795f, 0}, upright, vector3_zero, upright, 0.02f});
 }
 void cylinder_sphere_random(benchmark::State &state) { run_random(state, cylinder, sphere, scalar(0.9)); }
 
 const plane_shape plane{vector3_y, 0};
 void cylinder_plane_standing(benchmark::State &state) {
-    run_resting(state, cylinder, plane, {{0, 0.495f, 0}, upright, vector3_zero, upright, 0.02f});
+    bench::run_collide(state, cylinder, plane, {{0, 0.495f, 0}, upright, vector3_zero, upright, 0.02f});
 }
 void cylinder_plane_tilted(benchmark::State &state) {
-    run_resting(state, cylinder, plane,
-                {{0, 0.5f, 0}, quaternion_axis_angle(vector3_x, 0.3f), vector3_zero, upright, 0.02f});
+    bench::run_collide(state, cylinder, plane,
+                       {{0, 0.5f, 0}, quaternion_axis_angle(vector3_x, 0.3f), vector3_zero, upright, 0.02f});
 }
 
 } // namespace

@@ -2,7 +2,6 @@
 #include "edyn/collision/collide.hpp"
 #include <benchmark/benchmark.h>
 #include <cmath>
-#include <random>
 #include <vector>
 
 // collide() for the pairs with a polyhedron: resting contacts (the common steady state) and a
@@ -35,28 +34,9 @@ polyhedron_shape hull20() {
     return polyhedron_shape(points);
 }
 
-std::vector<collision_context> random_placements(scalar reach, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::normal_distribution<scalar> g(0, 1);
-    std::uniform_real_distribution<scalar> offset(scalar(0.7), scalar(1.05));
-    std::vector<collision_context> out;
-    for (int i = 0; i < 64; ++i) {
-        auto orn_a = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
-        auto orn_b = normalize(quaternion{g(rng), g(rng), g(rng), g(rng)});
-        auto dir = normalize(vector3{g(rng), g(rng), g(rng)});
-        out.push_back({dir * (offset(rng) * reach), orn_a, vector3_zero, orn_b, scalar(0.02)});
-    }
-    return out;
-}
-
-template<typename A, typename B>
-void run_resting(benchmark::State &state, const A &a, const B &b, const collision_context &ctx) {
-    bench::run_collide(state, a, b, ctx);
-}
-
 template<typename A, typename B>
 void run_random(benchmark::State &state, const A &a, const B &b, scalar reach) {
-    auto placements = random_placements(reach, 5);
+    auto placements = bench::random_placements(reach, scalar(0.7), scalar(1.05));
     bench::run_collide(state, a, b, std::span<const collision_context>(placements));
 }
 
@@ -68,34 +48,39 @@ const auto turn = quaternion_axis_angle(vector3_y, 0.3f);
 // A resting 5 mm into the other's top face, turned about the vertical.
 const collision_context stacked{{0.1f, 0.595f, 0}, turn, vector3_zero, quaternion_identity, 0.02f};
 
-void polyhedron_polyhedron_cube_resting(benchmark::State &state) { run_resting(state, cube, cube, stacked); }
+void polyhedron_polyhedron_cube_resting(benchmark::State &state) {
+    bench::run_collide(state, cube, cube, stacked);
+}
 void polyhedron_polyhedron_cube_random(benchmark::State &state) {
     run_random(state, cube, cube, scalar(1.1));
 }
 void polyhedron_polyhedron_hull20_resting(benchmark::State &state) {
     // The hull's lowest vertex region on the other's top: a vertex or edge contact.
-    run_resting(state, hull, hull, {{0.05f, 0.755f, 0}, turn, vector3_zero, quaternion_identity, 0.02f});
+    bench::run_collide(state, hull, hull,
+                       {{0.05f, 0.755f, 0}, turn, vector3_zero, quaternion_identity, 0.02f});
 }
 void polyhedron_polyhedron_hull20_random(benchmark::State &state) {
     run_random(state, hull, hull, scalar(0.85));
 }
 // The same resting and random pairs as boxes, for reference.
 void polyhedron_reference_box_box_resting(benchmark::State &state) {
-    run_resting(state, cube_box, cube_box, stacked);
+    bench::run_collide(state, cube_box, cube_box, stacked);
 }
 void polyhedron_reference_box_box_random(benchmark::State &state) {
     run_random(state, cube_box, cube_box, scalar(1.1));
 }
 
-void polyhedron_box_cube_resting(benchmark::State &state) { run_resting(state, cube, cube_box, stacked); }
+void polyhedron_box_cube_resting(benchmark::State &state) {
+    bench::run_collide(state, cube, cube_box, stacked);
+}
 void polyhedron_box_hull20_random(benchmark::State &state) {
     run_random(state, hull, cube_box, scalar(0.95));
 }
 
 const sphere_shape sphere{0.3f};
 void polyhedron_sphere_hull20_resting(benchmark::State &state) {
-    run_resting(state, hull, sphere,
-                {vector3_zero, quaternion_identity, {0.05f, 0.67f, 0}, quaternion_identity, 0.02f});
+    bench::run_collide(state, hull, sphere,
+                       {vector3_zero, quaternion_identity, {0.05f, 0.67f, 0}, quaternion_identity, 0.02f});
 }
 void polyhedron_sphere_hull20_random(benchmark::State &state) {
     run_random(state, hull, sphere, scalar(0.75));
@@ -103,10 +88,10 @@ void polyhedron_sphere_hull20_random(benchmark::State &state) {
 
 const plane_shape ground{vector3_y, 0};
 void polyhedron_plane_cube_resting(benchmark::State &state) {
-    run_resting(state, cube, ground, {{0, 0.295f, 0}, turn, vector3_zero, quaternion_identity, 0.02f});
+    bench::run_collide(state, cube, ground, {{0, 0.295f, 0}, turn, vector3_zero, quaternion_identity, 0.02f});
 }
 void polyhedron_plane_hull20_random(benchmark::State &state) {
-    auto placements = random_placements(scalar(0.4), 9);
+    auto placements = bench::random_placements(scalar(0.4), scalar(0.7), scalar(1.05), 9);
     std::size_t i = 0, points = 0;
     for (auto _ : state) {
         collision_result result;
