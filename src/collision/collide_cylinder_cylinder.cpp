@@ -2,6 +2,7 @@
 #include "edyn/collision/detail/cylinder_geom.hpp"
 #include "edyn/math/geom.hpp"
 #include "edyn/math/math.hpp"
+#include <utility>
 
 // Cylinder–cylinder by separating axes with exact projections. The candidate axes are those
 // along which two features can be closest: either cap normal (a cap face against anything), the
@@ -12,7 +13,9 @@
 // pairs. Axes from point pairs are kept as witnesses (see sat_result). Axes that cannot beat the
 // best one found are skipped: while the shapes are apart a rim pair counts only if each rim
 // reaches the other's Voronoi region; while they overlap, only if the rims come closer than the
-// current depth.
+// current depth. While they are apart, the search ends at the first witness, which is then the
+// closest pair (sat_result::closest_pair_found); to find one early, each cap facing the other
+// shape gets a witness of its own and the rims are taken nearest first.
 namespace edyn {
 
 namespace {
@@ -86,33 +89,89 @@ scalar circle_circle_distance_bound(const vector3 &ca, const vector3 &na, scalar
     return bound;
 }
 
-// Rims of `rims` against the axis segment of `other`: where a rim runs past the other's side.
-void test_rims_against_axis(cylinder_pair &pair, const placed_cylinder &rims, const placed_cylinder &other,
-                            bool rims_are_a) {
+// Rim `cap` of `rims` against the axis segment of `other`: where the rim runs past the other's side.
+void test_rim_against_axis(cylinder_pair &pair, const placed_cylinder &rims, unsigned cap,
+                           const placed_cylinder &other, bool rims_are_a) {
     auto p0 = other.center + other.axis * other.half_length;
     auto p1 = other.center - other.axis * other.half_length;
-    for (unsigned cap = 0; cap < 2; ++cap) {
-        auto center = detail::cylinder_cap_center(rims, cap);
-        scalar t[detail::max_circle_segment_critical];
-        auto count = detail::circle_segment_critical_points(center, rims.axis, rims.radius, p0, p1, t);
-        for (std::size_t i = 0; i < count; ++i) {
-            auto q = lerp(p0, p1, t[i]);
-            auto p = closest_point_circle(center, rims.axis, rims.radius, q);
-            // The closest rim point, and the farthest (the other critical point: deep overlaps).
-            vector3 rim_points[2] = {p, center * 2 - p};
-            for (int r = 0; r < 2; ++r) {
-                vector3 sides[2];
-                side_points(other, q, rim_points[r], sides);
-                for (int k = 0; k < 2; ++k) {
-                    auto deep = r + k > 0;
-                    if (rims_are_a) {
-                        pair.test_pair(rim_points[r], sides[k], deep);
-                    } else {
-                        pair.test_pair(sides[k], rim_points[r], deep);
-                    }
+    auto center = detail::cylinder_cap_center(rims, cap);
+    scalar t[detail::max_circle_segment_critical];
+    auto count = detail::circle_segment_critical_points(center, rims.axis, rims.radius, p0, p1, t);
+    for (std::size_t i = 0; i < count; ++i) {
+        auto q = lerp(p0, p1, t[i]);
+        auto p = closest_point_circle(center, rims.axis, rims.radius, q);
+        // The closest rim point, and the farthest (the other critical point: deep overlaps).
+        vector3 rim_points[2] = {p, center * 2 - p};
+        for (int r = 0; r < 2; ++r) {
+            vector3 sides[2];
+            side_points(other, q, rim_points[r], sides);
+            for (int k = 0; k < 2; ++k) {
+                auto deep = r + k > 0;
+                if (rims_are_a) {
+                    pair.test_pair(rim_points[r], sides[k], deep);
+                } else {
+                    pair.test_pair(sides[k], rim_points[r], deep);
                 }
             }
         }
+    }
+}
+
+// The four rims against the other's axis, nearest rim first, until a closest pair is known.
+void test_rims_against_axes(cylinder_pair &pair) {
+    struct rim {
+        const placed_cylinder *rims, *other;
+        unsigned cap;
+        bool rims_are_a;
+        scalar reach; // from the cap's centre to the other's centre: the order to take them in
+    };
+    rim order[4];
+    std::size_t n = 0;
+    for (unsigned cap = 0; cap < 2; ++cap) {
+        order[n++] = {&pair.a, &pair.b, cap, true,
+                      distance_sqr(detail::cylinder_cap_center(pair.a, cap), pair.b.center)};
+        order[n++] = {&pair.b, &pair.a, cap, false,
+                      distance_sqr(detail::cylinder_cap_center(pair.b, cap), pair.a.center)};
+    }
+    for (std::size_t i = 1; i < n; ++i) {
+        for (auto j = i; j > 0 && order[j].reach < order[j - 1].reach; --j)
+            std::swap(order[j], order[j - 1]);
+    }
+    for (auto &r : order) {
+        if (pair.sat.closest_pair_found()) return;
+        test_rim_against_axis(pair, *r.rims, r.cap, *r.other, r.rims_are_a);
+    }
+}
+
+// A witness for the cap of `cyl` that faces `other`: the point of `other` nearest to the cap's
+// plane and its projection on the cap, when that falls on the cap. Then, if the two are apart,
+// they are the closest pair, which the cap's axis alone cannot show.
+void test_cap_witness(cylinder_pair &pair, const placed_cylinder &cyl, const placed_cylinder &other,
+                      bool cyl_is_a) {
+    auto n = cyl.axis;
+    if (dot(other.center - cyl.center, n) < 0) n = -n;
+    auto cap_center = cyl.center + n * cyl.half_length;
+    // The part of `other` lowest along n: a point of its rim, or of its cap when that lies flat.
+    auto c = dot(other.axis, n);
+    auto end = other.center - other.axis * (c > 0 ? other.half_length : -other.half_length);
+    auto radial = project_plane(n, other.axis);
+    vector3 near;
+    if (length_sqr(radial) > scalar(1e-12)) {
+        near = end - normalize(radial) * other.radius;
+    } else {
+        // Flat: the point of its cap nearest to above the cap centre.
+        auto offset = project_plane(cap_center - end, other.axis);
+        auto len = length(offset);
+        near = len > other.radius ? end + offset * (other.radius / len) : end + offset;
+    }
+    auto height = dot(near - cap_center, n);
+    if (!(height > 0)) return;
+    auto on_cap = near - n * height;
+    if (distance_sqr(on_cap, cap_center) > cyl.radius * cyl.radius) return;
+    if (cyl_is_a) {
+        pair.test_pair(on_cap, near);
+    } else {
+        pair.test_pair(near, on_cap);
     }
 }
 
@@ -169,10 +228,14 @@ void collide(const cylinder_shape &a, const cylinder_shape &b, const collision_c
     }
     if (pair.sat.distance > ctx.threshold) return;
 
-    test_rims_against_axis(pair, pair.a, pair.b, true);
-    test_rims_against_axis(pair, pair.b, pair.a, false);
+    // A cap's witness can only hold where its axis already shows the shapes apart.
+    if (pair.sat.distance > 0) {
+        test_cap_witness(pair, pair.a, pair.b, true);
+        test_cap_witness(pair, pair.b, pair.a, false);
+    }
+    test_rims_against_axes(pair);
     if (pair.sat.distance > ctx.threshold) return;
-    test_rim_pairs(pair, scalar(1e-4) * size);
+    if (!pair.sat.closest_pair_found()) test_rim_pairs(pair, scalar(1e-4) * size);
     pair.sat.finish();
     if (pair.sat.distance > ctx.threshold) return;
 

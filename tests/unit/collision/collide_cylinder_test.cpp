@@ -1,6 +1,7 @@
 #include "collide_test_helpers.hpp"
 #include "edyn/collision/collide.hpp"
 #include "edyn/collision/detail/box_features.hpp"
+#include "edyn/collision/detail/cylinder_geom.hpp"
 #include "edyn/math/geom.hpp"
 #include "edyn/math/math.hpp"
 #include "edyn/math/transform.hpp"
@@ -599,6 +600,50 @@ TEST(CollideCylinderCylinder, RigidMotionOfBothLeavesTheResult) {
             expect_vec_near(r.point[j].pivotA, reference.point[j].pivotA, 1e-3);
         }
     }
+}
+
+// A witness proves its pair closest once the shapes' separation along the pair's own axis equals
+// the pair's distance: no axis separates the shapes more, no two points lie closer. The cylinder
+// routines stop looking for axes there.
+TEST(CylinderSeparatingAxes, AWitnessOfApartShapesIsTheirClosestPair) {
+    detail::sat_result sat;
+    sat.witness_tolerance = scalar(1e-5);
+    EXPECT_FALSE(sat.closest_pair_found());
+    // Points 0.1 apart along y, the shapes separated along y by 0.05 only: points elsewhere are
+    // closer than these two.
+    sat.test_witness(vector3_y, scalar(0.1), scalar(1), scalar(0.5), scalar(0.45));
+    EXPECT_FALSE(sat.closest_pair_found());
+    EXPECT_NEAR(sat.distance, 0.05f, 1e-6);
+    // Separated along y by their whole distance: the closest pair.
+    sat.test_witness(vector3_y, scalar(0.1), scalar(1), scalar(0.5), scalar(0.4));
+    EXPECT_TRUE(sat.closest_pair_found());
+    // Overlapping shapes have no closest pair to prove: the deepest pair is a witness, not a proof.
+    detail::sat_result overlap;
+    overlap.witness_tolerance = scalar(1e-5);
+    overlap.test_witness(vector3_y, scalar(0.02), scalar(-0.88), scalar(0.5), scalar(0.4));
+    EXPECT_LT(overlap.witness_distance, 0);
+    EXPECT_FALSE(overlap.closest_pair_found());
+}
+
+TEST(CollideCylinderCylinder, ApartPairsStopAtTheirClosestPair) {
+    // Apart by 1 cm in two of the ways a closest pair is proved: cap over cap (the cap's own
+    // witness) and a tilted rim beside the other's side (a rim against the other's axis).
+    cylinder_shape a{scalar(0.3), scalar(0.5), coordinate_axis::y};
+    auto gap = scalar(0.01);
+    // Cap over cap, offset: the gap along y.
+    auto r = run(a, a, make_ctx({0.2f, 1 + gap, 0}, quaternion_identity, vector3_zero, quaternion_identity));
+    ASSERT_EQ(r.num_points, 4u);
+    EXPECT_NEAR(min_distance(r), gap, tol);
+    expect_vec_near(r.point[0].normal, vector3_y, tol);
+    // A's rim beside B's side: A tilted about z, so that its point of least x is on its upper rim,
+    // placed at x = 0.3 + gap beside the middle of B's side.
+    auto tilt = quaternion_axis_angle(vector3_z, 0.4f);
+    auto rim_low = rotate(tilt, vector3{-0.3f, 0.5f, 0});
+    auto s =
+        run(a, a, make_ctx(vector3{0.3f + gap, 0, 0} - rim_low, tilt, vector3_zero, quaternion_identity));
+    ASSERT_GT(s.num_points, 0u);
+    EXPECT_NEAR(min_distance(s), gap, tol);
+    expect_vec_near(s.point[0].normal, vector3_x, 1e-4);
 }
 
 TEST(CollideCylinderCylinder, RandomAgainstBruteForce) {

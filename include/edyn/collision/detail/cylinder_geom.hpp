@@ -129,6 +129,12 @@ struct sat_result {
         }
     }
 
+    // Whether the shapes are apart and a witness pair is known to be closest: its points lie
+    // `len` apart and the shapes are separated along their axis by `len` within the witness
+    // tolerance, and the shapes' distance lies between those two. Every axis not tested yet
+    // separates them by at most that distance, so no later test can do more than tie.
+    bool closest_pair_found() const noexcept { return witness_distance > 0; }
+
     void finish() noexcept {
         if (witness_distance >= distance - witness_tolerance) {
             normal = witness_normal;
