@@ -123,7 +123,7 @@ void test_rims_against_axes(cylinder_pair &pair) {
         const placed_cylinder *rims, *other;
         unsigned cap;
         bool rims_are_a;
-        scalar reach; // from the cap's centre to the other's centre: the order to take them in
+        scalar centre_distance_sqr; // from the cap's centre to the other's centre: the order
     };
     rim order[4];
     std::size_t n = 0;
@@ -134,7 +134,7 @@ void test_rims_against_axes(cylinder_pair &pair) {
                       distance_sqr(detail::cylinder_cap_center(pair.b, cap), pair.a.center)};
     }
     for (std::size_t i = 1; i < n; ++i) {
-        for (auto j = i; j > 0 && order[j].reach < order[j - 1].reach; --j)
+        for (auto j = i; j > 0 && order[j].centre_distance_sqr < order[j - 1].centre_distance_sqr; --j)
             std::swap(order[j], order[j - 1]);
     }
     for (auto &r : order) {
@@ -151,18 +151,14 @@ void test_cap_witness(cylinder_pair &pair, const placed_cylinder &cyl, const pla
     auto n = cyl.axis;
     if (dot(other.center - cyl.center, n) < 0) n = -n;
     auto cap_center = cyl.center + n * cyl.half_length;
-    // The part of `other` lowest along n: a point of its rim, or of its cap when that lies flat.
-    auto c = dot(other.axis, n);
-    auto end = other.center - other.axis * (c > 0 ? other.half_length : -other.half_length);
-    auto radial = project_plane(n, other.axis);
+    // The part of `other` lowest along n: its support point, or, when its cap lies flat (any
+    // point of the cap is one), the cap's point nearest to above this cap's centre.
     vector3 near;
-    if (length_sqr(radial) > scalar(1e-12)) {
-        near = end - normalize(radial) * other.radius;
+    if (length_sqr(project_plane(n, other.axis)) > scalar(1e-12)) {
+        near = detail::cylinder_support_point(other, -n);
     } else {
-        // Flat: the point of its cap nearest to above the cap centre.
-        auto offset = project_plane(cap_center - end, other.axis);
-        auto len = length(offset);
-        near = len > other.radius ? end + offset * (other.radius / len) : end + offset;
+        auto end = detail::cylinder_cap_center(other, dot(other.axis, n) > 0 ? 1 : 0);
+        near = closest_point_disc(end, other.axis, other.radius, cap_center);
     }
     auto height = dot(near - cap_center, n);
     if (!(height > 0)) return;
