@@ -48,6 +48,14 @@ inline std::vector<collision_context> random_placements(scalar reach, scalar min
     return out;
 }
 
+// Times collide(a, b) over random_placements(reach, min_offset, max_offset).
+template<typename A, typename B>
+void run_collide_random(benchmark::State &state, const A &a, const B &b, scalar reach, scalar min_offset,
+                        scalar max_offset) {
+    auto placements = random_placements(reach, min_offset, max_offset);
+    run_collide(state, a, b, std::span<const collision_context>(placements));
+}
+
 } // namespace edyn::bench
 
 #endif // EDYN_BENCH_MICRO_COLLIDE_BENCH_SUPPORT_HPP

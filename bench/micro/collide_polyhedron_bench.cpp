@@ -34,12 +34,6 @@ polyhedron_shape hull20() {
     return polyhedron_shape(points);
 }
 
-template<typename A, typename B>
-void run_random(benchmark::State &state, const A &a, const B &b, scalar reach) {
-    auto placements = bench::random_placements(reach, scalar(0.7), scalar(1.05));
-    bench::run_collide(state, a, b, std::span<const collision_context>(placements));
-}
-
 const vector3 cube_he{0.5f, 0.3f, 0.4f};
 const box_shape cube_box{cube_he};
 const auto cube = box_hull(cube_he);
@@ -52,7 +46,7 @@ void polyhedron_polyhedron_cube_resting(benchmark::State &state) {
     bench::run_collide(state, cube, cube, stacked);
 }
 void polyhedron_polyhedron_cube_random(benchmark::State &state) {
-    run_random(state, cube, cube, scalar(1.1));
+    bench::run_collide_random(state, cube, cube, scalar(1.1), scalar(0.7), scalar(1.05));
 }
 void polyhedron_polyhedron_hull20_resting(benchmark::State &state) {
     // The hull's lowest vertex region on the other's top: a vertex or edge contact.
@@ -60,30 +54,30 @@ void polyhedron_polyhedron_hull20_resting(benchmark::State &state) {
                        {{0.05f, 0.755f, 0}, turn, vector3_zero, quaternion_identity, 0.02f});
 }
 void polyhedron_polyhedron_hull20_random(benchmark::State &state) {
-    run_random(state, hull, hull, scalar(0.85));
+    bench::run_collide_random(state, hull, hull, scalar(0.85), scalar(0.7), scalar(1.05));
 }
 // The same resting and random pairs as boxes, for reference.
 void polyhedron_reference_box_box_resting(benchmark::State &state) {
     bench::run_collide(state, cube_box, cube_box, stacked);
 }
 void polyhedron_reference_box_box_random(benchmark::State &state) {
-    run_random(state, cube_box, cube_box, scalar(1.1));
+    bench::run_collide_random(state, cube_box, cube_box, scalar(1.1), scalar(0.7), scalar(1.05));
 }
 
 void polyhedron_box_cube_resting(benchmark::State &state) {
     bench::run_collide(state, cube, cube_box, stacked);
 }
 void polyhedron_box_hull20_random(benchmark::State &state) {
-    run_random(state, hull, cube_box, scalar(0.95));
+    bench::run_collide_random(state, hull, cube_box, scalar(0.95), scalar(0.7), scalar(1.05));
 }
 
-const sphere_shape sphere{0.3f};
+const sphere_shape ball{0.3f};
 void polyhedron_sphere_hull20_resting(benchmark::State &state) {
-    bench::run_collide(state, hull, sphere,
+    bench::run_collide(state, hull, ball,
                        {vector3_zero, quaternion_identity, {0.05f, 0.67f, 0}, quaternion_identity, 0.02f});
 }
 void polyhedron_sphere_hull20_random(benchmark::State &state) {
-    run_random(state, hull, sphere, scalar(0.75));
+    bench::run_collide_random(state, hull, ball, scalar(0.75), scalar(0.7), scalar(1.05));
 }
 
 const plane_shape ground{vector3_y, 0};

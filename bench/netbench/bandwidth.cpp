@@ -41,19 +41,19 @@ constexpr double article_final_kbps = 256;
 
 edyn::scalar grid_half_width(unsigned grid) { return edyn::scalar(grid - 1) * cube_spacing / 2; }
 
-struct scene {
+struct cube_grid {
     std::vector<edyn::entity> cubes;
     edyn::entity player{edyn::null};
 };
 
-scene build_scene(edyn::registry &server, unsigned grid) {
+cube_grid build_scene(edyn::registry &server, unsigned grid) {
     auto ground = edyn::rigidbody_def{};
     ground.kind = edyn::rigidbody_kind::rb_static;
     ground.shape = edyn::plane_shape{{0, 1, 0}, 0};
     auto g = edyn::make_rigidbody(server, ground);
     server.emplace<edyn::networked_tag>(g);
 
-    auto out = scene{};
+    auto out = cube_grid{};
     auto half_width = grid_half_width(grid);
     for (unsigned i = 0; i < grid; ++i) {
         for (unsigned j = 0; j < grid; ++j) {
@@ -75,13 +75,6 @@ scene build_scene(edyn::registry &server, unsigned grid) {
     out.player = edyn::make_rigidbody(server, def);
     server.emplace<edyn::networked_tag>(out.player);
     return out;
-}
-
-std::size_t awake_bodies(const edyn::registry &server) {
-    auto count = std::size_t{0};
-    for (auto e : server.view<edyn::dynamic_tag>(edyn::exclude<edyn::sleeping_tag>))
-        count += e != edyn::null;
-    return count;
 }
 
 // Awake bodies that are not moving (below the speeds at which a body may sleep): kept awake by
@@ -166,18 +159,6 @@ void add_breakdown(const phase_figures &p, results &out) {
     if (m.unparsed > 0) row("snapshot: motion pool, not in the expected layout", 0, "", m.unparsed);
 }
 
-void add_metric(results &out, std::string name, double value, std::string unit, std::string target = {},
-                int met = -1) {
-    auto m = metric{};
-    m.scenario = "bandwidth";
-    m.name = std::move(name);
-    m.value = value;
-    m.unit = std::move(unit);
-    m.target = std::move(target);
-    m.met = met;
-    out.metrics.push_back(std::move(m));
-}
-
 struct bandwidth_run {
     traffic join;
     phase_figures moving;
@@ -249,28 +230,29 @@ bandwidth_run run_phases(const options &opt, session &s, client_end &c, edyn::en
 void report_sizes(const bandwidth_run &run, results &out) {
     auto snapshot_sizes = as_doubles(run.moving.sent.snapshot_sizes);
     if (!snapshot_sizes.empty()) {
-        add_metric(out, "snapshot size while moving, median", median(snapshot_sizes), "bytes");
-        add_metric(out, "snapshot size while moving, max",
+        add_metric(out, "bandwidth", "snapshot size while moving, median", median(snapshot_sizes), "bytes");
+        add_metric(out, "bandwidth", "snapshot size while moving, max",
                    *std::max_element(snapshot_sizes.begin(), snapshot_sizes.end()), "bytes");
         // A transport fragments larger packets, and losing any fragment loses the snapshot.
         auto over = std::count_if(snapshot_sizes.begin(), snapshot_sizes.end(),
                                   [](double size) { return size > datagram_bytes; });
-        add_metric(out, "snapshots while moving larger than one 1,200-byte datagram",
+        add_metric(out, "bandwidth", "snapshots while moving larger than one 1,200-byte datagram",
                    100 * double(over) / double(snapshot_sizes.size()), "%");
     }
     auto rest_sizes = as_doubles(run.rest.sent.snapshot_sizes);
-    if (!rest_sizes.empty()) add_metric(out, "snapshot size at rest, median", median(rest_sizes), "bytes");
+    if (!rest_sizes.empty())
+        add_metric(out, "bandwidth", "snapshot size at rest, median", median(rest_sizes), "bytes");
     auto &moving = run.moving.sent;
     auto snapshots = moving.kind_packets[packet_kind<edyn::packet::registry_snapshot>()];
     if (snapshots == 0) return;
-    add_metric(out, "bodies per snapshot while moving, mean",
+    add_metric(out, "bandwidth", "bodies per snapshot while moving, mean",
                double(moving.snapshot_entities) / double(snapshots), "bodies");
     auto &m = moving.motion;
     if (m.values > 0 && moving.snapshot_entities > 0) {
         auto per_value =
             double(m.position_in_list + m.position + m.orientation + m.linvel + m.angvel) / double(m.values);
         auto per_entity = double(moving.snapshot_entity_bytes) / double(moving.snapshot_entities);
-        add_metric(out, "bytes per body per snapshot while moving (motion value + entity id)",
+        add_metric(out, "bandwidth", "bytes per body per snapshot while moving (motion value + entity id)",
                    per_value + per_entity, "bytes");
     }
 }
@@ -281,28 +263,30 @@ void report(const bandwidth_run &run, results &out) {
     auto rest_bps = bytes_per_second(run.rest);
     std::fprintf(stderr, "moving %.0f kbit/s, at rest %.0f B/s\n", moving_bps * 8 / 1000, rest_bps);
 
-    add_metric(out, "server→client while moving", moving_bps * 8 / 1000, "kbit/s");
-    add_metric(out, "server→client while moving", moving_bps * 8 / 1e6, "Mbit/s", "≤ 1 Mbit/s",
+    add_metric(out, "bandwidth", "server→client while moving", moving_bps * 8 / 1000, "kbit/s");
+    add_metric(out, "bandwidth", "server→client while moving", moving_bps * 8 / 1e6, "Mbit/s", "≤ 1 Mbit/s",
                moving_bps * 8 <= 1e6 ? 1 : 0);
-    add_metric(out, "server→client at rest", rest_bps / 1024, "KiB/s", "≤ 8 KiB/s",
+    add_metric(out, "bandwidth", "server→client at rest", rest_bps / 1024, "KiB/s", "≤ 8 KiB/s",
                rest_bps <= 8 * 1024 ? 1 : 0);
-    add_metric(out, "server→client at rest", rest_bps * 8 / 1000, "kbit/s");
+    add_metric(out, "bandwidth", "server→client at rest", rest_bps * 8 / 1000, "kbit/s");
     report_sizes(run, out);
-    add_metric(out, "awake bodies while moving, median", median(moving.awake), "bodies");
-    add_metric(out, "awake bodies while moving, max",
+    add_metric(out, "bandwidth", "awake bodies while moving, median", median(moving.awake), "bodies");
+    add_metric(out, "bandwidth", "awake bodies while moving, max",
                *std::max_element(moving.awake.begin(), moving.awake.end()), "bodies");
-    add_metric(out, "awake bodies not moving (below the sleep speeds) while moving, median",
+    add_metric(out, "bandwidth", "awake bodies not moving (below the sleep speeds) while moving, median",
                median(moving.awake_still), "bodies");
-    add_metric(out, "client: update_network_client + its extrapolation per frame while moving, median",
+    add_metric(out, "bandwidth",
+               "client: update_network_client + its extrapolation per frame while moving, median",
                median(moving.client_network_ms), "ms");
-    add_metric(out, "client: update() per frame while moving, median", median(moving.client_physics_ms),
-               "ms");
-    add_metric(out, "joining: create_entity bytes",
+    add_metric(out, "bandwidth", "client: update() per frame while moving, median",
+               median(moving.client_physics_ms), "ms");
+    add_metric(out, "bandwidth", "joining: create_entity bytes",
                double(run.join.kind_bytes[packet_kind<edyn::packet::create_entity>()]), "bytes");
-    add_metric(out, "seconds to rest after the drive stopped", run.settle_seconds,
+    add_metric(out, "bandwidth", "seconds to rest after the drive stopped", run.settle_seconds,
                run.settled ? "s" : "s (not all asleep)");
-    add_metric(out, "reference: the article's uncompressed snapshots", article_uncompressed_mbps, "Mbit/s");
-    add_metric(out, "reference: the article's final result", article_final_kbps, "kbit/s");
+    add_metric(out, "bandwidth", "reference: the article's uncompressed snapshots", article_uncompressed_mbps,
+               "Mbit/s");
+    add_metric(out, "bandwidth", "reference: the article's final result", article_final_kbps, "kbit/s");
     add_breakdown(moving, out);
     add_breakdown(run.rest, out);
 }

@@ -34,4 +34,11 @@ void set_drive(edyn::registry &client, edyn::entity local, const edyn::vector3 &
     if (client.all_of<edyn::sleeping_tag>(local)) edyn::wake_up_entity(client, local);
 }
 
+std::size_t awake_bodies(const edyn::registry &server) {
+    auto count = std::size_t{0};
+    for (auto e : server.view<edyn::dynamic_tag>(edyn::exclude<edyn::sleeping_tag>))
+        count += e != edyn::null;
+    return count;
+}
+
 } // namespace edyn_netbench

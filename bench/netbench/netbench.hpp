@@ -100,6 +100,14 @@ void setup_registry(edyn::registry &registry);
 // does not keep the body awake.
 void set_drive(edyn::registry &client, edyn::entity local, const edyn::vector3 &force);
 
+// Bodies of `server` that are dynamic and awake.
+std::size_t awake_bodies(const edyn::registry &server);
+
+// Appends a figure of `scenario` to `out`; `met` is 1 or 0 where the figure has a target, -1 where
+// it has none.
+void add_metric(results &out, const char *scenario, std::string name, double value, std::string unit,
+                std::string target = {}, int met = -1);
+
 // The value below which a fraction `p` (in [0, 1]) of `values` lie, interpolated between ranks.
 double percentile(std::vector<double> values, double p);
 double median(std::vector<double> values);

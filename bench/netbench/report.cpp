@@ -9,6 +9,18 @@
 
 namespace edyn_netbench {
 
+void add_metric(results &out, const char *scenario, std::string name, double value, std::string unit,
+                std::string target, int met) {
+    auto m = metric{};
+    m.scenario = scenario;
+    m.name = std::move(name);
+    m.value = value;
+    m.unit = std::move(unit);
+    m.target = std::move(target);
+    m.met = met;
+    out.metrics.push_back(std::move(m));
+}
+
 double percentile(std::vector<double> values, double p) {
     if (values.empty()) return 0;
     std::sort(values.begin(), values.end());

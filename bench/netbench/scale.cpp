@@ -65,13 +65,6 @@ edyn::scalar build_scene(edyn::registry &server, unsigned bodies, bool come_to_r
     return side;
 }
 
-std::size_t awake_bodies(const edyn::registry &server) {
-    auto count = std::size_t{0};
-    for (auto e : server.view<edyn::dynamic_tag>(edyn::exclude<edyn::sleeping_tag>))
-        count += e != edyn::null;
-    return count;
-}
-
 struct step_sample {
     double network_ms;
     double sink_ms;
@@ -87,18 +80,6 @@ double mean(const std::vector<double> &values) {
     return values.empty() ? 0 : sum / double(values.size());
 }
 
-void add_metric(results &out, std::string name, double value, std::string unit, std::string target = {},
-                int met = -1) {
-    auto m = metric{};
-    m.scenario = "scale";
-    m.name = std::move(name);
-    m.value = value;
-    m.unit = std::move(unit);
-    m.target = std::move(target);
-    m.met = met;
-    out.metrics.push_back(std::move(m));
-}
-
 // Every snapshot is due on the same steps (every client joined at once and has the same
 // rate), so the server's networking costs either almost nothing or everything: its median
 // depends on which kind of step is the more numerous. The mean is what it costs over time.
@@ -112,22 +93,22 @@ void report_steps(results &out, const std::vector<step_sample> &steps) {
         physics.push_back(s.physics_ms);
         if (s.sent_snapshots) snapshot_steps.push_back(s.network_ms);
     }
-    add_metric(out, "update_network_server per step, median", median(network), "ms");
-    add_metric(out, "update_network_server per step, p95", percentile(network, 0.95), "ms");
-    add_metric(out, "update_network_server per step, mean", mean(network), "ms");
-    add_metric(out, "update_network_server in the steps that send snapshots, median", median(snapshot_steps),
-               "ms");
-    add_metric(out, "of which encoding the packets (in the packet sink), mean", mean(sink), "ms");
-    add_metric(out, "update() per step, median", median(physics), "ms");
-    add_metric(out, "update() per step, p95", percentile(physics, 0.95), "ms");
-    add_metric(out, "update() per step, mean", mean(physics), "ms");
+    add_metric(out, "scale", "update_network_server per step, median", median(network), "ms");
+    add_metric(out, "scale", "update_network_server per step, p95", percentile(network, 0.95), "ms");
+    add_metric(out, "scale", "update_network_server per step, mean", mean(network), "ms");
+    add_metric(out, "scale", "update_network_server in the steps that send snapshots, median",
+               median(snapshot_steps), "ms");
+    add_metric(out, "scale", "of which encoding the packets (in the packet sink), mean", mean(sink), "ms");
+    add_metric(out, "scale", "update() per step, median", median(physics), "ms");
+    add_metric(out, "scale", "update() per step, p95", percentile(physics, 0.95), "ms");
+    add_metric(out, "scale", "update() per step, mean", mean(physics), "ms");
     auto ratio = [&](double a, double b) { return b > 0 ? a / b : 0; };
-    add_metric(out, "networking / physics, medians", ratio(median(network), median(physics)), "");
+    add_metric(out, "scale", "networking / physics, medians", ratio(median(network), median(physics)), "");
     auto p95 = ratio(percentile(network, 0.95), percentile(physics, 0.95));
-    add_metric(out, "networking / physics, p95s", p95, "", "< 1", p95 < 1 ? 1 : 0);
+    add_metric(out, "scale", "networking / physics, p95s", p95, "", "< 1", p95 < 1 ? 1 : 0);
     auto means = ratio(mean(network), mean(physics));
-    add_metric(out, "networking / physics, means", means, "", "< 1", means < 1 ? 1 : 0);
-    add_metric(out, "networking / physics, snapshot steps' median / physics median",
+    add_metric(out, "scale", "networking / physics, means", means, "", "< 1", means < 1 ? 1 : 0);
+    add_metric(out, "scale", "networking / physics, snapshot steps' median / physics median",
                ratio(median(snapshot_steps), median(physics)), "");
 
     // Once the world has come to rest (--scale-rest), physics costs little; the interest and
@@ -141,11 +122,12 @@ void report_steps(results &out, const std::vector<step_sample> &steps) {
     if (rest_network.size() < min_resting_steps) return;
     auto suffix =
         " at rest (" + std::to_string(rest_network.size()) + " steps with 1% of the bodies awake or fewer)";
-    add_metric(out, "update_network_server per step, mean," + suffix, mean(rest_network), "ms");
-    add_metric(out, "update_network_server per step, p95," + suffix, percentile(rest_network, 0.95), "ms");
-    add_metric(out, "update() per step, mean," + suffix, mean(rest_physics), "ms");
-    add_metric(out, "networking / physics, means," + suffix, ratio(mean(rest_network), mean(rest_physics)),
-               "");
+    add_metric(out, "scale", "update_network_server per step, mean," + suffix, mean(rest_network), "ms");
+    add_metric(out, "scale", "update_network_server per step, p95," + suffix, percentile(rest_network, 0.95),
+               "ms");
+    add_metric(out, "scale", "update() per step, mean," + suffix, mean(rest_physics), "ms");
+    add_metric(out, "scale", "networking / physics, means," + suffix,
+               ratio(mean(rest_network), mean(rest_physics)), "");
 }
 
 } // namespace
@@ -208,9 +190,9 @@ void run_scale(const options &opt, results &out) {
     auto seconds = double(frames) * s.dt();
 
     report_steps(out, steps);
-    add_metric(out, "update_network_server, slowest step of the first 0.5 s (clients join)", join_network_ms,
-               "ms");
-    add_metric(out, "server→client per client, mean over the run",
+    add_metric(out, "scale", "update_network_server, slowest step of the first 0.5 s (clients join)",
+               join_network_ms, "ms");
+    add_metric(out, "scale", "server→client per client, mean over the run",
                double(bytes) * 8 / 1000 / seconds / double(opt.scale_clients), "kbit/s");
     auto network_ms = 0.0, physics_ms = 0.0;
     for (auto &x : steps) {

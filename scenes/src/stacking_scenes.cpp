@@ -1,4 +1,5 @@
 #include "edyn_scenes/scenes.hpp"
+#include "static_box.hpp"
 #include <cmath>
 
 namespace edyn::scenes {
@@ -13,14 +14,7 @@ rigidbody_def stacked_body(const vector3 &half_extents, scalar mass) {
     return def;
 }
 
-entity make_static_box(registry &registry, const vector3 &half_extents, const vector3 &position) {
-    rigidbody_def def;
-    def.kind = rigidbody_kind::rb_static;
-    def.material->friction = scalar(0.6);
-    def.shape = box_shape{half_extents};
-    def.position = position;
-    return make_rigidbody(registry, def);
-}
+using detail::make_static_box;
 
 } // namespace
 
@@ -88,12 +82,14 @@ spheres_in_box_scene make_spheres_in_box(registry &registry, unsigned layers, un
 
     const auto w = scene.inner_half_width, h = scene.wall_height;
     scene.container.push_back(make_static_box(registry, {w + 2 * thickness, thickness, w + 2 * thickness},
-                                              origin - vector3{0, thickness, 0}));
+                                              origin - vector3{0, thickness, 0}, scalar(0.6)));
     for (scalar side : {scalar(-1), scalar(1)}) {
         scene.container.push_back(make_static_box(registry, {w + 2 * thickness, h / 2, thickness},
-                                                  origin + vector3{0, h / 2, side * (w + thickness)}));
+                                                  origin + vector3{0, h / 2, side * (w + thickness)},
+                                                  scalar(0.6)));
         scene.container.push_back(make_static_box(registry, {thickness, h / 2, w},
-                                                  origin + vector3{side * (w + thickness), h / 2, 0}));
+                                                  origin + vector3{side * (w + thickness), h / 2, 0},
+                                                  scalar(0.6)));
     }
 
     rigidbody_def def;

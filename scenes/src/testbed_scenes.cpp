@@ -1,22 +1,14 @@
 // Scenes first written for the testbed: billiards, a hinged door, sliders, a vehicle and a
 // gallery of every shape. Like the others, they take no drawing or input code.
 #include "edyn_scenes/scenes.hpp"
+#include "static_box.hpp"
 #include <cmath>
 
 namespace edyn::scenes {
 
 namespace {
 
-entity make_static_box(registry &registry, const vector3 &half_extents, const vector3 &position,
-                       scalar friction = scalar(0.5), scalar restitution = 0) {
-    rigidbody_def def;
-    def.kind = rigidbody_kind::rb_static;
-    def.shape = box_shape{half_extents};
-    def.position = position;
-    def.material->friction = friction;
-    def.material->restitution = restitution;
-    return make_rigidbody(registry, def);
-}
+using detail::make_static_box;
 
 } // namespace
 
@@ -62,7 +54,7 @@ door_scene make_hinge_door(registry &registry, const vector3 &origin) {
     door_scene scene;
     const vector3 door_half{scalar(0.5), 1, scalar(0.04)};
     scene.post = make_static_box(registry, {scalar(0.06), scalar(1.1), scalar(0.06)},
-                                 origin + vector3{0, scalar(1.1), 0});
+                                 origin + vector3{0, scalar(1.1), 0}, scalar(0.5));
     rigidbody_def def;
     def.mass = 20;
     def.shape = box_shape{door_half};
@@ -93,7 +85,7 @@ slider_scene make_sliders(registry &registry, const vector3 &origin) {
     for (unsigned i = 0; i < 3; ++i) {
         auto z = scalar(i) * scalar(1.2);
         auto rail = make_static_box(registry, {travel + scalar(0.3), scalar(0.05), scalar(0.05)},
-                                    origin + vector3{0, 1, z});
+                                    origin + vector3{0, 1, z}, scalar(0.5));
         rigidbody_def def;
         def.mass = 2;
         def.shape = box_shape{scalar(0.25), scalar(0.2), scalar(0.2)};

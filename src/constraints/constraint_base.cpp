@@ -1,4 +1,5 @@
 #include "edyn/constraints/constraint_base.hpp"
+#include "../shapes/invalid_argument.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
 #include "edyn/math/transform.hpp"
 #include <cmath>
@@ -9,18 +10,7 @@ namespace edyn {
 
 namespace {
 
-std::string str(scalar s) {
-    std::ostringstream out;
-    out << s;
-    return out.str();
-}
-
-// Written through a stream: GCC 12 at -O3 warns falsely (-Wrestrict) on "(" + std::string.
-std::string str(const vector3 &v) {
-    std::ostringstream out;
-    out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
-    return out.str();
-}
+using detail::concat;
 
 } // namespace
 
@@ -29,21 +19,21 @@ void throw_constraint_error(const char *type, const char *field, const std::stri
 }
 
 void check_constraint_finite(const char *type, const char *field, const vector3 &v) {
-    if (!isfinite(v)) throw_constraint_error(type, field, "must be finite, got " + str(v));
+    if (!isfinite(v)) throw_constraint_error(type, field, "must be finite, got " + concat(v));
 }
 
 void check_constraint_finite(const char *type, const char *field, scalar s) {
-    if (!std::isfinite(s)) throw_constraint_error(type, field, "must be finite, got " + str(s));
+    if (!std::isfinite(s)) throw_constraint_error(type, field, "must be finite, got " + concat(s));
 }
 
 void check_constraint_non_negative(const char *type, const char *field, scalar s) {
     if (!(s >= 0) || !std::isfinite(s)) {
-        throw_constraint_error(type, field, "must be finite and not negative, got " + str(s));
+        throw_constraint_error(type, field, "must be finite and not negative, got " + concat(s));
     }
 }
 
 void check_constraint_unit_interval(const char *type, const char *field, scalar s) {
-    if (!(s >= 0 && s <= 1)) throw_constraint_error(type, field, "must be in [0, 1], got " + str(s));
+    if (!(s >= 0 && s <= 1)) throw_constraint_error(type, field, "must be in [0, 1], got " + concat(s));
 }
 
 void check_constraint_orthonormal(const char *type, const char *field, const matrix3x3 &m) {
@@ -55,8 +45,8 @@ void check_constraint_orthonormal(const char *type, const char *field, const mat
               std::abs(dot(c1, c2)) < tolerance;
     if (!ok) {
         throw_constraint_error(type, field,
-                               "must be an orthonormal basis, got columns " + str(c0) + ", " + str(c1) +
-                                   ", " + str(c2));
+                               "must be an orthonormal basis, got columns " + concat(c0) + ", " + concat(c1) +
+                                   ", " + concat(c2));
     }
 }
 
@@ -66,8 +56,8 @@ void check_constraint_range(const char *type, const char *min_field, scalar min,
     check_constraint_finite(type, max_field, max);
     if (min > max) {
         throw_constraint_error(type, min_field,
-                               "must not exceed " + std::string(max_field) + ", got " + str(min) + " > " +
-                                   str(max));
+                               "must not exceed " + std::string(max_field) + ", got " + concat(min) + " > " +
+                                   concat(max));
     }
 }
 

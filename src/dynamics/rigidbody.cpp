@@ -1,4 +1,5 @@
 #include "edyn/dynamics/rigidbody.hpp"
+#include "../shapes/invalid_argument.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/dynamics/body_limits.hpp"
 #include "edyn/dynamics/mass.hpp"
@@ -21,24 +22,14 @@ namespace edyn {
 
 namespace {
 
+using detail::concat;
+
 [[noreturn]] void fail(const char *function, const char *field, const std::string &problem) {
     throw std::invalid_argument(std::string(function) + ": " + field + " " + problem);
 }
 
-std::string str(scalar value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
-std::string str(const vector3 &v) {
-    std::ostringstream out;
-    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return out.str();
-}
-
 void check_finite(const char *function, const char *field, const vector3 &v) {
-    if (!isfinite(v)) fail(function, field, "must be finite, got " + str(v));
+    if (!isfinite(v)) fail(function, field, "must be finite, got " + concat(v));
 }
 
 void check_orientation(const char *function, const quaternion &q) {
@@ -52,13 +43,12 @@ void check_orientation(const char *function, const quaternion &q) {
 
 void check_mass(const char *function, scalar mass) {
     if (!(mass > 0) || !std::isfinite(mass))
-        fail(function, "mass", "must be positive and finite for a dynamic body, got " + str(mass));
+        fail(function, "mass", "must be positive and finite for a dynamic body, got " + concat(mass));
     if (!(mass >= min_body_mass && mass <= max_body_mass))
         fail(function, "mass",
-             "must be in [" + str(min_body_mass) + ", " + str(max_body_mass) + "] kg, got " + str(mass));
+             "must be in [" + concat(min_body_mass) + ", " + concat(max_body_mass) + "] kg, got " +
+                 concat(mass));
 }
-
-std::string str(const matrix3x3 &m) { return "(" + str(m[0]) + ", " + str(m[1]) + ", " + str(m[2]) + ")"; }
 
 // Symmetric to float rounding: a tensor rotated into object space by the program is rarely
 // exactly symmetric.
@@ -78,7 +68,7 @@ bool is_positive_definite(const matrix3x3 &m) {
 void check_inertia(const char *function, const matrix3x3 &inertia) {
     auto d = get_diagonal(inertia);
     if (!isfinite(inertia) || !is_symmetric(inertia) || !is_positive_definite(inertia)) {
-        fail(function, "inertia", "must be finite, symmetric and positive definite, got " + str(inertia));
+        fail(function, "inertia", "must be finite, symmetric and positive definite, got " + concat(inertia));
     }
     auto low = std::min({d.x, d.y, d.z});
     auto high = std::max({d.x, d.y, d.z});
@@ -90,15 +80,16 @@ void check_inertia(const char *function, const matrix3x3 &inertia) {
     if (!(low >= min_body_inertia && high <= max_body_inertia) || !isfinite(inv) ||
         !(inv_high <= scalar(1.0001) / min_body_inertia)) {
         fail(function, "inertia",
-             "must have principal moments in [" + str(min_body_inertia) + ", " + str(max_body_inertia) +
-                 "] kg*m^2, got " + str(inertia));
+             "must have principal moments in [" + concat(min_body_inertia) + ", " + concat(max_body_inertia) +
+                 "] kg*m^2, got " + concat(inertia));
     }
 }
 
 void check_gravity(const char *function, const vector3 &gravity) {
     check_finite(function, "gravity", gravity);
     if (!(length(gravity) <= max_gravity))
-        fail(function, "gravity", "must be at most " + str(max_gravity) + " m/s^2 long, got " + str(gravity));
+        fail(function, "gravity",
+             "must be at most " + concat(max_gravity) + " m/s^2 long, got " + concat(gravity));
 }
 
 struct mass_properties {
@@ -210,7 +201,7 @@ void validate_rigidbody_def(const rigidbody_def &def) {
     if (def.restitution) {
         if (!def.material) fail(fn, "restitution", "is set on a sensor, which has no material");
         if (!(*def.restitution >= 0 && *def.restitution <= 1))
-            fail(fn, "restitution", "must be in [0, 1], got " + str(*def.restitution));
+            fail(fn, "restitution", "must be in [0, 1], got " + concat(*def.restitution));
     }
     if (def.shape) {
         validate_shape(*def.shape);

@@ -1,6 +1,7 @@
 #ifndef EDYN_SRC_SHAPES_INVALID_ARGUMENT_HPP
 #define EDYN_SRC_SHAPES_INVALID_ARGUMENT_HPP
 
+#include "edyn/math/matrix3x3.hpp"
 #include "edyn/math/quaternion.hpp"
 #include <sstream>
 #include <stdexcept>
@@ -11,6 +12,10 @@ namespace edyn::detail {
 
 inline std::ostream &operator<<(std::ostream &os, const vector3 &v) {
     return os << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+}
+
+inline std::ostream &operator<<(std::ostream &os, const matrix3x3 &m) {
+    return os << '(' << m[0] << ", " << m[1] << ", " << m[2] << ')';
 }
 
 inline std::ostream &operator<<(std::ostream &os, const quaternion &q) {

@@ -24,14 +24,14 @@ contact_manifold main_side(const worker_context &w, const contact_manifold &mani
     return copy;
 }
 
-void on_construct_manifold(worker_context &w, registry &reg, entity e) {
+void record_manifold_created(worker_context &w, registry &reg, entity e) {
     auto &record = w.message.records.emplace_back();
     record.type = worker_record::kind::manifold_created;
     record.worker_entity = e;
     record.manifold = main_side(w, reg.get<contact_manifold>(e));
 }
 
-void on_destroy_manifold(worker_context &w, registry &, entity e) {
+void record_manifold_destroyed(worker_context &w, registry &, entity e) {
     auto &record = w.message.records.emplace_back();
     record.type = worker_record::kind::manifold_destroyed;
     record.worker_entity = e;
@@ -55,12 +55,12 @@ void on_point_destroyed(worker_context &w, entity m, contact_manifold::id_type i
     record_event(w, contact_events::kind::point_destroyed, m, id);
 }
 
-void on_construct_sleeping(worker_context &w, registry &, entity e) { w.slept.push_back(e); }
+void record_slept(worker_context &w, registry &, entity e) { w.slept.push_back(e); }
 
 // A body made static moves no more and no later step sends it: it goes once, as it stands.
-void on_construct_static(worker_context &w, registry &, entity e) { w.fixed.push_back(e); }
+void record_made_static(worker_context &w, registry &, entity e) { w.fixed.push_back(e); }
 
-void on_destroy_sleeping(worker_context &w, registry &reg, entity e) {
+void record_woke(worker_context &w, registry &reg, entity e) {
     if (auto *remote = reg.try_get<remote_entity>(e)) w.message.woke.push_back(remote->value);
 }
 
@@ -71,11 +71,11 @@ worker_context::worker_context() {
     config.execution_mode = execution_mode::sequential;
     attach(reg, config);
     reg.on_destroy<remote_entity>().connect<&on_destroy_remote>(*this);
-    reg.on_construct<contact_manifold>().connect<&on_construct_manifold>(*this);
-    reg.on_destroy<contact_manifold>().connect<&on_destroy_manifold>(*this);
-    reg.on_construct<sleeping_tag>().connect<&on_construct_sleeping>(*this);
-    reg.on_construct<static_tag>().connect<&on_construct_static>(*this);
-    reg.on_destroy<sleeping_tag>().connect<&on_destroy_sleeping>(*this);
+    reg.on_construct<contact_manifold>().connect<&record_manifold_created>(*this);
+    reg.on_destroy<contact_manifold>().connect<&record_manifold_destroyed>(*this);
+    reg.on_construct<sleeping_tag>().connect<&record_slept>(*this);
+    reg.on_construct<static_tag>().connect<&record_made_static>(*this);
+    reg.on_destroy<sleeping_tag>().connect<&record_woke>(*this);
 }
 
 void worker_context::send_events(bool on) {

@@ -43,7 +43,7 @@ std::uint32_t roll_axes(const registry &registry, entity body, const vector3 &no
 }
 
 // Bodies per parallel range in gather_bodies.
-constexpr std::size_t bodies_per_task = 256;
+constexpr std::size_t gathered_bodies_per_task = 256;
 
 } // namespace
 
@@ -56,7 +56,7 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
     auto &candidates = view.handle();
     auto num_candidates = candidates.size();
     world.body_candidates.resize(num_candidates);
-    parallel_for(world.scheduler.get(), std::size_t(0), num_candidates, bodies_per_task,
+    parallel_for(world.scheduler.get(), std::size_t(0), num_candidates, gathered_bodies_per_task,
                  [&](std::size_t i) { world.body_candidates[i] = view.contains(candidates.data()[i]); });
     world.body_entities.clear();
     world.body_entities.push_back(null);
@@ -88,7 +88,7 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
             body.acceleration = g ? static_cast<vector3>(*g) : settings.gravity;
         }
     };
-    parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), bodies_per_task, fill);
+    parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), gathered_bodies_per_task, fill);
 }
 
 namespace {
@@ -193,10 +193,10 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
 }
 
 // Manifolds per parallel range in gather_contacts.
-constexpr std::size_t manifolds_per_task = 64;
+constexpr std::size_t gathered_manifolds_per_task = 64;
 // How many manifolds ahead gather_contacts and write_back ask for a manifold's memory (twice as
 // far ahead) and, once it has come, for its bodies'.
-constexpr std::uint32_t prefetch_distance = 8;
+constexpr std::uint32_t gather_prefetch_distance = 8;
 
 // A manifold's first cache line: its bodies, point count and point ids.
 void prefetch_manifold_head(const contact_manifold &manifold) { prefetch(&manifold, cache_line_size); }
@@ -237,9 +237,9 @@ void gather_contacts(registry &registry, world_state &world) {
     auto num_edges = static_cast<std::uint32_t>(world.island_edges.size());
     world.edge_contacts.resize(num_edges);
     auto &manifold_pool = registry.storage<contact_manifold>();
-    parallel_for(scheduler, 0u, num_edges, manifolds_per_task, [&](std::uint32_t i) {
-        if (i + prefetch_distance < num_edges) {
-            if (auto *ahead = manifold_pool.try_get(world.island_edges[i + prefetch_distance])) {
+    parallel_for(scheduler, 0u, num_edges, gathered_manifolds_per_task, [&](std::uint32_t i) {
+        if (i + gather_prefetch_distance < num_edges) {
+            if (auto *ahead = manifold_pool.try_get(world.island_edges[i + gather_prefetch_distance])) {
                 prefetch(ahead);
             }
         }
@@ -284,12 +284,12 @@ void gather_contacts(registry &registry, world_state &world) {
 
     // Manifolds are gathered in island order, which is no order in memory: each is asked for
     // ahead, then its bodies.
-    parallel_for(scheduler, 0u, num_contacts, manifolds_per_task, [&](std::uint32_t k) {
-        if (k + 2 * prefetch_distance < num_contacts)
+    parallel_for(scheduler, 0u, num_contacts, gathered_manifolds_per_task, [&](std::uint32_t k) {
+        if (k + 2 * gather_prefetch_distance < num_contacts)
             prefetch_manifold_head(
-                manifold_pool.value_at(world.contact_places[k + 2 * prefetch_distance].slot));
-        if (k + prefetch_distance < num_contacts) {
-            auto &ahead = manifold_pool.value_at(world.contact_places[k + prefetch_distance].slot);
+                manifold_pool.value_at(world.contact_places[k + 2 * gather_prefetch_distance].slot));
+        if (k + gather_prefetch_distance < num_contacts) {
+            auto &ahead = manifold_pool.value_at(world.contact_places[k + gather_prefetch_distance].slot);
             prefetch_gather_points(ahead);
             prefetch_gather_bodies(registry, ahead);
         }
@@ -397,12 +397,12 @@ void write_back(registry &registry, world_state &world, scalar dt) {
     auto &manifold_pool = registry.storage<contact_manifold>();
     parallel_for(
         world.scheduler.get(), std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
-            if (k + 2 * prefetch_distance < constraints.size()) {
-                auto ahead = world.contact_places[constraints[k + 2 * prefetch_distance].source].slot;
+            if (k + 2 * gather_prefetch_distance < constraints.size()) {
+                auto ahead = world.contact_places[constraints[k + 2 * gather_prefetch_distance].source].slot;
                 prefetch_manifold_head(manifold_pool.value_at(ahead));
             }
-            if (k + prefetch_distance < constraints.size()) {
-                auto ahead = world.contact_places[constraints[k + prefetch_distance].source].slot;
+            if (k + gather_prefetch_distance < constraints.size()) {
+                auto ahead = world.contact_places[constraints[k + gather_prefetch_distance].source].slot;
                 prefetch_write_back_points(manifold_pool.value_at(ahead));
             }
             auto &c = constraints[k];

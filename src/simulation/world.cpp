@@ -1,4 +1,5 @@
 #include "edyn/simulation/world.hpp"
+#include "../shapes/invalid_argument.hpp"
 #include "async_execution.hpp"
 #include "clock.hpp"
 #include "edyn/collision/collision_filter.hpp"
@@ -29,6 +30,8 @@ namespace edyn {
 
 namespace {
 
+using detail::concat;
+
 world_state &world(registry &registry) {
     auto *w = registry.ctx().find<world_state>();
     if (!w) throw std::invalid_argument("edyn: the registry is not attached (call edyn::attach first)");
@@ -51,12 +54,6 @@ settings &mutable_settings(registry &registry) {
 
 [[noreturn]] void invalid(const char *function, const std::string &what) {
     throw std::invalid_argument(std::string(function) + ": " + what);
-}
-
-std::string str(double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
 }
 
 void check_count(const char *function, const char *what, unsigned value, unsigned min, unsigned max) {
@@ -243,17 +240,20 @@ bool is_paused(const registry &registry) { return attached_world(registry, "is_p
 
 void set_fixed_dt(registry &registry, scalar dt) {
     if (!(dt >= min_fixed_dt && dt <= max_fixed_dt))
-        invalid("set_fixed_dt",
-                "dt must be in [" + str(min_fixed_dt) + ", " + str(max_fixed_dt) + "] s, got " + str(dt));
+        invalid("set_fixed_dt", "dt must be in [" + concat(min_fixed_dt) + ", " + concat(max_fixed_dt) +
+                                    "] s, got " + concat(dt));
     mutable_settings(registry).fixed_dt = dt;
 }
 scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fixed_dt; }
 
 void set_gravity(registry &registry, const vector3 &gravity) {
-    auto text = [&] { return "(" + str(gravity.x) + ", " + str(gravity.y) + ", " + str(gravity.z) + ")"; };
+    auto text = [&] {
+        return "(" + concat(gravity.x) + ", " + concat(gravity.y) + ", " + concat(gravity.z) + ")";
+    };
     if (!isfinite(gravity)) invalid("set_gravity", "gravity must be finite, got " + text());
     if (!(length(gravity) <= max_gravity))
-        invalid("set_gravity", "gravity must be at most " + str(max_gravity) + " m/s^2 long, got " + text());
+        invalid("set_gravity",
+                "gravity must be at most " + concat(max_gravity) + " m/s^2 long, got " + text());
     mutable_settings(registry).gravity = gravity;
     // Resting bodies must notice a new gravity (in asynchronous mode the worker wakes its own;
     // here they are shown awake at once).
