@@ -12,6 +12,12 @@
 
 namespace edyn::test {
 
+// Gravity's pull in the tests' worked figures (the worlds' default gravity is 9.8 m/s^2 down).
+constexpr scalar earth_g = scalar(9.8);
+
+// Half extents of a 1 m cube.
+inline const vector3 unit_half{scalar(0.5), scalar(0.5), scalar(0.5)};
+
 // The configuration every behaviour test attaches with: sequential, or, when
 // EDYN_TEST_EXECUTION_MODE says so (CTest runs the suite in each mode), the multithreaded step
 // on two worker threads or the asynchronous worker. The behaviour must hold in all three.

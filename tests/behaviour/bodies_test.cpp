@@ -8,9 +8,6 @@ using edyn::test::world_fixture;
 
 namespace {
 
-constexpr scalar g = scalar(9.8);
-const vector3 unit_half{scalar(0.5), scalar(0.5), scalar(0.5)};
-
 // Velocity of the body's material point at world position p.
 vector3 point_velocity(const registry &reg, entity e, const vector3 &p) {
     return static_cast<vector3>(reg.get<linvel>(e)) + cross(reg.get<angvel>(e), p - reg.get<position>(e));
@@ -72,7 +69,7 @@ TEST_F(center_of_mass_shift, an_offset_centre_of_mass_turns_a_vertical_impact_in
 }
 
 TEST_F(center_of_mass_shift, moving_the_centre_of_mass_at_run_time_keeps_the_origin_and_its_motion) {
-    auto def = edyn::test::box_def(unit_half, {1, 2, 3}, 2);
+    auto def = edyn::test::box_def(test::unit_half, {1, 2, 3}, 2);
     def.orientation = normalize(quaternion{scalar(0.1), scalar(0.7), scalar(-0.2), scalar(0.6)});
     def.linvel = {1, 2, 3};
     def.angvel = {scalar(0.5), -1, 2};
@@ -82,7 +79,7 @@ TEST_F(center_of_mass_shift, moving_the_centre_of_mass_at_run_time_keeps_the_ori
 
     auto origin = get_rigidbody_origin(reg, box);
     auto origin_velocity = point_velocity(reg, box, origin);
-    auto corner = origin + rotate(reg.get<orientation>(box), unit_half);
+    auto corner = origin + rotate(reg.get<orientation>(box), test::unit_half);
     auto corner_velocity = point_velocity(reg, box, corner);
 
     const vector3 com{scalar(0.1), scalar(-0.2), scalar(0.3)};
@@ -111,7 +108,7 @@ TEST_F(center_of_mass_shift, moving_the_centre_of_mass_at_run_time_keeps_the_ori
 TEST_F(center_of_mass_shift, a_body_free_of_torque_spins_about_its_centre_of_mass) {
     // Spinning about z at w, the shifted box's origin circles its centre of mass at radius
     // |com| and speed w |com|; the centre of mass does not move.
-    auto def = edyn::test::box_def(unit_half, {0, 5, 0});
+    auto def = edyn::test::box_def(test::unit_half, {0, 5, 0});
     def.gravity = vector3_zero;
     def.center_of_mass = vector3{scalar(0.3), 0, 0};
     def.angvel = {0, 0, 2};
@@ -129,7 +126,7 @@ TEST_F(center_of_mass_shift, a_body_free_of_torque_spins_about_its_centre_of_mas
 using change_kind = world_fixture;
 
 TEST_F(change_kind, a_falling_body_made_static_stops_and_made_dynamic_again_falls) {
-    auto box = make_rigidbody(reg, edyn::test::box_def(unit_half, {0, 10, 0}, 2));
+    auto box = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {0, 10, 0}, 2));
     run_for(scalar(0.5));
     ASSERT_LT(vel(box).y, -4);
 
@@ -149,7 +146,7 @@ TEST_F(change_kind, a_falling_body_made_static_stops_and_made_dynamic_again_fall
     EXPECT_TRUE(reg.all_of<dynamic_tag>(box));
     EXPECT_EQ(reg.get<mass>(box).s, 2) << "the mass it had before becoming static";
     run_for(scalar(0.5));
-    EXPECT_NEAR(vel(box).y, -g / 2, scalar(1e-3)) << "the box falls freely again";
+    EXPECT_NEAR(vel(box).y, -test::earth_g / 2, scalar(1e-3)) << "the box falls freely again";
     EXPECT_NEAR(pos(box).y, frozen.y - fall(reg, scalar(0.5)), scalar(1e-3));
     // The ball resting on it falls with it.
     EXPECT_NEAR(pos(ball).y - pos(box).y, scalar(0.75), scalar(0.02))
@@ -157,7 +154,7 @@ TEST_F(change_kind, a_falling_body_made_static_stops_and_made_dynamic_again_fall
 }
 
 TEST_F(change_kind, a_body_made_kinematic_follows_its_velocity) {
-    auto box = make_rigidbody(reg, edyn::test::box_def(unit_half, {0, 10, 0}));
+    auto box = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {0, 10, 0}));
     rigidbody_set_kind(reg, box, rigidbody_kind::rb_kinematic);
     EXPECT_TRUE(reg.all_of<kinematic_tag>(box));
     reg.replace<linvel>(box, vector3{1, 0, 0});
@@ -182,7 +179,7 @@ TEST_F(change_shape, a_resting_sphere_given_a_smaller_radius_settles_lower) {
     EXPECT_NEAR(pos(ball).y, scalar(0.25), scalar(0.01)) << "ball centre at " << pos(ball).y;
 
     // A box overlapping the ground is pushed out onto it.
-    rigidbody_set_shape(reg, ball, shapes_variant_t{box_shape{unit_half}});
+    rigidbody_set_shape(reg, ball, shapes_variant_t{box_shape{test::unit_half}});
     EXPECT_TRUE(reg.all_of<box_shape>(ball));
     EXPECT_FALSE(reg.all_of<sphere_shape>(ball));
     run_for(1);

@@ -8,8 +8,6 @@ using edyn::test::world_fixture;
 
 namespace {
 
-const vector3 unit_half{scalar(0.5), scalar(0.5), scalar(0.5)};
-
 struct kinematic_push : world_fixture {
     entity kin{null}, box{null};
 
@@ -18,11 +16,11 @@ struct kinematic_push : world_fixture {
         scenes::make_ground(reg, scalar(0.5), 0);
         rigidbody_def def;
         def.kind = rigidbody_kind::rb_kinematic;
-        def.shape = box_shape{unit_half};
+        def.shape = box_shape{test::unit_half};
         // Slightly above the ground: kinematic and static bodies do not interact anyway.
         def.position = {scalar(-1.5), scalar(0.51), 0};
         kin = make_rigidbody(reg, def);
-        box = make_rigidbody(reg, edyn::test::box_def(unit_half, {0, scalar(0.5), 0}));
+        box = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {0, scalar(0.5), 0}));
     }
 
     // Gap between the kinematic box's right face and the dynamic box's left face (negative when
@@ -75,7 +73,7 @@ TEST_F(kinematic_push, a_box_resting_on_a_rising_kinematic_platform_is_carried_u
     def.shape = box_shape{vector3{2, scalar(0.5), 2}};
     def.linvel = {0, scalar(0.5), 0};
     auto platform = make_rigidbody(reg, def);
-    auto box = make_rigidbody(reg, edyn::test::box_def(unit_half, {0, 1, 0}));
+    auto box = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {0, 1, 0}));
     run_for(2);
     EXPECT_NEAR(pos(platform).y, 1, scalar(1e-3));
     EXPECT_NEAR(pos(box).y, 2, scalar(0.02)) << "box at " << pos(box).y << ", expected on the platform at 2";
@@ -150,7 +148,7 @@ TEST_F(filtering, groups_and_masks_let_bodies_pass_through_each_other) {
 
 TEST_F(filtering, two_dynamic_bodies_in_excluded_groups_pass_through_each_other) {
     // A ball falls onto a box resting on the ground; their groups exclude each other.
-    auto box_def = edyn::test::box_def(unit_half, {0, scalar(0.5), 0});
+    auto box_def = edyn::test::box_def(test::unit_half, {0, scalar(0.5), 0});
     box_def.collision_group = std::uint64_t(1) << 2;
     box_def.collision_mask = ~(std::uint64_t(1) << 3);
     auto box = make_rigidbody(reg, box_def);

@@ -10,8 +10,6 @@ using edyn::test::world_fixture;
 
 namespace {
 
-constexpr scalar g = scalar(9.8);
-
 // What the listeners saw, kept in the registry's context.
 struct event_log {
     enum class kind { started, ended, point_created, point_destroyed };
@@ -145,7 +143,7 @@ TEST_F(events, the_impulse_reported_at_contact_started_is_the_collision_impulse)
     auto started = *std::find_if(log().records.begin(), log().records.end(),
                                  [](auto &r) { return r.type == kind::started; });
     // The impulse the contact gave in this step: m (dv - g dt).
-    auto applied = m * (v_after - v_before + g * get_fixed_dt(reg));
+    auto applied = m * (v_after - v_before + test::earth_g * get_fixed_dt(reg));
     EXPECT_NEAR(started.normal_impulse, applied, scalar(0.1) * applied)
         << "reported normal impulse " << started.normal_impulse << " N s, applied m dv = " << applied
         << " N s (velocity " << v_before << " -> " << v_after << " m/s)";
@@ -221,7 +219,8 @@ TEST_F(events, a_sensor_reports_a_ball_passing_through_without_touching_its_moti
     EXPECT_EQ(vel(ball).z, 0);
     EXPECT_EQ(angular(ball), vector3_zero);
     // And that is free fall.
-    EXPECT_NEAR(vel(ball).y, -g * 2, scalar(1e-3)) << "velocity " << vel(ball).y << ", expected " << -g * 2;
+    EXPECT_NEAR(vel(ball).y, -test::earth_g * 2, scalar(1e-3))
+        << "velocity " << vel(ball).y << ", expected " << -test::earth_g * 2;
 }
 
 TEST_F(events, a_dynamic_sensor_falls_through_the_ground_reporting_the_contact) {
@@ -234,7 +233,7 @@ TEST_F(events, a_dynamic_sensor_falls_through_the_ground_reporting_the_contact) 
     // sub-steps of h, 0.3% more than g t^2 / 2 here.
     auto n = scalar(steps * int(get_solver_substeps(reg)));
     auto h = 1 / n;
-    auto expected = 1 - g * h * h * n * (n + 1) / 2;
+    auto expected = 1 - test::earth_g * h * h * n * (n + 1) / 2;
     EXPECT_NEAR(pos(ball).y, expected, scalar(1e-3)) << "the sensor was held by the ground";
     EXPECT_EQ(log().count(kind::started), 1u);
 }

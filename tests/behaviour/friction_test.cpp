@@ -15,8 +15,6 @@ using edyn::test::world_fixture;
 
 namespace {
 
-constexpr scalar g = scalar(9.8);
-
 struct friction : world_fixture {
     // A sphere touching the ground at the origin, rolling along +x at speed v without slipping.
     entity make_rolling_sphere(scalar radius, scalar v, scalar roll_friction) {
@@ -53,7 +51,7 @@ TEST_F(friction, rolling_friction_decelerates_a_rolling_sphere_at_c_g_over_1_4_r
     run_for(seconds);
     auto v_end = vel(ball).x;
 
-    auto expected = c * g / (scalar(1.4) * r);
+    auto expected = c * test::earth_g / (scalar(1.4) * r);
     auto measured = (v_start - v_end) / seconds;
     EXPECT_NEAR(measured, expected, scalar(0.03) * expected)
         << "deceleration measured " << measured << " m/s^2, expected " << expected;
@@ -67,7 +65,7 @@ TEST_F(friction, rolling_friction_stops_a_slow_sphere_and_keeps_it_stopped) {
     scenes::make_ground(reg, 1, 0);
     const scalar r = scalar(0.5), v0 = 1, c = scalar(0.05);
     auto ball = make_rolling_sphere(r, v0, c);
-    auto a = c * g / (scalar(1.4) * r);
+    auto a = c * test::earth_g / (scalar(1.4) * r);
     auto stop_time = v0 / a;
     auto stop_distance = v0 * v0 / (2 * a);
     run_for(stop_time + 1);
@@ -138,7 +136,7 @@ TEST_F(friction, rolling_friction_slows_a_cylinder_rolling_about_its_axis_at_c_g
     auto v_start = vel(wheel).x;
     auto seconds = scalar(2);
     run_for(seconds);
-    auto expected = c * g / (scalar(1.5) * r);
+    auto expected = c * test::earth_g / (scalar(1.5) * r);
     auto measured = (v_start - vel(wheel).x) / seconds;
     EXPECT_NEAR(measured, expected, scalar(0.03) * expected)
         << "deceleration measured " << measured << " m/s^2, expected " << expected;
@@ -153,8 +151,8 @@ TEST_F(friction, spinning_friction_stops_a_spinning_sphere_after_w0_i_over_s_m_g
     const scalar r = scalar(0.5), m = 1, w0 = 10, s = scalar(0.05);
     auto ball = make_spinning_sphere(r, w0, s);
     auto I = scalar(0.4) * m * r * r;
-    auto alpha = s * m * g / I;
-    auto stop_time = w0 * I / (s * m * g);
+    auto alpha = s * m * test::earth_g / I;
+    auto stop_time = w0 * I / (s * m * test::earth_g);
 
     edyn::test::step(reg);
     auto w_start = angular(ball).y;
@@ -219,7 +217,7 @@ TEST_F(material_mixing_override, default_mixing_stops_a_sliding_box_after_v_squa
     auto box = make_sliding_box(reg, 5, scalar(0.4));
     run_for(3);
     // Default mixing: sqrt(0.4 * 0.4) = 0.4.
-    auto expected = scalar(25) / (2 * scalar(0.4) * g);
+    auto expected = scalar(25) / (2 * scalar(0.4) * test::earth_g);
     EXPECT_NEAR(pos(box).x, expected, scalar(0.03) * expected)
         << "slid " << pos(box).x << " m, expected " << expected;
     EXPECT_NEAR(vel(box).x, 0, scalar(1e-3));
@@ -244,10 +242,10 @@ TEST_F(material_mixing_override, pair_friction_overrides_in_either_id_order) {
     make_ground_with_id(reg, scalar(0.1), 0);
     auto box = make_sliding_box(reg, 5, scalar(0.1));
     run_for(3);
-    auto expected = scalar(25) / (2 * scalar(0.8) * g);
+    auto expected = scalar(25) / (2 * scalar(0.8) * test::earth_g);
     EXPECT_NEAR(pos(box).x, expected, scalar(0.03) * expected)
         << "slid " << pos(box).x << " m, expected " << expected << " (mixed default would give "
-        << scalar(25) / (2 * scalar(0.1) * g) << ")";
+        << scalar(25) / (2 * scalar(0.1) * test::earth_g) << ")";
 }
 
 TEST_F(material_mixing_override, pair_restitution_overrides_the_bounce) {

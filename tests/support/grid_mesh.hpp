@@ -8,6 +8,7 @@
 // (scenes::make_grid_mesh is centred and numbered along z first: fine for scenes, not for
 // expectations written by hand.)
 #include "edyn/math/vector3.hpp"
+#include "edyn/shapes/mesh_shape.hpp"
 #include "edyn/shapes/triangle_mesh.hpp"
 #include <functional>
 #include <memory>
@@ -49,6 +50,11 @@ std::shared_ptr<triangle_mesh> make_triangle_mesh(const std::vector<vector3> &ve
     mesh->insert_indices(indices.begin(), indices.end());
     mesh->initialize();
     return mesh;
+}
+
+/// A mesh shape of the given vertices and indices.
+inline mesh_shape make_mesh(const std::vector<vector3> &vertices, const std::vector<int> &indices) {
+    return mesh_shape{make_triangle_mesh(vertices, indices)};
 }
 
 /// An initialized mesh of one grid (see append_grid).

@@ -7,13 +7,7 @@ using namespace collide_test;
 
 namespace {
 
-constexpr scalar tol = scalar(1e-5);
-
-collision_result run(const auto &a, const auto &b, const collision_context &ctx) {
-    collision_result r;
-    collide(a, b, ctx, r);
-    return r;
-}
+constexpr scalar box_tol = scalar(1e-5);
 
 // Exact distance between disjoint boxes: the smallest distance from an edge of one to the other,
 // each by ternary search over the box's signed distance along the edge.
@@ -56,18 +50,18 @@ TEST(collide_box_test, manual_example_box_on_box) {
     for (std::size_t i = 0; i < 4; ++i) {
         auto &p = result.point[i];
         expect_feature(p.featureA, box_feature::face, 2);
-        EXPECT_NEAR(p.distance, 0, tol);
-        expect_vec_near(p.normal, -vector3_y, tol);
-        EXPECT_NEAR(std::abs(p.pivotA.x), 0.5, tol);
-        EXPECT_NEAR(p.pivotA.y, 0.5, tol);
-        EXPECT_NEAR(std::abs(p.pivotA.z), 0.5, tol);
-        EXPECT_NEAR(p.pivotB.y, -0.5, tol);
+        EXPECT_NEAR(p.distance, 0, box_tol);
+        expect_vec_near(p.normal, -vector3_y, box_tol);
+        EXPECT_NEAR(std::abs(p.pivotA.x), 0.5, box_tol);
+        EXPECT_NEAR(p.pivotA.y, 0.5, box_tol);
+        EXPECT_NEAR(std::abs(p.pivotA.z), 0.5, box_tol);
+        EXPECT_NEAR(p.pivotB.y, -0.5, box_tol);
         // B's lower corners: y negative.
         ASSERT_TRUE(p.featureB.has_value());
         EXPECT_EQ(std::get<box_feature>(p.featureB->feature), box_feature::vertex);
         EXPECT_TRUE(p.featureB->index & 2u);
     }
-    expect_consistent(result, ctx, tol);
+    expect_consistent(result, ctx, box_tol);
 }
 
 TEST(collide_box_test, manual_example_under_a_common_transform) {
@@ -76,7 +70,7 @@ TEST(collide_box_test, manual_example_under_a_common_transform) {
     auto orn = quaternion_axis_angle(normalize(vector3{1, -2, 0.5}), 2.1);
     vector3 offset{3, -4, 7};
     collision_context ctx{offset, orn, offset + rotate(orn, vector3{0, 1.01, 0}), orn, 0.2};
-    auto r = run(box, box, ctx);
+    auto r = collide_pair(box, box, ctx);
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
         EXPECT_NEAR(r.point[i].distance, 0.01, 1e-4);
@@ -91,19 +85,19 @@ TEST(collide_box_test, small_box_resting_rotated_on_large_box) {
     ctx.posA = {0, 0, 0};
     ctx.posB = {0.1, 0.5 + 0.2 - 0.01, -0.2};
     ctx.ornB = quaternion_axis_angle(vector3_y, 0.3);
-    auto r = run(box_shape{1, 0.5, 1}, box_shape{0.2, 0.2, 0.2}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, box_shape{0.2, 0.2, 0.2}, ctx);
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
         auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, -0.01, tol);
-        expect_vec_near(p.normal, -vector3_y, tol);
-        EXPECT_NEAR(p.pivotA.y, 0.5, tol);
-        EXPECT_NEAR(p.pivotB.y, -0.2, tol);
+        EXPECT_NEAR(p.distance, -0.01, box_tol);
+        expect_vec_near(p.normal, -vector3_y, box_tol);
+        EXPECT_NEAR(p.pivotA.y, 0.5, box_tol);
+        EXPECT_NEAR(p.pivotB.y, -0.2, box_tol);
         expect_feature(p.featureA, box_feature::face, 2);
         ASSERT_TRUE(p.featureB.has_value());
         EXPECT_EQ(std::get<box_feature>(p.featureB->feature), box_feature::vertex);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, large_box_on_small_box_clips_to_the_small_face) {
@@ -112,18 +106,18 @@ TEST(collide_box_test, large_box_on_small_box_clips_to_the_small_face) {
     collision_context ctx;
     ctx.posB = {0.3, 0.2 + 0.5 - 0.02, 0};
     ctx.ornB = quaternion_axis_angle(vector3_y, 0.2);
-    auto r = run(box_shape{0.2, 0.2, 0.2}, box_shape{1, 0.5, 1}, ctx);
+    auto r = collide_pair(box_shape{0.2, 0.2, 0.2}, box_shape{1, 0.5, 1}, ctx);
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
         auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, -0.02, tol);
-        expect_vec_near(p.normal, -vector3_y, tol);
-        EXPECT_NEAR(std::abs(p.pivotA.x), 0.2, tol);
-        EXPECT_NEAR(std::abs(p.pivotA.z), 0.2, tol);
+        EXPECT_NEAR(p.distance, -0.02, box_tol);
+        expect_vec_near(p.normal, -vector3_y, box_tol);
+        EXPECT_NEAR(std::abs(p.pivotA.x), 0.2, box_tol);
+        EXPECT_NEAR(std::abs(p.pivotA.z), 0.2, box_tol);
         expect_feature(p.featureA, box_feature::face, 2);
         expect_feature(p.featureB, box_feature::face, 3);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, edge_on_edge) {
@@ -136,40 +130,40 @@ TEST(collide_box_test, edge_on_edge) {
     auto half_diag = std::sqrt(scalar(2)) * scalar(0.5);
     ctx.posB = {0, 2 * half_diag - scalar(0.01), 0};
     box_shape box{0.5, 0.5, 0.5};
-    auto r = run(box, box, ctx);
+    auto r = collide_pair(box, box, ctx);
     ASSERT_EQ(r.num_points, 1u);
     auto &p = r.point[0];
-    EXPECT_NEAR(p.distance, -0.01, tol);
-    expect_vec_near(p.normal, -vector3_y, tol);
+    EXPECT_NEAR(p.distance, -0.01, box_tol);
+    expect_vec_near(p.normal, -vector3_y, box_tol);
     expect_feature(p.featureA, box_feature::edge, 8);
     expect_feature(p.featureB, box_feature::edge, 1);
-    expect_vec_near(p.pivotA, {0.5, 0.5, 0}, tol);
-    expect_vec_near(p.pivotB, {0, -0.5, 0.5}, tol);
-    expect_consistent(r, ctx, tol);
+    expect_vec_near(p.pivotA, {0.5, 0.5, 0}, box_tol);
+    expect_vec_near(p.pivotB, {0, -0.5, 0.5}, box_tol);
+    expect_consistent(r, ctx, box_tol);
 
     // Same, apart by 0.03.
     ctx.posB.y += scalar(0.04);
-    r = run(box, box, ctx);
+    r = collide_pair(box, box, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, 0.03, tol);
-    expect_consistent(r, ctx, tol);
+    EXPECT_NEAR(r.point[0].distance, 0.03, box_tol);
+    expect_consistent(r, ctx, box_tol);
     ctx.posB.y += scalar(0.03);
-    EXPECT_EQ(run(box, box, ctx).num_points, 0u);
+    EXPECT_EQ(collide_pair(box, box, ctx).num_points, 0u);
 }
 
 TEST(collide_box_test, vertex_on_face) {
     collision_context ctx;
     ctx.ornB = shortest_arc(normalize(vector3{-1, -1, -1}), -vector3_y);
     ctx.posB = {0.1, scalar(0.5) + std::sqrt(scalar(3)) * scalar(0.25) - scalar(0.003), 0.2};
-    auto r = run(box_shape{1, 0.5, 1}, box_shape{0.25, 0.25, 0.25}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, box_shape{0.25, 0.25, 0.25}, ctx);
     ASSERT_EQ(r.num_points, 1u);
     auto &p = r.point[0];
-    EXPECT_NEAR(p.distance, -0.003, tol);
-    expect_vec_near(p.normal, -vector3_y, tol);
+    EXPECT_NEAR(p.distance, -0.003, box_tol);
+    expect_vec_near(p.normal, -vector3_y, box_tol);
     expect_feature(p.featureA, box_feature::face, 2);
     expect_feature(p.featureB, box_feature::vertex, 7);
-    expect_vec_near(p.pivotA, {0.1, 0.5, 0.2}, tol);
-    expect_consistent(r, ctx, tol);
+    expect_vec_near(p.pivotA, {0.1, 0.5, 0.2}, box_tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, apart_within_and_beyond_threshold) {
@@ -177,13 +171,13 @@ TEST(collide_box_test, apart_within_and_beyond_threshold) {
     ctx.threshold = 0.02;
     box_shape box{0.5, 0.5, 0.5};
     ctx.posB = {0.2, 1.015, -0.1};
-    auto r = run(box, box, ctx);
+    auto r = collide_pair(box, box, ctx);
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i)
-        EXPECT_NEAR(r.point[i].distance, 0.015, tol);
-    expect_consistent(r, ctx, tol);
+        EXPECT_NEAR(r.point[i].distance, 0.015, box_tol);
+    expect_consistent(r, ctx, box_tol);
     ctx.posB.y = scalar(1.021);
-    EXPECT_EQ(run(box, box, ctx).num_points, 0u);
+    EXPECT_EQ(collide_pair(box, box, ctx).num_points, 0u);
 }
 
 TEST(collide_box_test, apart_corner_to_corner_is_exact) {
@@ -193,31 +187,31 @@ TEST(collide_box_test, apart_corner_to_corner_is_exact) {
     ctx.threshold = 0.02;
     ctx.posB = {1.005, 1.005, 1.005};
     box_shape box{0.5, 0.5, 0.5};
-    auto r = run(box, box, ctx);
+    auto r = collide_pair(box, box, ctx);
     ASSERT_EQ(r.num_points, 1u);
     auto &p = r.point[0];
-    EXPECT_NEAR(p.distance, std::sqrt(scalar(3)) * scalar(0.005), tol);
+    EXPECT_NEAR(p.distance, std::sqrt(scalar(3)) * scalar(0.005), box_tol);
     expect_vec_near(p.normal, -normalize(vector3_one), 1e-3);
     expect_feature(p.featureA, box_feature::vertex, 0);
     expect_feature(p.featureB, box_feature::vertex, 7);
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
     // Just beyond the threshold along the diagonal although every face gap is below it.
     ctx.posB = vector3_one * scalar(1.0125);
-    EXPECT_EQ(run(box, box, ctx).num_points, 0u);
+    EXPECT_EQ(collide_pair(box, box, ctx).num_points, 0u);
 }
 
 TEST(collide_box_test, deep_penetration_uses_least_penetrating_face) {
     collision_context ctx;
     ctx.posA = {0, 0, 0};
     ctx.posB = {0.1, 0.2, 0};
-    auto r = run(box_shape{0.5, 0.5, 0.5}, box_shape{0.2, 0.2, 0.2}, ctx);
+    auto r = collide_pair(box_shape{0.5, 0.5, 0.5}, box_shape{0.2, 0.2, 0.2}, ctx);
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
         // Leaving through A's top face takes 0.5 + 0.2 - 0.2 = 0.5: the least of the axes.
-        EXPECT_NEAR(r.point[i].distance, -0.5, tol);
-        expect_vec_near(r.point[i].normal, -vector3_y, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.5, box_tol);
+        expect_vec_near(r.point[i].normal, -vector3_y, box_tol);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, reference_face_on_b_when_b_face_is_better) {
@@ -226,13 +220,13 @@ TEST(collide_box_test, reference_face_on_b_when_b_face_is_better) {
     ctx.ornA = shortest_arc(normalize(vector3{1, 1, 1}), vector3_y);
     ctx.posA = {0, std::sqrt(scalar(3)) * scalar(0.25) - scalar(0.004), 0};
     ctx.posB = {0, -0.5, 0};
-    auto r = run(box_shape{0.25, 0.25, 0.25}, box_shape{1, 0.5, 1}, ctx);
+    auto r = collide_pair(box_shape{0.25, 0.25, 0.25}, box_shape{1, 0.5, 1}, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.004, tol);
-    expect_vec_near(r.point[0].normal, vector3_y, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.004, box_tol);
+    expect_vec_near(r.point[0].normal, vector3_y, box_tol);
     expect_feature(r.point[0].featureA, box_feature::vertex, 7);
     expect_feature(r.point[0].featureB, box_feature::face, 2);
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, random_box_box_matches_brute_force) {
@@ -242,7 +236,7 @@ TEST(collide_box_test, random_box_box_matches_brute_force) {
         box_shape a{random.vec(0.1, 0.6)}, b{random.vec(0.1, 0.6)};
         collision_context ctx{random.vec(-0.7, 0.7), random.orientation(), random.vec(-0.7, 0.7),
                               random.orientation(), random.uniform(0, 0.2)};
-        auto r = run(a, b, ctx);
+        auto r = collide_pair(a, b, ctx);
         auto va = box_vertices(a.half_extents, ctx.posA, ctx.ornA);
         auto vb = box_vertices(b.half_extents, ctx.posB, ctx.ornB);
         auto dirs = candidate_directions(ctx.ornA, axes_of(ctx.ornB), random);
@@ -278,7 +272,7 @@ TEST(collide_box_test, random_box_box_matches_brute_force) {
             EXPECT_NEAR(box_sdf(b.half_extents, r.point[k].pivotB), 0, 1e-4) << "case " << i;
         }
         expect_consistent(r, ctx, 1e-4);
-        auto s = run(b, a, swap_context(ctx));
+        auto s = collide_pair(b, a, swap_context(ctx));
         ASSERT_GE(s.num_points, 1u) << "case " << i;
         EXPECT_NEAR(min_distance(s), min_distance(r), sat_bias(min_distance(r))) << "case " << i;
     }
@@ -291,22 +285,22 @@ TEST(collide_box_test, random_box_box_matches_brute_force) {
 TEST(collide_box_test, capsule_lying_on_box_face) {
     collision_context ctx;
     ctx.posB = {0.2, 0.69, 0.3};
-    auto r = run(box_shape{1, 0.5, 1}, capsule_shape{0.2, 0.5, coordinate_axis::x}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, capsule_shape{0.2, 0.5, coordinate_axis::x}, ctx);
     ASSERT_EQ(r.num_points, 2u);
     scalar xs[2];
     for (std::size_t i = 0; i < 2; ++i) {
         auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, -0.01, tol);
-        expect_vec_near(p.normal, -vector3_y, tol);
+        EXPECT_NEAR(p.distance, -0.01, box_tol);
+        expect_vec_near(p.normal, -vector3_y, box_tol);
         expect_feature(p.featureA, box_feature::face, 2);
         expect_feature(p.featureB, capsule_feature::side, 0);
-        EXPECT_NEAR(p.pivotA.y, 0.5, tol);
-        EXPECT_NEAR(p.pivotB.y, -0.2, tol);
+        EXPECT_NEAR(p.pivotA.y, 0.5, box_tol);
+        EXPECT_NEAR(p.pivotB.y, -0.2, box_tol);
         xs[i] = p.pivotA.x;
     }
-    EXPECT_NEAR(std::min(xs[0], xs[1]), -0.3, tol);
-    EXPECT_NEAR(std::max(xs[0], xs[1]), 0.7, tol);
-    expect_consistent(r, ctx, tol);
+    EXPECT_NEAR(std::min(xs[0], xs[1]), -0.3, box_tol);
+    EXPECT_NEAR(std::max(xs[0], xs[1]), 0.7, box_tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_overhanging_is_clipped_to_the_face) {
@@ -314,42 +308,42 @@ TEST(collide_box_test, capsule_overhanging_is_clipped_to_the_face) {
     ctx.ornA = quaternion_axis_angle(vector3_x, 0.5);
     ctx.posB = rotate(ctx.ornA, vector3{0, 0.7, 0.4});
     ctx.ornB = ctx.ornA;
-    auto r = run(box_shape{1, 0.5, 1}, capsule_shape{0.2, 2, coordinate_axis::x}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, capsule_shape{0.2, 2, coordinate_axis::x}, ctx);
     ASSERT_EQ(r.num_points, 2u);
     for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(r.point[i].distance, 0, tol);
-        EXPECT_NEAR(std::abs(r.point[i].pivotA.x), 1, tol);
-        expect_vec_near(r.point[i].normal, rotate(ctx.ornA, -vector3_y), tol);
+        EXPECT_NEAR(r.point[i].distance, 0, box_tol);
+        EXPECT_NEAR(std::abs(r.point[i].pivotA.x), 1, box_tol);
+        expect_vec_near(r.point[i].normal, rotate(ctx.ornA, -vector3_y), box_tol);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_standing_on_box_face) {
     collision_context ctx;
     ctx.posB = {0.3, 0.5 + 0.5 + 0.2 - 0.01, 0};
-    auto r = run(box_shape{1, 0.5, 1}, capsule_shape{0.2, 0.5, coordinate_axis::y}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, capsule_shape{0.2, 0.5, coordinate_axis::y}, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.01, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.01, box_tol);
     expect_feature(r.point[0].featureA, box_feature::face, 2);
     expect_feature(r.point[0].featureB, capsule_feature::hemisphere, 1);
-    expect_vec_near(r.point[0].pivotB, {0, -0.7, 0}, tol);
-    expect_consistent(r, ctx, tol);
+    expect_vec_near(r.point[0].pivotB, {0, -0.7, 0}, box_tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_along_box_edge_gives_two_points) {
     collision_context ctx;
     ctx.threshold = 0.1;
     ctx.posB = {1.1, 0.6, 0.2};
-    auto r = run(box_shape{1, 0.5, 1}, capsule_shape{0.1, 0.5, coordinate_axis::z}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, capsule_shape{0.1, 0.5, coordinate_axis::z}, ctx);
     ASSERT_EQ(r.num_points, 2u);
     for (std::size_t i = 0; i < 2; ++i) {
         auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, std::sqrt(scalar(0.02)) - scalar(0.1), tol);
-        expect_vec_near(p.normal, -normalize(vector3{1, 1, 0}), tol);
+        EXPECT_NEAR(p.distance, std::sqrt(scalar(0.02)) - scalar(0.1), box_tol);
+        expect_vec_near(p.normal, -normalize(vector3{1, 1, 0}), box_tol);
         expect_feature(p.featureA, box_feature::edge, 8);
     }
-    EXPECT_NEAR(std::abs(r.point[0].pivotA.z - r.point[1].pivotA.z), 1, tol);
-    expect_consistent(r, ctx, tol);
+    EXPECT_NEAR(std::abs(r.point[0].pivotA.z - r.point[1].pivotA.z), 1, box_tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_end_near_box_vertex) {
@@ -359,25 +353,25 @@ TEST(collide_box_test, capsule_end_near_box_vertex) {
     // Capsule along x turned to point along the diagonal, its -x end just off vertex 0.
     ctx.ornB = shortest_arc(vector3_x, dir);
     ctx.posB = vector3{0.5, 0.5, 0.5} + dir * scalar(0.05 + 0.1 + 1);
-    auto r = run(box_shape{0.5, 0.5, 0.5}, capsule_shape{0.1, 1, coordinate_axis::x}, ctx);
+    auto r = collide_pair(box_shape{0.5, 0.5, 0.5}, capsule_shape{0.1, 1, coordinate_axis::x}, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, 0.05, tol);
+    EXPECT_NEAR(r.point[0].distance, 0.05, box_tol);
     expect_feature(r.point[0].featureA, box_feature::vertex, 0);
     expect_feature(r.point[0].featureB, capsule_feature::hemisphere, 1);
-    expect_vec_near(r.point[0].normal, -dir, tol);
-    expect_consistent(r, ctx, tol);
+    expect_vec_near(r.point[0].normal, -dir, box_tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_through_box_centre) {
     collision_context ctx;
-    auto r = run(box_shape{1, 0.5, 1}, capsule_shape{0.2, 2, coordinate_axis::x}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, capsule_shape{0.2, 2, coordinate_axis::x}, ctx);
     ASSERT_GE(r.num_points, 1u);
     for (std::size_t i = 0; i < r.num_points; ++i) {
         // Leaving upwards takes 0.5 + 0.2 (the y face, least penetration).
-        EXPECT_NEAR(r.point[i].distance, -0.7, tol);
-        EXPECT_NEAR(std::abs(r.point[i].normal.y), 1, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.7, box_tol);
+        EXPECT_NEAR(std::abs(r.point[i].normal.y), 1, box_tol);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_crossing_box_edge_penetrating) {
@@ -387,31 +381,32 @@ TEST(collide_box_test, capsule_crossing_box_edge_penetrating) {
     ctx.threshold = 0.05;
     ctx.ornB = quaternion_axis_angle(vector3_z, -pi / 4);
     ctx.posB = {0.95, 0.45, 0};
-    auto r = run(box_shape{1, 0.5, 1}, capsule_shape{0.2, 0.5, coordinate_axis::x}, ctx);
+    auto r = collide_pair(box_shape{1, 0.5, 1}, capsule_shape{0.2, 0.5, coordinate_axis::x}, ctx);
     ASSERT_EQ(r.num_points, 1u);
     auto &p = r.point[0];
-    EXPECT_NEAR(p.distance, -scalar(0.1) / std::sqrt(scalar(2)) - scalar(0.2), tol);
-    expect_vec_near(p.normal, -normalize(vector3{1, 1, 0}), tol);
+    EXPECT_NEAR(p.distance, -scalar(0.1) / std::sqrt(scalar(2)) - scalar(0.2), box_tol);
+    expect_vec_near(p.normal, -normalize(vector3{1, 1, 0}), box_tol);
     expect_feature(p.featureA, box_feature::edge, 8);
     expect_feature(p.featureB, capsule_feature::side, 0);
-    expect_vec_near(p.pivotA, {1, 0.5, 0}, tol);
-    expect_consistent(r, ctx, tol);
+    expect_vec_near(p.pivotA, {1, 0.5, 0}, box_tol);
+    expect_consistent(r, ctx, box_tol);
 }
 
 TEST(collide_box_test, capsule_box_is_the_swap_of_box_capsule) {
     collision_context ctx;
     ctx.posA = {0.2, 0.69, 0.3};
-    auto r = run(capsule_shape{0.2, 0.5, coordinate_axis::x}, box_shape{1, 0.5, 1}, ctx);
+    auto r = collide_pair(capsule_shape{0.2, 0.5, coordinate_axis::x}, box_shape{1, 0.5, 1}, ctx);
     ASSERT_EQ(r.num_points, 2u);
     for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.01, tol);
-        expect_vec_near(r.point[i].normal, vector3_y, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.01, box_tol);
+        expect_vec_near(r.point[i].normal, vector3_y, box_tol);
         expect_feature(r.point[i].featureA, capsule_feature::side, 0);
         expect_feature(r.point[i].featureB, box_feature::face, 2);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, box_tol);
     ctx.posA.y = scalar(0.721);
-    EXPECT_EQ(run(capsule_shape{0.2, 0.5, coordinate_axis::x}, box_shape{1, 0.5, 1}, ctx).num_points, 0u);
+    EXPECT_EQ(collide_pair(capsule_shape{0.2, 0.5, coordinate_axis::x}, box_shape{1, 0.5, 1}, ctx).num_points,
+              0u);
 }
 
 TEST(collide_box_test, random_box_capsule_matches_brute_force) {
@@ -422,7 +417,7 @@ TEST(collide_box_test, random_box_capsule_matches_brute_force) {
         capsule_shape capsule{random.uniform(0.05, 0.3), random.uniform(0, 0.7), coordinate_axis(i % 3)};
         collision_context ctx{random.vec(-0.6, 0.6), random.orientation(), random.vec(-0.6, 0.6),
                               random.orientation(), random.uniform(0, 0.2)};
-        auto r = run(box, capsule, ctx);
+        auto r = collide_pair(box, capsule, ctx);
         vector3 p0, p1;
         capsule_ends(capsule, ctx.posB, ctx.ornB, p0, p1);
         auto l0 = to_object_space(p0, ctx.posA, ctx.ornA), l1 = to_object_space(p1, ctx.posA, ctx.ornA);
@@ -459,7 +454,7 @@ TEST(collide_box_test, random_box_capsule_matches_brute_force) {
             EXPECT_LE(point_segment_distance(p0, p1, w.b), capsule.radius + 1e-4) << "case " << i;
         }
         expect_consistent(r, ctx, 1e-4);
-        auto s = run(capsule, box, swap_context(ctx));
+        auto s = collide_pair(capsule, box, swap_context(ctx));
         ASSERT_EQ(s.num_points, r.num_points) << "case " << i;
         EXPECT_NEAR(min_distance(s), min_distance(r), 1e-4) << "case " << i;
     }
@@ -526,15 +521,15 @@ TEST(collide_box_test, tagged_clipping_reports_incident_features) {
     detail::clip_vertex polygon[4];
     detail::box_face_polygon({0.5, 0.5, 0.5}, 3, {0.8, 1, 0}, quaternion_identity, polygon);
     for (auto &v : polygon)
-        EXPECT_NEAR(v.position.y, 0.5, tol);
+        EXPECT_NEAR(v.position.y, 0.5, box_tol);
     detail::clip_vertex out[detail::max_clip_vertices];
     auto face = collision_feature{box_feature::face, 3};
     auto n = detail::clip_polygon_box_face_sides(polygon, 4, ref_he, 2, face, out);
     ASSERT_EQ(n, 4u);
     int vertices = 0, edges = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        EXPECT_LE(out[i].position.x, 0.5 + tol);
-        EXPECT_GE(out[i].position.x, 0.3 - tol);
+        EXPECT_LE(out[i].position.x, 0.5 + box_tol);
+        EXPECT_GE(out[i].position.x, 0.3 - box_tol);
         auto kind = std::get<box_feature>(out[i].feature.feature);
         if (kind == box_feature::vertex) {
             ++vertices;
@@ -545,7 +540,7 @@ TEST(collide_box_test, tagged_clipping_reports_incident_features) {
             ++edges;
             // Cut on the incident edges along x (indices 0..3).
             EXPECT_LT(out[i].feature.index, 4u);
-            EXPECT_NEAR(out[i].position.x, 0.5, tol);
+            EXPECT_NEAR(out[i].position.x, 0.5, box_tol);
         }
     }
     EXPECT_EQ(vertices, 2);
@@ -557,7 +552,7 @@ TEST(collide_box_test, tagged_clipping_reports_incident_features) {
     ASSERT_EQ(n, 4u);
     for (std::size_t i = 0; i < n; ++i) {
         EXPECT_EQ(out[i].feature, face);
-        EXPECT_NEAR(std::abs(out[i].position.x), 0.5, tol);
-        EXPECT_NEAR(std::abs(out[i].position.z), 0.5, tol);
+        EXPECT_NEAR(std::abs(out[i].position.x), 0.5, box_tol);
+        EXPECT_NEAR(std::abs(out[i].position.z), 0.5, box_tol);
     }
 }

@@ -5,13 +5,7 @@ using namespace collide_test;
 
 namespace {
 
-constexpr scalar tol = scalar(1e-5);
-
-collision_result run(const auto &a, const auto &b, const collision_context &ctx) {
-    collision_result r;
-    collide(a, b, ctx, r);
-    return r;
-}
+constexpr scalar capsule_tol = scalar(1e-5);
 
 // Distance between the capsules' segments by ternary search along A (independent of edyn).
 scalar segment_distance(const vector3 &a0, const vector3 &a1, const vector3 &b0, const vector3 &b1) {
@@ -24,23 +18,23 @@ TEST(collide_capsule_test, parallel_capsules_side_by_side_give_two_points) {
     collision_context ctx;
     ctx.posB = {0.5, 0.39, 0};
     capsule_shape capsule{0.2, 1, coordinate_axis::x};
-    auto r = run(capsule, capsule, ctx);
+    auto r = collide_pair(capsule, capsule, ctx);
     ASSERT_EQ(r.num_points, 2u);
     scalar xs[2];
     for (std::size_t i = 0; i < 2; ++i) {
         auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, -0.01, tol);
-        expect_vec_near(p.normal, -vector3_y, tol);
-        EXPECT_NEAR(p.pivotA.y, 0.2, tol);
-        EXPECT_NEAR(p.pivotB.y, -0.2, tol);
+        EXPECT_NEAR(p.distance, -0.01, capsule_tol);
+        expect_vec_near(p.normal, -vector3_y, capsule_tol);
+        EXPECT_NEAR(p.pivotA.y, 0.2, capsule_tol);
+        EXPECT_NEAR(p.pivotB.y, -0.2, capsule_tol);
         expect_feature(p.featureA, capsule_feature::side, 0);
         expect_feature(p.featureB, capsule_feature::side, 0);
         xs[i] = p.pivotA.x;
     }
     // The overlap of [-1, 1] and [-0.5, 1.5] along x.
-    EXPECT_NEAR(std::min(xs[0], xs[1]), -0.5, tol);
-    EXPECT_NEAR(std::max(xs[0], xs[1]), 1, tol);
-    expect_consistent(r, ctx, tol);
+    EXPECT_NEAR(std::min(xs[0], xs[1]), -0.5, capsule_tol);
+    EXPECT_NEAR(std::max(xs[0], xs[1]), 1, capsule_tol);
+    expect_consistent(r, ctx, capsule_tol);
 }
 
 TEST(collide_capsule_test, crossing_capsules_one_point) {
@@ -48,16 +42,17 @@ TEST(collide_capsule_test, crossing_capsules_one_point) {
     ctx.threshold = 0.1;
     ctx.posA = {1, 2, 3};
     ctx.posB = ctx.posA + vector3{0.2, 0.45, -0.1};
-    auto r = run(capsule_shape{0.2, 1, coordinate_axis::x}, capsule_shape{0.2, 1, coordinate_axis::z}, ctx);
+    auto r = collide_pair(capsule_shape{0.2, 1, coordinate_axis::x},
+                          capsule_shape{0.2, 1, coordinate_axis::z}, ctx);
     ASSERT_EQ(r.num_points, 1u);
     auto &p = r.point[0];
-    EXPECT_NEAR(p.distance, 0.05, tol);
-    expect_vec_near(p.normal, -vector3_y, tol);
-    expect_vec_near(p.pivotA, {0.2, 0.2, 0}, tol);
-    expect_vec_near(p.pivotB, {0, -0.2, 0.1}, tol);
+    EXPECT_NEAR(p.distance, 0.05, capsule_tol);
+    expect_vec_near(p.normal, -vector3_y, capsule_tol);
+    expect_vec_near(p.pivotA, {0.2, 0.2, 0}, capsule_tol);
+    expect_vec_near(p.pivotB, {0, -0.2, 0.1}, capsule_tol);
     expect_feature(p.featureA, capsule_feature::side, 0);
     expect_feature(p.featureB, capsule_feature::side, 0);
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, capsule_tol);
 }
 
 TEST(collide_capsule_test, end_to_end_hemispheres) {
@@ -65,16 +60,16 @@ TEST(collide_capsule_test, end_to_end_hemispheres) {
     ctx.threshold = 0.1;
     ctx.posB = {2.45, 0, 0};
     capsule_shape capsule{0.2, 1, coordinate_axis::x};
-    auto r = run(capsule, capsule, ctx);
+    auto r = collide_pair(capsule, capsule, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, 0.05, tol);
-    expect_vec_near(r.point[0].normal, -vector3_x, tol);
+    EXPECT_NEAR(r.point[0].distance, 0.05, capsule_tol);
+    expect_vec_near(r.point[0].normal, -vector3_x, capsule_tol);
     expect_feature(r.point[0].featureA, capsule_feature::hemisphere, 0);
     expect_feature(r.point[0].featureB, capsule_feature::hemisphere, 1);
-    expect_vec_near(r.point[0].pivotA, {1.2, 0, 0}, tol);
-    expect_vec_near(r.point[0].pivotB, {-1.2, 0, 0}, tol);
+    expect_vec_near(r.point[0].pivotA, {1.2, 0, 0}, capsule_tol);
+    expect_vec_near(r.point[0].pivotB, {-1.2, 0, 0}, capsule_tol);
     ctx.posB.x += scalar(0.06);
-    EXPECT_EQ(run(capsule, capsule, ctx).num_points, 0u);
+    EXPECT_EQ(collide_pair(capsule, capsule, ctx).num_points, 0u);
 }
 
 TEST(collide_capsule_test, end_on_side_rotated) {
@@ -82,32 +77,35 @@ TEST(collide_capsule_test, end_on_side_rotated) {
     // B along its y axis, standing on A's side with its lower end (hemisphere 1).
     ctx.ornA = quaternion_axis_angle(vector3_y, 0.4);
     ctx.posB = rotate(ctx.ornA, vector3{0.5, 0, 0}) + vector3{0, 1.395, 0};
-    auto r = run(capsule_shape{0.2, 2, coordinate_axis::x}, capsule_shape{0.2, 1, coordinate_axis::y}, ctx);
+    auto r = collide_pair(capsule_shape{0.2, 2, coordinate_axis::x},
+                          capsule_shape{0.2, 1, coordinate_axis::y}, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.005, tol);
-    expect_vec_near(r.point[0].normal, -vector3_y, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.005, capsule_tol);
+    expect_vec_near(r.point[0].normal, -vector3_y, capsule_tol);
     expect_feature(r.point[0].featureA, capsule_feature::side, 0);
     expect_feature(r.point[0].featureB, capsule_feature::hemisphere, 1);
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, capsule_tol);
 }
 
 TEST(collide_capsule_test, intersecting_axes_deep_penetration) {
     collision_context ctx;
-    auto r = run(capsule_shape{0.2, 1, coordinate_axis::x}, capsule_shape{0.3, 1, coordinate_axis::z}, ctx);
+    auto r = collide_pair(capsule_shape{0.2, 1, coordinate_axis::x},
+                          capsule_shape{0.3, 1, coordinate_axis::z}, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.5, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.5, capsule_tol);
     // The only direction leaving both axes: along y.
-    EXPECT_NEAR(std::abs(r.point[0].normal.y), 1, tol);
-    expect_consistent(r, ctx, tol);
+    EXPECT_NEAR(std::abs(r.point[0].normal.y), 1, capsule_tol);
+    expect_consistent(r, ctx, capsule_tol);
 
     // Coincident parallel capsules: any direction orthogonal to the axes.
-    r = run(capsule_shape{0.2, 1, coordinate_axis::x}, capsule_shape{0.2, 0.5, coordinate_axis::x}, ctx);
+    r = collide_pair(capsule_shape{0.2, 1, coordinate_axis::x}, capsule_shape{0.2, 0.5, coordinate_axis::x},
+                     ctx);
     ASSERT_GE(r.num_points, 1u);
     for (std::size_t i = 0; i < r.num_points; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.4, tol);
-        EXPECT_NEAR(r.point[i].normal.x, 0, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.4, capsule_tol);
+        EXPECT_NEAR(r.point[i].normal.x, 0, capsule_tol);
     }
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, capsule_tol);
 }
 
 TEST(collide_capsule_test, swapped_order_mirrors) {
@@ -115,14 +113,14 @@ TEST(collide_capsule_test, swapped_order_mirrors) {
     ctx.threshold = 0.1;
     ctx.posB = {0.2, 0.45, -0.1};
     capsule_shape a{0.2, 1, coordinate_axis::x}, b{0.2, 1, coordinate_axis::z};
-    auto r = run(a, b, ctx);
-    auto s = run(b, a, swap_context(ctx));
+    auto r = collide_pair(a, b, ctx);
+    auto s = collide_pair(b, a, swap_context(ctx));
     ASSERT_EQ(r.num_points, 1u);
     ASSERT_EQ(s.num_points, 1u);
-    EXPECT_NEAR(s.point[0].distance, r.point[0].distance, tol);
-    expect_vec_near(s.point[0].normal, -r.point[0].normal, tol);
-    expect_vec_near(s.point[0].pivotA, r.point[0].pivotB, tol);
-    expect_vec_near(s.point[0].pivotB, r.point[0].pivotA, tol);
+    EXPECT_NEAR(s.point[0].distance, r.point[0].distance, capsule_tol);
+    expect_vec_near(s.point[0].normal, -r.point[0].normal, capsule_tol);
+    expect_vec_near(s.point[0].pivotA, r.point[0].pivotB, capsule_tol);
+    expect_vec_near(s.point[0].pivotB, r.point[0].pivotA, capsule_tol);
 }
 
 TEST(collide_capsule_test, random_matches_segment_distance) {
@@ -137,12 +135,12 @@ TEST(collide_capsule_test, random_matches_segment_distance) {
         capsule_ends(a, ctx.posA, ctx.ornA, a0, a1);
         capsule_ends(b, ctx.posB, ctx.ornB, b0, b1);
         auto expected = segment_distance(a0, a1, b0, b1) - a.radius - b.radius;
-        auto r = run(a, b, ctx);
-        if (expected > ctx.threshold + tol) {
+        auto r = collide_pair(a, b, ctx);
+        if (expected > ctx.threshold + capsule_tol) {
             EXPECT_EQ(r.num_points, 0u) << "case " << i;
             continue;
         }
-        if (expected < ctx.threshold - tol) {
+        if (expected < ctx.threshold - capsule_tol) {
             ASSERT_GE(r.num_points, 1u) << "case " << i << " distance " << expected;
         }
         if (r.num_points == 0) continue;
@@ -154,7 +152,7 @@ TEST(collide_capsule_test, random_matches_segment_distance) {
             EXPECT_NEAR(point_segment_distance(b0, b1, w.b), b.radius, 1e-4) << "pivot B on the surface";
         }
         expect_consistent(r, ctx, 1e-4);
-        auto s = run(b, a, swap_context(ctx));
+        auto s = collide_pair(b, a, swap_context(ctx));
         ASSERT_EQ(s.num_points, r.num_points);
         EXPECT_NEAR(min_distance(s), min_distance(r), 1e-4);
     }

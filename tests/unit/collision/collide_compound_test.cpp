@@ -15,8 +15,8 @@ using namespace collide_test;
 namespace {
 
 // Shapes of about a metre at positions up to a few metres: float rounding stays below this.
-constexpr scalar tol = scalar(1e-4);
-constexpr scalar depth = scalar(0.01);
+constexpr scalar compound_tol = scalar(1e-4);
+constexpr scalar compound_depth = scalar(0.01);
 
 struct child_def {
     compound_child_shape_t shape;
@@ -50,21 +50,18 @@ polyhedron_shape frustum(scalar base, scalar top, scalar h) {
                                                  {top, h, -top}});
 }
 
-template<typename S>
-constexpr bool is_plane = std::is_same_v<S, plane_shape>;
-
 // Runs both argument orders, checks the world-space geometry of every point and that the two
 // orders report the same points with A and B exchanged; returns the (a, b) result. Two compounds
 // visit their children in a different order in each argument order, so when more than four
 // points are found the kept four may differ: there, only the deepest point must agree, within the
 // separating-axis bias (each child pair runs in the opposite argument order in the two calls).
 template<typename A, typename B>
-collision_result run(const A &a, const B &b, const collision_context &ctx) {
+collision_result collide_compound_checked(const A &a, const B &b, const collision_context &ctx) {
     collision_result r, s;
     collide(a, b, ctx, r);
     collide(b, a, swap_context(ctx), s);
-    expect_consistent(r, ctx, tol, is_plane<A>, is_plane<B>);
-    expect_consistent(s, swap_context(ctx), tol, is_plane<B>, is_plane<A>);
+    expect_consistent(r, ctx, compound_tol, is_plane<A>, is_plane<B>);
+    expect_consistent(s, swap_context(ctx), compound_tol, is_plane<B>, is_plane<A>);
     if constexpr (std::is_same_v<A, compound_shape> && std::is_same_v<B, compound_shape>) {
         EXPECT_EQ(r.num_points > 0, s.num_points > 0);
         if (r.num_points > 0 && s.num_points > 0) {
@@ -78,10 +75,11 @@ collision_result run(const A &a, const B &b, const collision_context &ctx) {
         bool found = false;
         for (std::size_t j = 0; j < s.num_points && !found; ++j) {
             const auto &q = s.point[j];
-            if (distance(q.pivotB, p.pivotA) > tol || distance(q.pivotA, p.pivotB) > tol) continue;
+            if (distance(q.pivotB, p.pivotA) > compound_tol || distance(q.pivotA, p.pivotB) > compound_tol)
+                continue;
             found = true;
-            expect_vec_near(q.normal, -p.normal, tol);
-            EXPECT_NEAR(q.distance, p.distance, tol);
+            expect_vec_near(q.normal, -p.normal, compound_tol);
+            EXPECT_NEAR(q.distance, p.distance, compound_tol);
             EXPECT_EQ(q.featureA, p.featureB);
             EXPECT_EQ(q.featureB, p.featureA);
         }
@@ -191,14 +189,14 @@ TEST(collide_compound_test, offset_rotated_child_matches_box_at_composed_transfo
         box_ctx.posB = ctx.posB;
         collision_result expected;
         collide(box, other, box_ctx, expected);
-        auto r = run(compound, other, ctx);
+        auto r = collide_compound_checked(compound, other, ctx);
         ASSERT_EQ(r.num_points, expected.num_points) << "case " << i;
         for (std::size_t k = 0; k < r.num_points; ++k) {
             expect_vec_near(to_object_space(r.point[k].pivotA, child_pos, child_orn),
-                            expected.point[k].pivotA, tol);
-            expect_vec_near(r.point[k].pivotB, expected.point[k].pivotB, tol);
-            expect_vec_near(r.point[k].normal, expected.point[k].normal, tol);
-            EXPECT_NEAR(r.point[k].distance, expected.point[k].distance, tol);
+                            expected.point[k].pivotA, compound_tol);
+            expect_vec_near(r.point[k].pivotB, expected.point[k].pivotB, compound_tol);
+            expect_vec_near(r.point[k].normal, expected.point[k].normal, compound_tol);
+            EXPECT_NEAR(r.point[k].distance, expected.point[k].distance, compound_tol);
             EXPECT_EQ(part_of(r.point[k].featureA), 0);
         }
         touching += r.num_points > 0;
@@ -206,18 +204,18 @@ TEST(collide_compound_test, offset_rotated_child_matches_box_at_composed_transfo
     EXPECT_GT(touching, 20);
 }
 
-// The L lying flat, turned about the vertical, sinks `depth` into the ground: every point lies on
+// The L lying flat, turned about the vertical, sinks `compound_depth` into the ground: every point lies on
 // the bottom face of the child it names, and both children hold points.
 template<typename Ground>
 void expect_l_shape_resting(const Ground &ground, const vector3 &ground_pos) {
     auto l = l_shape();
     for (auto yaw : {scalar(0), scalar(0.7), scalar(2.0), scalar(-2.9)}) {
-        collision_context ctx{{0.3, scalar(0.25) - depth, -0.2},
+        collision_context ctx{{0.3, scalar(0.25) - compound_depth, -0.2},
                               quaternion_axis_angle(vector3_y, yaw),
                               ground_pos,
                               quaternion_identity,
                               scalar(0.02)};
-        auto r = run(l, ground, ctx);
+        auto r = collide_compound_checked(l, ground, ctx);
         ASSERT_GT(r.num_points, 0u) << "yaw " << yaw;
         std::set<int> parts;
         for (std::size_t i = 0; i < r.num_points; ++i) {
@@ -225,10 +223,10 @@ void expect_l_shape_resting(const Ground &ground, const vector3 &ground_pos) {
             auto part = part_of(p.featureA);
             ASSERT_TRUE(part == 0 || part == 1) << "part " << part;
             parts.insert(part);
-            EXPECT_NEAR(p.distance, -depth, tol) << "yaw " << yaw;
-            expect_vec_near(p.normal, vector3_y, tol);
-            EXPECT_NEAR(p.pivotA.y, -0.25, tol);
-            EXPECT_NEAR(box_child_sdf(l, part, p.pivotA), 0, tol)
+            EXPECT_NEAR(p.distance, -compound_depth, compound_tol) << "yaw " << yaw;
+            expect_vec_near(p.normal, vector3_y, compound_tol);
+            EXPECT_NEAR(p.pivotA.y, -0.25, compound_tol);
+            EXPECT_NEAR(box_child_sdf(l, part, p.pivotA), 0, compound_tol)
                 << "pivot " << str(p.pivotA) << " part " << part;
         }
         EXPECT_EQ(parts.size(), 2u) << "yaw " << yaw;
@@ -256,25 +254,25 @@ void expect_on_child_1(const B &shape, scalar bottom, scalar gap, unsigned seed)
                                 quaternion_identity,
                                 scalar(0.02)};
         auto ctx = i == 0 ? local : moved(local, random.vec(-3, 3), random.orientation());
-        auto r = run(l, shape, ctx);
+        auto r = collide_compound_checked(l, shape, ctx);
         if (gap > ctx.threshold) {
             EXPECT_EQ(r.num_points, 0u) << "gap " << gap;
             continue;
         }
         ASSERT_GT(r.num_points, 0u) << "gap " << gap;
-        EXPECT_NEAR(min_distance(r), gap, tol);
+        EXPECT_NEAR(min_distance(r), gap, compound_tol);
         for (std::size_t k = 0; k < r.num_points; ++k) {
             const auto &p = r.point[k];
             EXPECT_EQ(part_of(p.featureA), 1);
-            expect_vec_near(p.normal, rotate(ctx.ornA, -vector3_y), tol);
-            EXPECT_NEAR(box_child_sdf(l, 1, p.pivotA), 0, tol) << "pivot " << str(p.pivotA);
+            expect_vec_near(p.normal, rotate(ctx.ornA, -vector3_y), compound_tol);
+            EXPECT_NEAR(box_child_sdf(l, 1, p.pivotA), 0, compound_tol) << "pivot " << str(p.pivotA);
         }
     }
 }
 
 template<typename B>
 void expect_resting_and_separated(const B &shape, scalar bottom, unsigned seed) {
-    expect_on_child_1(shape, bottom, -depth, seed);
+    expect_on_child_1(shape, bottom, -compound_depth, seed);
     expect_on_child_1(shape, bottom, scalar(0.01), seed);
     expect_on_child_1(shape, bottom, scalar(0.03), seed);
 }
@@ -309,23 +307,23 @@ TEST(collide_compound_test, compound_on_compound_pairs_children) {
     rng random(20);
     for (auto half_turn : {false, true}) {
         for (int i = 0; i < 3; ++i) {
-            collision_context local{{0, scalar(0.7) - depth, 0.1},
+            collision_context local{{0, scalar(0.7) - compound_depth, 0.1},
                                     quaternion_identity,
                                     vector3_zero,
                                     half_turn ? quaternion_axis_angle(vector3_y, pi) : quaternion_identity,
                                     scalar(0.02)};
             auto ctx = i == 0 ? local : moved(local, random.vec(-3, 3), random.orientation());
-            auto r = run(feet, blocks, ctx);
+            auto r = collide_compound_checked(feet, blocks, ctx);
             ASSERT_GT(r.num_points, 0u);
             std::set<std::pair<int, int>> pairs;
             for (std::size_t k = 0; k < r.num_points; ++k) {
                 const auto &p = r.point[k];
                 auto pa = part_of(p.featureA), pb = part_of(p.featureB);
                 pairs.insert({pa, pb});
-                EXPECT_NEAR(p.distance, -depth, tol);
-                expect_vec_near(p.normal, rotate(ctx.ornB, vector3_y), tol);
-                EXPECT_NEAR(box_child_sdf(feet, pa, p.pivotA), 0, tol);
-                EXPECT_NEAR(box_child_sdf(blocks, pb, p.pivotB), 0, tol);
+                EXPECT_NEAR(p.distance, -compound_depth, compound_tol);
+                expect_vec_near(p.normal, rotate(ctx.ornB, vector3_y), compound_tol);
+                EXPECT_NEAR(box_child_sdf(feet, pa, p.pivotA), 0, compound_tol);
+                EXPECT_NEAR(box_child_sdf(blocks, pb, p.pivotB), 0, compound_tol);
             }
             auto expected = half_turn ? std::set<std::pair<int, int>>{{0, 1}, {1, 0}}
                                       : std::set<std::pair<int, int>>{{0, 0}, {1, 1}};
@@ -337,7 +335,7 @@ TEST(collide_compound_test, compound_on_compound_pairs_children) {
                                  vector3_zero,
                                  quaternion_identity,
                                  scalar(0.02)};
-    EXPECT_EQ(run(feet, blocks, ctx).num_points, 0u);
+    EXPECT_EQ(collide_compound_checked(feet, blocks, ctx).num_points, 0u);
 }
 
 // 4 x 4 blocks (more than max_children_without_tree, so queries go through the tree) and a small
@@ -355,15 +353,16 @@ TEST(collide_compound_test, tree_compound_reports_only_the_touched_child) {
     auto small = box_shape{{0.1, 0.1, 0.1}};
     rng random(30);
     for (int k = 0; k < 16; ++k) {
-        auto top = grid.children[std::size_t(k)].position + vector3{0.05, scalar(0.35) - depth, -0.05};
+        auto top =
+            grid.children[std::size_t(k)].position + vector3{0.05, scalar(0.35) - compound_depth, -0.05};
         collision_context local{vector3_zero, quaternion_identity, top, quaternion_identity, scalar(0.02)};
         auto ctx = moved(local, random.vec(-3, 3), random.orientation());
-        auto r = run(grid, small, ctx);
+        auto r = collide_compound_checked(grid, small, ctx);
         ASSERT_GT(r.num_points, 0u) << "child " << k;
-        EXPECT_NEAR(min_distance(r), -depth, tol) << "child " << k;
+        EXPECT_NEAR(min_distance(r), -compound_depth, compound_tol) << "child " << k;
         for (std::size_t i = 0; i < r.num_points; ++i) {
             EXPECT_EQ(part_of(r.point[i].featureA), k);
-            EXPECT_NEAR(box_child_sdf(grid, k, r.point[i].pivotA), 0, tol);
+            EXPECT_NEAR(box_child_sdf(grid, k, r.point[i].pivotA), 0, compound_tol);
         }
     }
 }
@@ -371,15 +370,18 @@ TEST(collide_compound_test, tree_compound_reports_only_the_touched_child) {
 TEST(collide_compound_test, features_without_child_feature_still_name_the_child) {
     // Sphere-plane reports no feature on the sphere: the compound reports monostate with the part.
     auto c = make_compound({{box_shape{{0.5, 0.5, 0.5}}, {0, 3, 0}}, {sphere_shape{0.5}, {2, 0, 0}}});
-    collision_context ctx{
-        {0, scalar(0.5) - depth, 0}, quaternion_identity, vector3_zero, quaternion_identity, scalar(0.02)};
-    auto r = run(c, plane_shape{vector3_y, 0}, ctx);
+    collision_context ctx{{0, scalar(0.5) - compound_depth, 0},
+                          quaternion_identity,
+                          vector3_zero,
+                          quaternion_identity,
+                          scalar(0.02)};
+    auto r = collide_compound_checked(c, plane_shape{vector3_y, 0}, ctx);
     ASSERT_EQ(r.num_points, 1u);
     ASSERT_TRUE(r.point[0].featureA.has_value());
     EXPECT_TRUE(std::holds_alternative<std::monostate>(r.point[0].featureA->feature));
     EXPECT_EQ(r.point[0].featureA->part, 1);
-    EXPECT_NEAR(r.point[0].distance, -depth, tol);
-    expect_vec_near(r.point[0].pivotA, {2, -0.5, 0}, tol);
+    EXPECT_NEAR(r.point[0].distance, -compound_depth, compound_tol);
+    expect_vec_near(r.point[0].pivotA, {2, -0.5, 0}, compound_tol);
 }
 
 namespace {
@@ -451,11 +453,11 @@ child_points brute_force(const compound_shape &a, const B &b, const collision_co
 
 template<typename B>
 int expect_matches_brute_force(const compound_shape &a, const B &b, const collision_context &ctx, int i) {
-    auto r = run(a, b, ctx);
+    auto r = collide_compound_checked(a, b, ctx);
     auto expected = brute_force(a, b, ctx);
     EXPECT_EQ(r.num_points > 0, expected.any) << "case " << i;
     if (r.num_points == 0 || !expected.any) return 0;
-    EXPECT_NEAR(min_distance(r), expected.min_distance, tol) << "case " << i;
+    EXPECT_NEAR(min_distance(r), expected.min_distance, compound_tol) << "case " << i;
     for (std::size_t k = 0; k < r.num_points; ++k) {
         auto pa = part_of(r.point[k].featureA);
         auto pb = std::is_same_v<B, compound_shape> ? part_of(r.point[k].featureB) : -1;

@@ -29,7 +29,7 @@ using edyn::test::random_orientation;
 
 constexpr coordinate_axis all_axes[] = {coordinate_axis::x, coordinate_axis::y, coordinate_axis::z};
 // Geometry of one collide() call is exact to float rounding on shapes of about a metre.
-constexpr scalar tol = scalar(2e-5);
+constexpr scalar cylinder_tol = scalar(2e-5);
 
 quaternion axis_to(coordinate_axis axis, const vector3 &dir) {
     return shortest_arc(coordinate_axis_vector(axis), normalize(dir));
@@ -63,17 +63,17 @@ vector3 world_b(const collision_context &ctx, const collision_result::collision_
 // Runs collide(a, b) and collide(b, a), checks what must hold for every result and that the
 // two orders agree with A and B exchanged; returns the (a, b) result.
 template<typename A, typename B>
-collision_result run(const A &a, const B &b, const collision_context &ctx) {
+collision_result collide_cylinder_checked(const A &a, const B &b, const collision_context &ctx) {
     collision_result r;
     collide(a, b, ctx, r);
     EXPECT_LE(r.num_points, collision_result::max_contacts);
     for (std::size_t i = 0; i < r.num_points; ++i) {
         const auto &p = r.point[i];
         EXPECT_NEAR(length(p.normal), 1, 1e-5);
-        EXPECT_LE(p.distance, ctx.threshold + tol);
+        EXPECT_LE(p.distance, ctx.threshold + cylinder_tol);
         auto d = world_a<A, B>(ctx, p) - world_b<A, B>(ctx, p);
-        EXPECT_NEAR(dot(d, p.normal), p.distance, tol) << "point " << i;
-        EXPECT_NEAR(length(d - p.normal * p.distance), 0, tol)
+        EXPECT_NEAR(dot(d, p.normal), p.distance, cylinder_tol) << "point " << i;
+        EXPECT_NEAR(length(d - p.normal * p.distance), 0, cylinder_tol)
             << "pivots apart across the normal, point " << i;
     }
     collision_result s;
@@ -94,9 +94,9 @@ collision_result run(const A &a, const B &b, const collision_context &ctx) {
         }
         if (s.num_points == 0) break;
         const auto &q = s.point[match];
-        EXPECT_NEAR(best, 0, 2 * tol) << "point " << i;
-        EXPECT_NEAR(distance(p.normal, -q.normal), 0, tol);
-        EXPECT_NEAR(p.distance, q.distance, tol);
+        EXPECT_NEAR(best, 0, 2 * cylinder_tol) << "point " << i;
+        EXPECT_NEAR(distance(p.normal, -q.normal), 0, cylinder_tol);
+        EXPECT_NEAR(p.distance, q.distance, cylinder_tol);
         EXPECT_TRUE(p.featureA == q.featureB);
         EXPECT_TRUE(p.featureB == q.featureA);
     }
@@ -436,14 +436,14 @@ TEST(CollideCylinderCylinder, StackedCoaxialCapsGiveTheSmallerRim) {
             auto gap = scalar(0.01);
             auto ctx = make_ctx({0, 0.7f + gap, 0}, axis_to(axis_a, vector3_y), vector3_zero,
                                 axis_to(axis_b, vector3_y));
-            auto r = run(a, b, ctx);
+            auto r = collide_cylinder_checked(a, b, ctx);
             ASSERT_EQ(r.num_points, 4u);
             for (std::size_t i = 0; i < 4; ++i) {
                 const auto &p = r.point[i];
-                EXPECT_NEAR(p.distance, gap, tol);
-                expect_vec_near(p.normal, vector3_y, tol);
+                EXPECT_NEAR(p.distance, gap, cylinder_tol);
+                expect_vec_near(p.normal, vector3_y, cylinder_tol);
                 auto pa = world_a<cylinder_shape, cylinder_shape>(ctx, p);
-                EXPECT_NEAR(pa.y, 0.3f + gap, tol);
+                EXPECT_NEAR(pa.y, 0.3f + gap, cylinder_tol);
                 EXPECT_NEAR(std::hypot(pa.x, pa.z), a.radius, 1e-4);
                 expect_feature(p.featureA, cylinder_feature::face, 1);
                 expect_feature(p.featureB, cylinder_feature::face, 0);
@@ -460,14 +460,14 @@ TEST(CollideCylinderCylinder, OffsetCapsGiveTheLensCorners) {
     cylinder_shape b{scalar(0.5), scalar(0.3), coordinate_axis::y};
     auto depth = scalar(0.005);
     auto ctx = make_ctx({0.6f, 0.7f - depth, 0}, quaternion_identity, vector3_zero, quaternion_identity);
-    auto r = run(a, b, ctx);
+    auto r = collide_cylinder_checked(a, b, ctx);
     ASSERT_EQ(r.num_points, 4u);
     // Lens of two unit-diameter discs 0.6 apart: corners (0.3, +-0.4), tips at x 0.1 and 0.5.
     bool corner_pos = false, corner_neg = false, tip_a = false, tip_b = false;
     for (std::size_t i = 0; i < 4; ++i) {
         const auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, -depth, tol);
-        expect_vec_near(p.normal, vector3_y, tol);
+        EXPECT_NEAR(p.distance, -depth, cylinder_tol);
+        expect_vec_near(p.normal, vector3_y, cylinder_tol);
         auto w = world_a<cylinder_shape, cylinder_shape>(ctx, p);
         EXPECT_LE(std::hypot(w.x - 0.6f, w.z), a.radius + 1e-4);
         EXPECT_LE(std::hypot(w.x, w.z), b.radius + 1e-4);
@@ -487,22 +487,22 @@ TEST(CollideCylinderCylinder, ParallelSidesGiveTheOverlapEnds) {
             auto gap = scalar(-0.004);
             auto ctx = make_ctx({0.2f, 0.7f + gap, 0}, axis_to(axis_a, vector3_x), vector3_zero,
                                 axis_to(axis_b, -vector3_x));
-            auto r = run(a, b, ctx);
+            auto r = collide_cylinder_checked(a, b, ctx);
             ASSERT_EQ(r.num_points, 2u);
             scalar xs[2];
             for (std::size_t i = 0; i < 2; ++i) {
                 const auto &p = r.point[i];
-                EXPECT_NEAR(p.distance, gap, tol);
-                expect_vec_near(p.normal, vector3_y, tol);
+                EXPECT_NEAR(p.distance, gap, cylinder_tol);
+                expect_vec_near(p.normal, vector3_y, cylinder_tol);
                 expect_feature(p.featureA, cylinder_feature::side_edge, 0);
                 expect_feature(p.featureB, cylinder_feature::side_edge, 0);
                 auto w = world_a<cylinder_shape, cylinder_shape>(ctx, p);
-                EXPECT_NEAR(w.y, 0.4f + gap, tol);
-                EXPECT_NEAR(w.z, 0, tol);
+                EXPECT_NEAR(w.y, 0.4f + gap, cylinder_tol);
+                EXPECT_NEAR(w.z, 0, cylinder_tol);
                 xs[i] = w.x;
             }
-            EXPECT_NEAR(std::min(xs[0], xs[1]), -0.4f, tol);
-            EXPECT_NEAR(std::max(xs[0], xs[1]), 0.5f, tol);
+            EXPECT_NEAR(std::min(xs[0], xs[1]), -0.4f, cylinder_tol);
+            EXPECT_NEAR(std::max(xs[0], xs[1]), 0.5f, cylinder_tol);
         }
     }
 }
@@ -514,12 +514,12 @@ TEST(CollideCylinderCylinder, CrossedSidesGiveOnePoint) {
         auto gap = scalar(0.012);
         auto ctx = make_ctx({0.05f, 0.7f + gap, -0.1f}, axis_to(axis, vector3_x), vector3_zero,
                             axis_to(axis, vector3_z));
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 1u);
         const auto &p = r.point[0];
-        EXPECT_NEAR(p.distance, gap, tol);
-        expect_vec_near(p.normal, vector3_y, tol);
-        expect_vec_near(world_b<cylinder_shape, cylinder_shape>(ctx, p), {0, 0.4f, -0.1f}, tol);
+        EXPECT_NEAR(p.distance, gap, cylinder_tol);
+        expect_vec_near(p.normal, vector3_y, cylinder_tol);
+        expect_vec_near(world_b<cylinder_shape, cylinder_shape>(ctx, p), {0, 0.4f, -0.1f}, cylinder_tol);
         expect_feature(p.featureA, cylinder_feature::side_edge, 0);
         expect_feature(p.featureB, cylinder_feature::side_edge, 0);
     }
@@ -534,13 +534,13 @@ TEST(CollideCylinderCylinder, TiltedRimOnCapGivesTheDeepestRimPoint) {
         auto gap = scalar(0.008);
         auto lowest = a.half_length * std::cos(to_radians(30)) + a.radius * std::sin(to_radians(30));
         auto ctx = make_ctx({0.1f, 0.2f + gap + lowest, 0}, orn_a, vector3_zero, quaternion_identity);
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 1u);
         const auto &p = r.point[0];
-        EXPECT_NEAR(p.distance, gap, tol);
-        expect_vec_near(p.normal, vector3_y, tol);
+        EXPECT_NEAR(p.distance, gap, cylinder_tol);
+        expect_vec_near(p.normal, vector3_y, cylinder_tol);
         auto w = world_a<cylinder_shape, cylinder_shape>(ctx, p);
-        EXPECT_NEAR(w.y, 0.2f + gap, tol);
+        EXPECT_NEAR(w.y, 0.2f + gap, cylinder_tol);
         auto cap_center = ctx.posA - rotate(tilt, vector3_y) * a.half_length;
         EXPECT_NEAR(distance(w, cap_center), a.radius, 1e-4);
         expect_feature(p.featureA, cylinder_feature::cap_edge, 1);
@@ -552,30 +552,40 @@ TEST(CollideCylinderCylinder, ThresholdDecides) {
     cylinder_shape a{scalar(0.5), scalar(0.4), coordinate_axis::z};
     cylinder_shape b{scalar(0.5), scalar(0.3), coordinate_axis::x};
     auto orn_a = axis_to(coordinate_axis::z, vector3_y), orn_b = axis_to(coordinate_axis::x, vector3_y);
-    EXPECT_EQ(run(a, b, make_ctx({0.2f, 0.75f, 0}, orn_a, vector3_zero, orn_b)).num_points, 0u);
-    EXPECT_EQ(run(a, b, make_ctx({0.2f, 0.715f, 0}, orn_a, vector3_zero, orn_b)).num_points, 4u);
-    EXPECT_EQ(run(a, b, make_ctx({0.2f, 0.75f, 0}, orn_a, vector3_zero, orn_b, scalar(0.06))).num_points, 4u);
+    EXPECT_EQ(
+        collide_cylinder_checked(a, b, make_ctx({0.2f, 0.75f, 0}, orn_a, vector3_zero, orn_b)).num_points,
+        0u);
+    EXPECT_EQ(
+        collide_cylinder_checked(a, b, make_ctx({0.2f, 0.715f, 0}, orn_a, vector3_zero, orn_b)).num_points,
+        4u);
+    EXPECT_EQ(
+        collide_cylinder_checked(a, b, make_ctx({0.2f, 0.75f, 0}, orn_a, vector3_zero, orn_b, scalar(0.06)))
+            .num_points,
+        4u);
     // Apart side by side, beyond and within the threshold.
-    EXPECT_EQ(run(a, b, make_ctx({1.03f, 0, 0}, orn_a, vector3_zero, orn_b)).num_points, 0u);
-    auto r = run(a, b, make_ctx({1.01f, 0, 0}, orn_a, vector3_zero, orn_b));
+    EXPECT_EQ(collide_cylinder_checked(a, b, make_ctx({1.03f, 0, 0}, orn_a, vector3_zero, orn_b)).num_points,
+              0u);
+    auto r = collide_cylinder_checked(a, b, make_ctx({1.01f, 0, 0}, orn_a, vector3_zero, orn_b));
     ASSERT_GT(r.num_points, 0u);
-    EXPECT_NEAR(min_distance(r), 0.01f, tol);
+    EXPECT_NEAR(min_distance(r), 0.01f, cylinder_tol);
 }
 
 TEST(CollideCylinderCylinder, DeepPenetrationTakesTheLeastDepth) {
     cylinder_shape a{scalar(0.5), scalar(0.5), coordinate_axis::y};
     cylinder_shape b{scalar(0.5), scalar(0.5), coordinate_axis::y};
     // Coaxial, 0.2 apart: 0.8 deep along the axis, 1.0 across.
-    auto r = run(a, b, make_ctx({0, 0.2f, 0}, quaternion_identity, vector3_zero, quaternion_identity));
+    auto r = collide_cylinder_checked(
+        a, b, make_ctx({0, 0.2f, 0}, quaternion_identity, vector3_zero, quaternion_identity));
     ASSERT_EQ(r.num_points, 4u);
-    EXPECT_NEAR(min_distance(r), -0.8f, tol);
-    expect_vec_near(r.point[0].normal, vector3_y, tol);
+    EXPECT_NEAR(min_distance(r), -0.8f, cylinder_tol);
+    expect_vec_near(r.point[0].normal, vector3_y, cylinder_tol);
     // Side by side 0.3 apart and long: 0.7 deep across.
     cylinder_shape c{scalar(0.5), scalar(2), coordinate_axis::y};
-    auto s = run(c, c, make_ctx({0.3f, 0.1f, 0}, quaternion_identity, vector3_zero, quaternion_identity));
+    auto s = collide_cylinder_checked(
+        c, c, make_ctx({0.3f, 0.1f, 0}, quaternion_identity, vector3_zero, quaternion_identity));
     ASSERT_GT(s.num_points, 0u);
-    EXPECT_NEAR(min_distance(s), -0.7f, tol);
-    expect_vec_near(s.point[0].normal, vector3_x, tol);
+    EXPECT_NEAR(min_distance(s), -0.7f, cylinder_tol);
+    expect_vec_near(s.point[0].normal, vector3_x, cylinder_tol);
 }
 
 TEST(CollideCylinderCylinder, RigidMotionOfBothLeavesTheResult) {
@@ -585,14 +595,14 @@ TEST(CollideCylinderCylinder, RigidMotionOfBothLeavesTheResult) {
     auto base =
         make_ctx({0.1f, 0.55f, 0.2f}, quaternion_axis_angle(normalize(vector3{1, 2, 3}), 0.7f), vector3_zero,
                  quaternion_axis_angle(normalize(vector3{-1, 0, 2}), 0.3f), scalar(0.5));
-    auto reference = run(a, b, base);
+    auto reference = collide_cylinder_checked(a, b, base);
     ASSERT_GT(reference.num_points, 0u);
     for (int i = 0; i < 10; ++i) {
         auto q = random_orientation(rng);
         auto t = random_direction(rng) * scalar(5);
         auto ctx = make_ctx(t + rotate(q, base.posA), q * base.ornA, t + rotate(q, base.posB), q * base.ornB,
                             base.threshold);
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, reference.num_points);
         for (std::size_t j = 0; j < r.num_points; ++j) {
             EXPECT_NEAR(r.point[j].distance, reference.point[j].distance, 1e-4);
@@ -631,18 +641,19 @@ TEST(CollideCylinderCylinder, ApartPairsStopAtTheirClosestPair) {
     cylinder_shape a{scalar(0.3), scalar(0.5), coordinate_axis::y};
     auto gap = scalar(0.01);
     // Cap over cap, offset: the gap along y.
-    auto r = run(a, a, make_ctx({0.2f, 1 + gap, 0}, quaternion_identity, vector3_zero, quaternion_identity));
+    auto r = collide_cylinder_checked(
+        a, a, make_ctx({0.2f, 1 + gap, 0}, quaternion_identity, vector3_zero, quaternion_identity));
     ASSERT_EQ(r.num_points, 4u);
-    EXPECT_NEAR(min_distance(r), gap, tol);
-    expect_vec_near(r.point[0].normal, vector3_y, tol);
+    EXPECT_NEAR(min_distance(r), gap, cylinder_tol);
+    expect_vec_near(r.point[0].normal, vector3_y, cylinder_tol);
     // A's rim beside B's side: A tilted about z, so that its point of least x is on its upper rim,
     // placed at x = 0.3 + gap beside the middle of B's side.
     auto tilt = quaternion_axis_angle(vector3_z, 0.4f);
     auto rim_low = rotate(tilt, vector3{-0.3f, 0.5f, 0});
-    auto s =
-        run(a, a, make_ctx(vector3{0.3f + gap, 0, 0} - rim_low, tilt, vector3_zero, quaternion_identity));
+    auto s = collide_cylinder_checked(
+        a, a, make_ctx(vector3{0.3f + gap, 0, 0} - rim_low, tilt, vector3_zero, quaternion_identity));
     ASSERT_GT(s.num_points, 0u);
-    EXPECT_NEAR(min_distance(s), gap, tol);
+    EXPECT_NEAR(min_distance(s), gap, cylinder_tol);
     expect_vec_near(s.point[0].normal, vector3_x, 1e-4);
 }
 
@@ -660,15 +671,15 @@ TEST(CollideCylinderBox, StandingOnAFaceGivesFourRimPoints) {
         auto gap = scalar(-0.003);
         auto ctx =
             make_ctx({0.1f, 0.8f + gap, -0.2f}, axis_to(axis, vector3_y), vector3_zero, quaternion_identity);
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 4u);
         for (std::size_t i = 0; i < 4; ++i) {
             const auto &p = r.point[i];
-            EXPECT_NEAR(p.distance, gap, tol);
-            expect_vec_near(p.normal, vector3_y, tol);
+            EXPECT_NEAR(p.distance, gap, cylinder_tol);
+            expect_vec_near(p.normal, vector3_y, cylinder_tol);
             auto w = world_a<cylinder_shape, box_shape>(ctx, p);
             EXPECT_NEAR(std::hypot(w.x - 0.1f, w.z + 0.2f), a.radius, 1e-4);
-            EXPECT_NEAR((world_b<cylinder_shape, box_shape>(ctx, p).y), 0.3f, tol);
+            EXPECT_NEAR((world_b<cylinder_shape, box_shape>(ctx, p).y), 0.3f, cylinder_tol);
             expect_feature(p.featureA, cylinder_feature::face, 1);
             expect_feature(p.featureB, box_feature::face, 2);
         }
@@ -683,15 +694,15 @@ TEST(CollideCylinderBox, CapOverACornerClipsTheCircleToTheFace) {
     box_shape b{{1, 0.3f, 1}};
     auto gap = scalar(0.01);
     auto ctx = make_ctx({1, 0.8f + gap, 1}, quaternion_identity, vector3_zero, quaternion_identity);
-    auto r = run(a, b, ctx);
+    auto r = collide_cylinder_checked(a, b, ctx);
     ASSERT_GE(r.num_points, 3u);
     bool corner = false, crossing_x = false, crossing_z = false;
     for (std::size_t i = 0; i < r.num_points; ++i) {
         const auto &p = r.point[i];
-        EXPECT_NEAR(p.distance, gap, tol);
+        EXPECT_NEAR(p.distance, gap, cylinder_tol);
         auto w = world_b<cylinder_shape, box_shape>(ctx, p);
-        EXPECT_LE(w.x, 1 + tol);
-        EXPECT_LE(w.z, 1 + tol);
+        EXPECT_LE(w.x, 1 + cylinder_tol);
+        EXPECT_LE(w.z, 1 + cylinder_tol);
         EXPECT_LE(std::hypot(w.x - 1, w.z - 1), a.radius + 1e-4);
         corner |= distance(w, vector3{1, 0.3f, 1}) < 1e-4;
         crossing_x |= distance(w, vector3{0.6f, 0.3f, 1}) < 1e-4;
@@ -710,16 +721,16 @@ TEST(CollideCylinderBox, SmallBoxOnALargeCapGivesTheBoxCorners) {
         auto gap = scalar(0.005);
         auto spin = quaternion_axis_angle(vector3_y, 0.4f);
         auto ctx = make_ctx({0.3f, 0.4f + gap, 0.1f}, spin, vector3_zero, axis_to(axis, vector3_y));
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 4u);
         for (std::size_t i = 0; i < 4; ++i) {
             const auto &p = r.point[i];
-            EXPECT_NEAR(p.distance, gap, tol);
-            expect_vec_near(p.normal, vector3_y, tol);
+            EXPECT_NEAR(p.distance, gap, cylinder_tol);
+            expect_vec_near(p.normal, vector3_y, cylinder_tol);
             auto local = p.pivotA;
-            EXPECT_NEAR(std::abs(local.x), 0.2f, tol);
-            EXPECT_NEAR(local.y, -0.1f, tol);
-            EXPECT_NEAR(std::abs(local.z), 0.15f, tol);
+            EXPECT_NEAR(std::abs(local.x), 0.2f, cylinder_tol);
+            EXPECT_NEAR(local.y, -0.1f, cylinder_tol);
+            EXPECT_NEAR(std::abs(local.z), 0.15f, cylinder_tol);
             expect_feature(p.featureA, box_feature::face, 3);
             expect_feature(p.featureB, cylinder_feature::face, 0);
         }
@@ -734,21 +745,21 @@ TEST(CollideCylinderBox, LyingOnAFaceGivesTheSideLineClipped) {
         // Overhangs the face's +x edge: the side line is clipped at x = 0.5.
         auto ctx =
             make_ctx({0.4f, 0.5f + gap, 0.3f}, axis_to(axis, vector3_x), vector3_zero, quaternion_identity);
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 2u);
         scalar xs[2];
         for (std::size_t i = 0; i < 2; ++i) {
             const auto &p = r.point[i];
-            EXPECT_NEAR(p.distance, gap, tol);
-            expect_vec_near(p.normal, vector3_y, tol);
+            EXPECT_NEAR(p.distance, gap, cylinder_tol);
+            expect_vec_near(p.normal, vector3_y, cylinder_tol);
             expect_feature(p.featureA, cylinder_feature::side_edge, 0);
             expect_feature(p.featureB, box_feature::face, 2);
             auto w = world_b<cylinder_shape, box_shape>(ctx, p);
-            EXPECT_NEAR(w.z, 0.3f, tol);
+            EXPECT_NEAR(w.z, 0.3f, cylinder_tol);
             xs[i] = w.x;
         }
-        EXPECT_NEAR(std::min(xs[0], xs[1]), -0.4f, tol);
-        EXPECT_NEAR(std::max(xs[0], xs[1]), 0.5f, tol);
+        EXPECT_NEAR(std::min(xs[0], xs[1]), -0.4f, cylinder_tol);
+        EXPECT_NEAR(std::max(xs[0], xs[1]), 0.5f, cylinder_tol);
     }
 }
 
@@ -762,10 +773,10 @@ TEST(CollideCylinderBox, TiltedRimOnAFaceGivesOnePoint) {
         auto lowest = a.half_length * std::cos(angle) + a.radius * std::sin(angle);
         auto ctx = make_ctx({0, 0.2f + gap + lowest, 0.2f}, tilt * axis_to(axis, vector3_y), vector3_zero,
                             quaternion_identity);
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 1u);
-        EXPECT_NEAR(r.point[0].distance, gap, tol);
-        expect_vec_near(r.point[0].normal, vector3_y, tol);
+        EXPECT_NEAR(r.point[0].distance, gap, cylinder_tol);
+        expect_vec_near(r.point[0].normal, vector3_y, cylinder_tol);
         expect_feature(r.point[0].featureA, cylinder_feature::cap_edge, 1);
         expect_feature(r.point[0].featureB, box_feature::face, 2);
         // Nearly upright, the neighbouring rim points come within the threshold.
@@ -776,9 +787,9 @@ TEST(CollideCylinderBox, TiltedRimOnAFaceGivesOnePoint) {
         auto ctx2 = make_ctx({0, 0.2f + gap2 + lowest2, 0.2f},
                              quaternion_axis_angle(vector3_x, small) * axis_to(axis, vector3_y), vector3_zero,
                              quaternion_identity);
-        auto r2 = run(a, b, ctx2);
+        auto r2 = collide_cylinder_checked(a, b, ctx2);
         ASSERT_EQ(r2.num_points, 3u);
-        EXPECT_NEAR(min_distance(r2), gap2, tol);
+        EXPECT_NEAR(min_distance(r2), gap2, cylinder_tol);
         for (std::size_t i = 0; i < 3; ++i)
             expect_feature(r2.point[i].featureA, cylinder_feature::cap_edge, 1);
     }
@@ -793,11 +804,11 @@ TEST(CollideCylinderBox, EdgeAcrossTheSideGivesOnePoint) {
         auto top = 0.5f * std::sqrt(2.f);
         auto ctx = make_ctx({0.1f, top + 0.3f + gap, 0.2f}, axis_to(axis, vector3_x), vector3_zero,
                             quaternion_axis_angle(vector3_z, to_radians(45)));
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 1u);
         const auto &p = r.point[0];
-        EXPECT_NEAR(p.distance, gap, tol);
-        expect_vec_near(p.normal, vector3_y, tol);
+        EXPECT_NEAR(p.distance, gap, cylinder_tol);
+        expect_vec_near(p.normal, vector3_y, cylinder_tol);
         expect_vec_near(world_b<cylinder_shape, box_shape>(ctx, p), {0, top, 0.2f}, 1e-4);
         expect_feature(p.featureA, cylinder_feature::side_edge, 0);
         ASSERT_TRUE(p.featureB.has_value());
@@ -813,9 +824,9 @@ TEST(CollideCylinderBox, RimAgainstAnEdgeIsExact) {
     auto d = scalar(0.01) / std::sqrt(scalar(2));
     auto ctx = make_ctx({0.5f + 0.3f + d, 0.5f + 0.5f + d, 0}, quaternion_identity, vector3_zero,
                         quaternion_identity);
-    auto r = run(a, b, ctx);
+    auto r = collide_cylinder_checked(a, b, ctx);
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, 0.01f, tol);
+    EXPECT_NEAR(r.point[0].distance, 0.01f, cylinder_tol);
     expect_vec_near(r.point[0].normal, normalize(vector3{1, 1, 0}), 1e-4);
     expect_feature(r.point[0].featureA, cylinder_feature::cap_edge, 1);
     // Edge along z (axis 2) on the +x, +y side.
@@ -840,19 +851,19 @@ TEST(CollideCylinderCapsule, LyingOnACapGivesTheSegmentOverTheDisc) {
             auto gap = scalar(0.004);
             auto ctx = make_ctx({0.5f, 0.4f + gap, 0}, axis_to(axis_a, vector3_x), vector3_zero,
                                 axis_to(axis_b, vector3_y));
-            auto r = run(a, b, ctx);
+            auto r = collide_cylinder_checked(a, b, ctx);
             ASSERT_EQ(r.num_points, 2u);
             scalar xs[2];
             for (std::size_t i = 0; i < 2; ++i) {
                 const auto &p = r.point[i];
-                EXPECT_NEAR(p.distance, gap, tol);
-                expect_vec_near(p.normal, vector3_y, tol);
+                EXPECT_NEAR(p.distance, gap, cylinder_tol);
+                expect_vec_near(p.normal, vector3_y, cylinder_tol);
                 expect_feature(p.featureA, capsule_feature::side, 0);
                 expect_feature(p.featureB, cylinder_feature::face, 0);
                 xs[i] = world_b<capsule_shape, cylinder_shape>(ctx, p).x;
             }
-            EXPECT_NEAR(std::min(xs[0], xs[1]), 0.1f, tol);
-            EXPECT_NEAR(std::max(xs[0], xs[1]), 0.6f, tol);
+            EXPECT_NEAR(std::min(xs[0], xs[1]), 0.1f, cylinder_tol);
+            EXPECT_NEAR(std::max(xs[0], xs[1]), 0.6f, cylinder_tol);
         }
     }
 }
@@ -864,25 +875,26 @@ TEST(CollideCylinderCapsule, ParallelAndCrossedSides) {
         auto gap = scalar(-0.002);
         auto ctx =
             make_ctx({0.2f, 0.4f + gap, 0}, axis_to(axis, vector3_x), vector3_zero, axis_to(axis, vector3_x));
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(r.num_points, 2u);
         scalar xs[2];
         for (std::size_t i = 0; i < 2; ++i) {
-            EXPECT_NEAR(r.point[i].distance, gap, tol);
-            expect_vec_near(r.point[i].normal, vector3_y, tol);
+            EXPECT_NEAR(r.point[i].distance, gap, cylinder_tol);
+            expect_vec_near(r.point[i].normal, vector3_y, cylinder_tol);
             expect_feature(r.point[i].featureA, cylinder_feature::side_edge, 0);
             expect_feature(r.point[i].featureB, capsule_feature::side, 0);
             xs[i] = world_a<cylinder_shape, capsule_shape>(ctx, r.point[i]).x;
         }
-        EXPECT_NEAR(std::min(xs[0], xs[1]), -0.4f, tol);
-        EXPECT_NEAR(std::max(xs[0], xs[1]), 0.5f, tol);
+        EXPECT_NEAR(std::min(xs[0], xs[1]), -0.4f, cylinder_tol);
+        EXPECT_NEAR(std::max(xs[0], xs[1]), 0.5f, cylinder_tol);
 
         auto crossed = make_ctx({0.2f, 0.4f + gap, 0.1f}, axis_to(axis, vector3_x), vector3_zero,
                                 axis_to(axis, vector3_z));
-        auto s = run(a, b, crossed);
+        auto s = collide_cylinder_checked(a, b, crossed);
         ASSERT_EQ(s.num_points, 1u);
-        EXPECT_NEAR(s.point[0].distance, gap, tol);
-        expect_vec_near(world_b<cylinder_shape, capsule_shape>(crossed, s.point[0]), {0, 0.1f, 0.1f}, tol);
+        EXPECT_NEAR(s.point[0].distance, gap, cylinder_tol);
+        expect_vec_near(world_b<cylinder_shape, capsule_shape>(crossed, s.point[0]), {0, 0.1f, 0.1f},
+                        cylinder_tol);
     }
 }
 
@@ -892,18 +904,18 @@ TEST(CollideCylinderCapsule, HemisphereOnTheCapAndOnTheRim) {
         cylinder_shape b{scalar(0.5), scalar(0.3), axis};
         auto up_a = axis_to(axis, vector3_y), up_b = axis_to(axis, vector3_y);
         auto gap = scalar(0.007);
-        auto r = run(a, b, make_ctx({0.2f, 0.7f + gap, 0.1f}, up_a, vector3_zero, up_b));
+        auto r = collide_cylinder_checked(a, b, make_ctx({0.2f, 0.7f + gap, 0.1f}, up_a, vector3_zero, up_b));
         ASSERT_EQ(r.num_points, 1u);
-        EXPECT_NEAR(r.point[0].distance, gap, tol);
-        expect_vec_near(r.point[0].normal, vector3_y, tol);
+        EXPECT_NEAR(r.point[0].distance, gap, cylinder_tol);
+        expect_vec_near(r.point[0].normal, vector3_y, cylinder_tol);
         expect_feature(r.point[0].featureA, capsule_feature::hemisphere, 1);
         expect_feature(r.point[0].featureB, cylinder_feature::face, 0);
 
         // The lower end's centre diagonally off the rim at (0.5, 0.3, 0).
         auto ctx = make_ctx({0.6f, 0.4f + 0.3f, 0}, up_a, vector3_zero, up_b, scalar(0.1));
-        auto s = run(a, b, ctx);
+        auto s = collide_cylinder_checked(a, b, ctx);
         ASSERT_EQ(s.num_points, 1u);
-        EXPECT_NEAR(s.point[0].distance, 0.1f * std::sqrt(2.f) - 0.1f, tol);
+        EXPECT_NEAR(s.point[0].distance, 0.1f * std::sqrt(2.f) - 0.1f, cylinder_tol);
         expect_vec_near(s.point[0].normal, normalize(vector3{1, 1, 0}), 1e-4);
         expect_vec_near(world_b<capsule_shape, cylinder_shape>(ctx, s.point[0]), {0.5f, 0.3f, 0}, 1e-4);
         expect_feature(s.point[0].featureA, capsule_feature::hemisphere, 1);
@@ -928,29 +940,34 @@ TEST(CollideCylinderSphere, CapSideAndRim) {
         sphere_shape b{scalar(0.2)};
         auto orn = axis_to(axis, vector3_y);
         // Sphere below cap 1, inside the rim.
-        auto r = run(a, b, make_ctx(vector3_zero, orn, {0.3f, -0.61f, 0}, quaternion_identity));
+        auto r = collide_cylinder_checked(
+            a, b, make_ctx(vector3_zero, orn, {0.3f, -0.61f, 0}, quaternion_identity));
         ASSERT_EQ(r.num_points, 1u);
-        EXPECT_NEAR(r.point[0].distance, 0.01f, tol);
-        expect_vec_near(r.point[0].normal, vector3_y, tol);
-        expect_vec_near(to_world_space(r.point[0].pivotA, vector3_zero, orn), {0.3f, -0.4f, 0}, tol);
+        EXPECT_NEAR(r.point[0].distance, 0.01f, cylinder_tol);
+        expect_vec_near(r.point[0].normal, vector3_y, cylinder_tol);
+        expect_vec_near(to_world_space(r.point[0].pivotA, vector3_zero, orn), {0.3f, -0.4f, 0}, cylinder_tol);
         expect_feature(r.point[0].featureA, cylinder_feature::face, 1);
         EXPECT_FALSE(r.point[0].featureB.has_value());
         // Beside the side.
-        auto s = run(a, b, make_ctx(vector3_zero, orn, {0, 0.1f, 0.69f}, quaternion_identity));
+        auto s = collide_cylinder_checked(a, b,
+                                          make_ctx(vector3_zero, orn, {0, 0.1f, 0.69f}, quaternion_identity));
         ASSERT_EQ(s.num_points, 1u);
-        EXPECT_NEAR(s.point[0].distance, -0.01f, tol);
-        expect_vec_near(s.point[0].normal, -vector3_z, tol);
+        EXPECT_NEAR(s.point[0].distance, -0.01f, cylinder_tol);
+        expect_vec_near(s.point[0].normal, -vector3_z, cylinder_tol);
         expect_feature(s.point[0].featureA, cylinder_feature::side_edge, 0);
         // Diagonally off the rim of cap 0.
         auto d = (scalar(0.2) + scalar(0.015)) / std::sqrt(scalar(2));
-        auto t = run(a, b, make_ctx(vector3_zero, orn, {0.5f + d, 0.4f + d, 0}, quaternion_identity));
+        auto t = collide_cylinder_checked(
+            a, b, make_ctx(vector3_zero, orn, {0.5f + d, 0.4f + d, 0}, quaternion_identity));
         ASSERT_EQ(t.num_points, 1u);
-        EXPECT_NEAR(t.point[0].distance, 0.015f, tol);
+        EXPECT_NEAR(t.point[0].distance, 0.015f, cylinder_tol);
         expect_vec_near(t.point[0].normal, -normalize(vector3{1, 1, 0}), 1e-4);
         expect_feature(t.point[0].featureA, cylinder_feature::cap_edge, 0);
         // Beyond the threshold.
-        EXPECT_EQ(run(a, b, make_ctx(vector3_zero, orn, {0, 0.1f, 0.73f}, quaternion_identity)).num_points,
-                  0u);
+        EXPECT_EQ(
+            collide_cylinder_checked(a, b, make_ctx(vector3_zero, orn, {0, 0.1f, 0.73f}, quaternion_identity))
+                .num_points,
+            0u);
     }
 }
 
@@ -960,16 +977,18 @@ TEST(CollideCylinderSphere, CentreInsideLeavesThroughTheNearerBoundary) {
         sphere_shape b{scalar(0.1)};
         auto orn = axis_to(axis, vector3_y);
         // 0.1 below cap 0, 0.3 inside the side: out through the cap.
-        auto r = run(a, b, make_ctx(vector3_zero, orn, {0.2f, 0.3f, 0}, quaternion_identity));
+        auto r =
+            collide_cylinder_checked(a, b, make_ctx(vector3_zero, orn, {0.2f, 0.3f, 0}, quaternion_identity));
         ASSERT_EQ(r.num_points, 1u);
-        EXPECT_NEAR(r.point[0].distance, -0.2f, tol);
-        expect_vec_near(r.point[0].normal, -vector3_y, tol);
+        EXPECT_NEAR(r.point[0].distance, -0.2f, cylinder_tol);
+        expect_vec_near(r.point[0].normal, -vector3_y, cylinder_tol);
         expect_feature(r.point[0].featureA, cylinder_feature::face, 0);
         // 0.35 below cap 0, 0.05 inside the side: out through the side.
-        auto s = run(a, b, make_ctx(vector3_zero, orn, {0, 0.05f, -0.45f}, quaternion_identity));
+        auto s = collide_cylinder_checked(
+            a, b, make_ctx(vector3_zero, orn, {0, 0.05f, -0.45f}, quaternion_identity));
         ASSERT_EQ(s.num_points, 1u);
-        EXPECT_NEAR(s.point[0].distance, -0.15f, tol);
-        expect_vec_near(s.point[0].normal, vector3_z, tol);
+        EXPECT_NEAR(s.point[0].distance, -0.15f, cylinder_tol);
+        expect_vec_near(s.point[0].normal, vector3_z, cylinder_tol);
         expect_feature(s.point[0].featureA, cylinder_feature::side_edge, 0);
     }
 }
@@ -997,23 +1016,23 @@ TEST(CollideCylinderPlane, StandingLyingAndTilted) {
         // Standing on cap 1: four rim points, a quarter turn apart.
         auto standing = make_ctx(base + n * (0.5f + gap), axis_to(axis, n), {9, 9, 9},
                                  quaternion_axis_angle(vector3_x, 1));
-        auto r = run(a, b, standing);
+        auto r = collide_cylinder_checked(a, b, standing);
         ASSERT_EQ(r.num_points, 4u);
         for (std::size_t i = 0; i < 4; ++i) {
-            EXPECT_NEAR(r.point[i].distance, gap, tol);
-            expect_vec_near(r.point[i].normal, n, tol);
+            EXPECT_NEAR(r.point[i].distance, gap, cylinder_tol);
+            expect_vec_near(r.point[i].normal, n, cylinder_tol);
             expect_feature(r.point[i].featureA, cylinder_feature::face, 1);
-            EXPECT_NEAR(dot(n, r.point[i].pivotB) - b.constant, 0, tol);
+            EXPECT_NEAR(dot(n, r.point[i].pivotB) - b.constant, 0, cylinder_tol);
         }
         EXPECT_NEAR((manifold_area<cylinder_shape, plane_shape>(r, standing)), 2 * a.radius * a.radius, 1e-3);
         // Lying along t1: the two ends of the lowest side line.
         auto lying = make_ctx(base + n * (0.3f + gap), axis_to(axis, t1), vector3_zero, quaternion_identity);
-        auto s = run(a, b, lying);
+        auto s = collide_cylinder_checked(a, b, lying);
         ASSERT_EQ(s.num_points, 2u);
         for (std::size_t i = 0; i < 2; ++i) {
-            EXPECT_NEAR(s.point[i].distance, gap, tol);
+            EXPECT_NEAR(s.point[i].distance, gap, cylinder_tol);
             expect_feature(s.point[i].featureA, cylinder_feature::side_edge, 0);
-            EXPECT_NEAR(std::abs(dot(s.point[i].pivotB - base, t1)), 0.5f, tol);
+            EXPECT_NEAR(std::abs(dot(s.point[i].pivotB - base, t1)), 0.5f, cylinder_tol);
         }
         // Tilted by 30 degrees about t0: the deepest rim point only.
         auto angle = to_radians(30);
@@ -1021,13 +1040,13 @@ TEST(CollideCylinderPlane, StandingLyingAndTilted) {
         auto lowest = a.half_length * std::cos(angle) + a.radius * std::sin(angle);
         auto tilted =
             make_ctx(base + n * (lowest + gap), tilt * axis_to(axis, n), vector3_zero, quaternion_identity);
-        auto t = run(a, b, tilted);
+        auto t = collide_cylinder_checked(a, b, tilted);
         ASSERT_EQ(t.num_points, 1u);
-        EXPECT_NEAR(t.point[0].distance, gap, tol);
+        EXPECT_NEAR(t.point[0].distance, gap, cylinder_tol);
         expect_feature(t.point[0].featureA, cylinder_feature::cap_edge, 1);
         // Apart beyond the threshold.
         auto apart = make_ctx(base + n * 0.53f, axis_to(axis, n), vector3_zero, quaternion_identity);
-        EXPECT_EQ(run(a, b, apart).num_points, 0u);
+        EXPECT_EQ(collide_cylinder_checked(a, b, apart).num_points, 0u);
     }
 }
 
@@ -1040,7 +1059,7 @@ TEST(CollideCylinderPlane, RandomAgainstSampledRims) {
         plane_shape b{n, scalar(0.2)};
         auto ctx = make_ctx(n * (b.constant + height(rng)), random_orientation(rng), vector3_zero,
                             quaternion_identity, scalar(100));
-        auto r = run(a, b, ctx);
+        auto r = collide_cylinder_checked(a, b, ctx);
         ASSERT_GT(r.num_points, 0u);
         auto rims = support_of(a, ctx.posA, ctx.ornA);
         auto lowest = -rims.support(-n) - b.constant;

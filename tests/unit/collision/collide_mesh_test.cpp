@@ -19,13 +19,7 @@ using namespace collide_test;
 
 namespace {
 
-constexpr scalar tol = scalar(1e-4);
-
-vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar(z)}; }
-
-mesh_shape make_mesh(const std::vector<vector3> &vertices, const std::vector<int> &indices) {
-    return mesh_shape{test::make_triangle_mesh(vertices, indices)};
-}
+constexpr scalar mesh_tol = scalar(1e-4);
 
 // Floor of n x n unit cells in the xz plane at y = 0, front +y; cell (i, j) spans
 // [i, i + 1] x [j, j + 1] (support/grid_mesh.hpp).
@@ -38,19 +32,19 @@ mesh_shape big_triangle(const vector3 &pos = vector3_zero, const quaternion &orn
                            vec(-4, 0, -4),   vec(-4, 0, 4),    vec(6, 0, 0)};
     for (auto &p : v)
         p = to_world_space(p, pos, orn);
-    return make_mesh(v, {0, 1, 2, 3, 4, 5});
+    return test::make_mesh(v, {0, 1, 2, 3, 4, 5});
 }
 
 // Ridge from (0, h, -1) to (0, h, 1): triangle 0 on the -x side, triangle 1 on the +x side; the
 // ridge is edge 1 of both.
 mesh_shape roof_mesh(scalar h) {
-    return make_mesh({vec(-1, 0, 0), vec(0, h, 1), vec(0, h, -1), vec(1, 0, 0)}, {0, 1, 2, 3, 2, 1});
+    return test::make_mesh({vec(-1, 0, 0), vec(0, h, 1), vec(0, h, -1), vec(1, 0, 0)}, {0, 1, 2, 3, 2, 1});
 }
 
 // Square pyramid of apex (0, 1, 0) over (+-1, 0, +-1): the apex is vertex 0 of all four triangles.
 mesh_shape pyramid_mesh() {
     std::vector<vector3> v{vec(0, 1, 0), vec(-1, 0, -1), vec(1, 0, -1), vec(1, 0, 1), vec(-1, 0, 1)};
-    return make_mesh(v, {0, 2, 1, 0, 3, 2, 0, 4, 3, 0, 1, 4});
+    return test::make_mesh(v, {0, 2, 1, 0, 3, 2, 0, 4, 3, 0, 1, 4});
 }
 
 // The convex shapes and a compound, each with its lowest point, written out independently.
@@ -131,7 +125,8 @@ scalar lowest_y(const compound_child_shape_t &shape, const vector3 &pos, const q
 }
 
 // collide(shape, mesh) for the shape held in the variant, with the checks every result passes.
-collision_result run(const shapes_variant_t &a, const mesh_shape &b, const collision_context &ctx) {
+collision_result collide_mesh_checked(const shapes_variant_t &a, const mesh_shape &b,
+                                      const collision_context &ctx) {
     collision_result r;
     std::visit(
         [&](const auto &s) {
@@ -143,7 +138,7 @@ collision_result run(const shapes_variant_t &a, const mesh_shape &b, const colli
             }
         },
         a);
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, mesh_tol);
     return r;
 }
 
@@ -157,7 +152,7 @@ collision_result run_swapped(const mesh_shape &a, const shapes_variant_t &b, con
                 collide(a, s, ctx, r);
         },
         b);
-    expect_consistent(r, ctx, tol);
+    expect_consistent(r, ctx, mesh_tol);
     return r;
 }
 
@@ -186,8 +181,8 @@ void expect_face_contact(const collision_result &r, const vector3 &n, scalar dep
     ASSERT_GT(r.num_points, 0u);
     for (std::size_t i = 0; i < r.num_points; ++i) {
         const auto &p = r.point[i];
-        expect_vec_near(p.normal, n, tol);
-        EXPECT_NEAR(p.distance, -depth, tol) << "point " << i;
+        expect_vec_near(p.normal, n, mesh_tol);
+        EXPECT_NEAR(p.distance, -depth, mesh_tol) << "point " << i;
         auto f = mesh_feature(p);
         ASSERT_NE(f, nullptr) << "point " << i << " has no triangle feature";
         EXPECT_EQ(int(*f), int(triangle_feature::face)) << "point " << i;
@@ -204,7 +199,7 @@ TEST(collide_mesh_test, resting_on_a_face) {
             for (scalar yaw : {scalar(0), scalar(0.7)}) {
                 auto ctx =
                     resting(s.shape, scalar(0.2), scalar(-0.3), depth, quaternion_axis_angle(vector3_y, yaw));
-                auto r = run(s.shape, mesh, ctx);
+                auto r = collide_mesh_checked(s.shape, mesh, ctx);
                 expect_face_contact(r, vector3_y, depth, 1, s.name + " depth " + std::to_string(depth));
             }
         }
@@ -220,7 +215,7 @@ TEST(collide_mesh_test, resting_on_a_tilted_face) {
     for (auto &s : all_shapes()) {
         auto ctx = resting(s.shape, scalar(-0.4), scalar(0.5), scalar(0.03),
                            quaternion_axis_angle(vector3_y, 1), offset, tilt);
-        auto r = run(s.shape, mesh, ctx);
+        auto r = collide_mesh_checked(s.shape, mesh, ctx);
         expect_face_contact(r, n, scalar(0.03), 1, s.name);
     }
 }
@@ -235,14 +230,14 @@ TEST(collide_mesh_test, mesh_body_transform_is_honoured) {
                            quaternion_axis_angle(vector3_y, -0.4), pos_b, orn_b);
         ctx.posB = pos_b;
         ctx.ornB = orn_b;
-        auto r = run(s.shape, mesh, ctx);
+        auto r = collide_mesh_checked(s.shape, mesh, ctx);
         expect_face_contact(r, n, scalar(0.04), 1, s.name);
 
         // The same placement with the mesh left at the origin touches nothing.
         auto far = ctx;
         far.posB = vector3_zero;
         far.ornB = quaternion_identity;
-        EXPECT_EQ(run(s.shape, mesh, far).num_points, 0u) << s.name;
+        EXPECT_EQ(collide_mesh_checked(s.shape, mesh, far).num_points, 0u) << s.name;
     }
 }
 
@@ -258,13 +253,13 @@ TEST(collide_mesh_test, sphere_on_a_convex_ridge_gets_the_bisector) {
         collision_context ctx;
         auto ridge_point = vec(0, h, 0.2);
         ctx.posA = ridge_point + u * (r - depth);
-        auto res = run(sphere, mesh, ctx);
+        auto res = collide_mesh_checked(sphere, mesh, ctx);
         SCOPED_TRACE("angle " + std::to_string(angle));
         ASSERT_GT(res.num_points, 0u);
         for (std::size_t i = 0; i < res.num_points; ++i) {
             const auto &p = res.point[i];
-            expect_vec_near(p.normal, u, tol);
-            EXPECT_NEAR(p.distance, -depth, tol);
+            expect_vec_near(p.normal, u, mesh_tol);
+            EXPECT_NEAR(p.distance, -depth, mesh_tol);
             expect_vec_near(to_world_space(p.pivotB, ctx.posB, ctx.ornB), ridge_point, scalar(1e-3));
             auto f = mesh_feature(p);
             ASSERT_NE(f, nullptr);
@@ -299,12 +294,12 @@ TEST(collide_mesh_test, flat_bottoms_on_a_convex_ridge) {
         SCOPED_TRACE(name);
         collision_context ctx;
         ctx.posA = vec(x, h - lowest_y(shape, vector3_zero, quaternion_identity) - depth, 0);
-        auto r = run(shape, mesh, ctx);
+        auto r = collide_mesh_checked(shape, mesh, ctx);
         ASSERT_GT(r.num_points, 0u);
-        EXPECT_NEAR(min_distance(r), -depth, tol);
+        EXPECT_NEAR(min_distance(r), -depth, mesh_tol);
         for (std::size_t i = 0; i < r.num_points; ++i) {
             const auto &p = r.point[i];
-            expect_vec_near(p.normal, vector3_y, tol);
+            expect_vec_near(p.normal, vector3_y, mesh_tol);
             EXPECT_NEAR(to_world_space(p.pivotB, ctx.posB, ctx.ornB).x, 0, scalar(1e-3)) << "on the ridge";
             auto f = mesh_feature(p);
             ASSERT_NE(f, nullptr);
@@ -333,7 +328,7 @@ TEST(collide_mesh_test, shapes_on_a_nearly_flat_inactive_ridge_are_supported) {
             SCOPED_TRACE(name + " x " + std::to_string(x));
             collision_context ctx;
             ctx.posA = vec(x, h - lowest_y(shape, vector3_zero, quaternion_identity) - depth, 0);
-            auto r = run(shape, mesh, ctx);
+            auto r = collide_mesh_checked(shape, mesh, ctx);
             EXPECT_GT(r.num_points, 0u) << "no contact: the shape would fall through the ridge";
             if (r.num_points == 0) continue;
             EXPECT_NEAR(min_distance(r), -depth, scalar(2e-3));
@@ -354,13 +349,13 @@ TEST(collide_mesh_test, sphere_on_a_pyramid_apex) {
         auto u = normalize(dir);
         collision_context ctx;
         ctx.posA = apex + u * (r - depth);
-        auto res = run(sphere, mesh, ctx);
+        auto res = collide_mesh_checked(sphere, mesh, ctx);
         SCOPED_TRACE(str(u));
         ASSERT_GT(res.num_points, 0u);
-        EXPECT_NEAR(min_distance(res), -depth, tol);
+        EXPECT_NEAR(min_distance(res), -depth, mesh_tol);
         for (std::size_t i = 0; i < res.num_points; ++i) {
             const auto &p = res.point[i];
-            expect_vec_near(p.normal, u, tol);
+            expect_vec_near(p.normal, u, mesh_tol);
             expect_vec_near(to_world_space(p.pivotB, ctx.posB, ctx.ornB), apex, scalar(1e-3));
             auto f = mesh_feature(p);
             ASSERT_NE(f, nullptr);
@@ -401,13 +396,13 @@ TEST(collide_mesh_test, internal_edges_of_a_flat_floor_give_only_the_floor_norma
             auto orn =
                 k % 2 == 0 ? random.orientation() : quaternion_axis_angle(vector3_y, random.uniform(-3, 3));
             auto ctx = resting(s.shape, x, z, depth, orn);
-            auto r = run(s.shape, mesh, ctx);
+            auto r = collide_mesh_checked(s.shape, mesh, ctx);
             auto what = s.name + " at " + str(ctx.posA) + " depth " + std::to_string(depth);
             ASSERT_GT(r.num_points, 0u) << what;
-            EXPECT_NEAR(min_distance(r), -depth, tol) << what;
+            EXPECT_NEAR(min_distance(r), -depth, mesh_tol) << what;
             for (std::size_t i = 0; i < r.num_points; ++i) {
                 const auto &p = r.point[i];
-                EXPECT_NEAR(p.normal.y, 1, tol) << what << " normal " << str(p.normal);
+                EXPECT_NEAR(p.normal.y, 1, mesh_tol) << what << " normal " << str(p.normal);
                 ASSERT_TRUE(p.featureB.has_value()) << what;
                 auto part = p.featureB->part;
                 ASSERT_TRUE(part >= 0 && part < 32) << what << " part " << part;
@@ -415,7 +410,7 @@ TEST(collide_mesh_test, internal_edges_of_a_flat_floor_give_only_the_floor_norma
                 auto tri = trimesh.get_triangle_vertices(std::size_t(part));
                 auto w = barycentric_coordinates(p.pivotB, tri[0], tri[1], tri[2]);
                 EXPECT_GE(std::min({w.x, w.y, w.z}), scalar(-2e-3)) << what << " pivot " << str(p.pivotB);
-                EXPECT_NEAR(p.pivotB.y, 0, tol) << what;
+                EXPECT_NEAR(p.pivotB.y, 0, mesh_tol) << what;
             }
             ++checked;
         }
@@ -439,7 +434,7 @@ TEST(collide_mesh_test, nothing_pushes_down_from_behind_a_floor) {
             collision_context ctx;
             ctx.posA = {random.uniform(1.2, 2.8), top - highest, random.uniform(1.2, 2.8)};
             ctx.ornA = orn;
-            auto r = run(s.shape, mesh, ctx);
+            auto r = collide_mesh_checked(s.shape, mesh, ctx);
             for (std::size_t i = 0; i < r.num_points; ++i) {
                 EXPECT_GT(r.point[i].normal.y, scalar(0.99))
                     << s.name << " top " << top << " point " << i << " normal " << str(r.point[i].normal);
@@ -448,7 +443,7 @@ TEST(collide_mesh_test, nothing_pushes_down_from_behind_a_floor) {
         // Far below (beyond the triangles' depth): nothing at all.
         collision_context ctx;
         ctx.posA = vec(2.3, -10, 1.7);
-        EXPECT_EQ(run(s.shape, mesh, ctx).num_points, 0u) << s.name;
+        EXPECT_EQ(collide_mesh_checked(s.shape, mesh, ctx).num_points, 0u) << s.name;
     }
 }
 
@@ -461,17 +456,17 @@ TEST(collide_mesh_test, threshold_limits_the_points) {
         ASSERT_NEAR(ctx.threshold, 0.02, 1e-6);
         // Apart by more than the threshold: nothing.
         auto beyond = resting(s.shape, 2.3, 1.6, -(ctx.threshold + scalar(0.01)), orn);
-        EXPECT_EQ(run(s.shape, mesh, beyond).num_points, 0u) << s.name;
+        EXPECT_EQ(collide_mesh_checked(s.shape, mesh, beyond).num_points, 0u) << s.name;
         // Apart by less: points at the gap.
         auto within = resting(s.shape, 2.3, 1.6, scalar(-0.01), orn);
-        auto r = run(s.shape, mesh, within);
+        auto r = collide_mesh_checked(s.shape, mesh, within);
         ASSERT_GT(r.num_points, 0u) << s.name;
-        EXPECT_NEAR(min_distance(r), 0.01, tol) << s.name;
+        EXPECT_NEAR(min_distance(r), 0.01, mesh_tol) << s.name;
         // A larger threshold reaches further.
         beyond.threshold = scalar(0.1);
-        auto r2 = run(s.shape, mesh, beyond);
+        auto r2 = collide_mesh_checked(s.shape, mesh, beyond);
         ASSERT_GT(r2.num_points, 0u) << s.name;
-        EXPECT_NEAR(min_distance(r2), 0.03, tol) << s.name;
+        EXPECT_NEAR(min_distance(r2), 0.03, mesh_tol) << s.name;
     }
 }
 
@@ -486,7 +481,7 @@ TEST(collide_mesh_test, both_argument_orders_agree) {
                                random.orientation(), pos_b, orn_b);
             ctx.posB = pos_b;
             ctx.ornB = orn_b;
-            auto ab = run(s.shape, mesh, ctx);
+            auto ab = collide_mesh_checked(s.shape, mesh, ctx);
             auto swapped_ctx = collision_context{ctx.posB, ctx.ornB, ctx.posA, ctx.ornA, ctx.threshold};
             auto ba = run_swapped(mesh, s.shape, swapped_ctx);
             SCOPED_TRACE(s.name + " " + std::to_string(k));
@@ -510,7 +505,7 @@ TEST(collide_mesh_test, variant_dispatcher) {
     shapes_variant_t mesh_var{mesh};
     for (auto &s : all_shapes()) {
         auto ctx = resting(s.shape, 1.2, 0.9, 0.02, quaternion_axis_angle(vector3_y, 0.3));
-        auto direct = run(s.shape, mesh, ctx);
+        auto direct = collide_mesh_checked(s.shape, mesh, ctx);
         collision_result via;
         collide(s.shape, mesh_var, ctx, via);
         ASSERT_GT(direct.num_points, 0u) << s.name;
@@ -571,7 +566,7 @@ TEST(collide_mesh_test, capsule_in_front_of_a_triangle_finds_the_true_distance) 
         auto n = cross(v[1] - v[0], v[2] - v[0]);
         if (length(n) < scalar(0.05)) continue;
         n = normalize(n);
-        auto mesh = make_mesh(v, {0, 1, 2});
+        auto mesh = test::make_mesh(v, {0, 1, 2});
         capsule_shape capsule{uniform(scalar(0.05), scalar(0.3)), uniform(0, scalar(0.8)),
                               coordinate_axis::x};
         collision_context ctx;
@@ -594,7 +589,7 @@ TEST(collide_mesh_test, capsule_in_front_of_a_triangle_finds_the_true_distance) 
             expected = std::min(expected, distance_point_triangle(q, v[0], v[1], v[2]) - capsule.radius);
         }
         SCOPED_TRACE("trial " + std::to_string(trial));
-        auto r = run(capsule, mesh, ctx);
+        auto r = collide_mesh_checked(capsule, mesh, ctx);
         ASSERT_GT(r.num_points, 0u);
         // The walk's spacing bounds how far above the true least distance it can land.
         auto spacing = length(p1 - p0) / steps;

@@ -16,16 +16,12 @@ using namespace collide_test;
 
 namespace {
 
-constexpr scalar tol = scalar(2e-5);
-
-vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar(z)}; }
-
-template<typename S>
-constexpr bool is_plane = std::is_same_v<S, plane_shape>;
+constexpr scalar polyhedron_tol = scalar(2e-5);
 
 // Runs collide(a, b) and checks what every result must satisfy.
 template<typename A, typename B>
-collision_result run(const A &a, const B &b, const collision_context &ctx, scalar t = tol) {
+collision_result collide_polyhedron_checked(const A &a, const B &b, const collision_context &ctx,
+                                            scalar t = polyhedron_tol) {
     collision_result r;
     collide(a, b, ctx, r);
     expect_consistent(r, ctx, t, is_plane<A>, is_plane<B>);
@@ -290,8 +286,8 @@ void expect_same_as_box(const vector3 &he, const S &other, const collision_conte
         ASSERT_EQ(rp.num_points, rb.num_points) << what << " " << order;
         if (rp.num_points == 0) return;
         auto ip = deepest_index(rp), ib = deepest_index(rb);
-        EXPECT_NEAR(rp.point[ip].distance, rb.point[ib].distance, tol) << what << " " << order;
-        expect_vec_near(rp.point[ip].normal, rb.point[ib].normal, tol);
+        EXPECT_NEAR(rp.point[ip].distance, rb.point[ib].distance, polyhedron_tol) << what << " " << order;
+        expect_vec_near(rp.point[ip].normal, rb.point[ib].normal, polyhedron_tol);
         if (!same_points) return;
         for (std::size_t i = 0; i < rp.num_points; ++i) {
             auto found = false;
@@ -311,9 +307,11 @@ void expect_same_as_box(const vector3 &he, const S &other, const collision_conte
             EXPECT_FALSE((poly_is_a ? rp.point[i].featureA : rp.point[i].featureB).has_value()) << what;
         }
     };
-    compare(run(hull, other, ctx), run(box, other, ctx), true, "(polyhedron, other)");
+    compare(collide_polyhedron_checked(hull, other, ctx), collide_polyhedron_checked(box, other, ctx), true,
+            "(polyhedron, other)");
     auto swapped = swap_context(ctx);
-    compare(run(other, hull, swapped), run(other, box, swapped), false, "(other, polyhedron)");
+    compare(collide_polyhedron_checked(other, hull, swapped), collide_polyhedron_checked(other, box, swapped),
+            false, "(other, polyhedron)");
 }
 
 // The configurations every pair is compared in, for a box-shaped polyhedron of half extents
@@ -364,12 +362,13 @@ TEST(collide_polyhedron_test, box_hulls_as_box_box) {
     auto a = box_hull(cube_he), b = box_hull(big_he);
     box_shape box_a{cube_he}, box_b{big_he};
     auto check = [&](const collision_context &ctx, const std::string &what) {
-        auto rp = run(a, b, ctx);
-        auto rb = run(box_a, box_b, ctx);
+        auto rp = collide_polyhedron_checked(a, b, ctx);
+        auto rb = collide_polyhedron_checked(box_a, box_b, ctx);
         ASSERT_EQ(rp.num_points, rb.num_points) << what;
         if (rp.num_points == 0) return;
-        EXPECT_NEAR(min_distance(rp), min_distance(rb), tol) << what;
-        expect_vec_near(rp.point[deepest_index(rp)].normal, rb.point[deepest_index(rb)].normal, tol);
+        EXPECT_NEAR(min_distance(rp), min_distance(rb), polyhedron_tol) << what;
+        expect_vec_near(rp.point[deepest_index(rp)].normal, rb.point[deepest_index(rb)].normal,
+                        polyhedron_tol);
         for (std::size_t i = 0; i < rp.num_points; ++i) {
             EXPECT_FALSE(rp.point[i].featureA.has_value());
             EXPECT_FALSE(rp.point[i].featureB.has_value());
@@ -507,115 +506,122 @@ scalar distance_to_boundary(const vector3 &p, const vector3 &a, const vector3 &b
 
 TEST(collide_polyhedron_test, tetrahedron_against_plane) {
     auto tet = tetrahedron(tet_s);
-    auto r = run(tet, plane_shape{vector3_y, -tet_inradius + scalar(0.005)},
-                 at(vector3_zero, quaternion_identity, tet_face_down));
+    auto r = collide_polyhedron_checked(tet, plane_shape{vector3_y, -tet_inradius + scalar(0.005)},
+                                        at(vector3_zero, quaternion_identity, tet_face_down));
     ASSERT_EQ(r.num_points, 3u);
     for (std::size_t i = 0; i < 3; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        expect_vec_near(r.point[i].normal, vector3_y, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        expect_vec_near(r.point[i].normal, vector3_y, polyhedron_tol);
         // Vertices 1, 2, 3: not the one at (s, s, s).
         EXPECT_GT(distance(r.point[i].pivotA, vector3{tet_s, tet_s, tet_s}), 0.1);
-        EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, tol);
+        EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, polyhedron_tol);
     }
-    r = run(tet, plane_shape{vector3_y, -tet_circumradius + scalar(0.004)},
-            at(vector3_zero, quaternion_identity, tet_vertex_down));
+    r = collide_polyhedron_checked(tet, plane_shape{vector3_y, -tet_circumradius + scalar(0.004)},
+                                   at(vector3_zero, quaternion_identity, tet_vertex_down));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.004, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
-    expect_vec_near(r.point[0].pivotB, {0, -tet_circumradius + scalar(0.004), 0}, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.004, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotB, {0, -tet_circumradius + scalar(0.004), 0}, polyhedron_tol);
     // The plane's own orientation does not matter; the other order swaps the roles.
-    auto s = run(plane_shape{vector3_y, -tet_circumradius + scalar(0.004)}, tet,
-                 swap_context(at(vector3_zero, quaternion_identity, tet_vertex_down)));
+    auto s = collide_polyhedron_checked(plane_shape{vector3_y, -tet_circumradius + scalar(0.004)}, tet,
+                                        swap_context(at(vector3_zero, quaternion_identity, tet_vertex_down)));
     ASSERT_EQ(s.num_points, 1u);
-    expect_vec_near(s.point[0].normal, -vector3_y, tol);
-    expect_vec_near(s.point[0].pivotB, {tet_s, tet_s, tet_s}, tol);
+    expect_vec_near(s.point[0].normal, -vector3_y, polyhedron_tol);
+    expect_vec_near(s.point[0].pivotB, {tet_s, tet_s, tet_s}, polyhedron_tol);
 }
 
 TEST(collide_polyhedron_test, tetrahedron_against_sphere) {
     auto tet = tetrahedron(tet_s);
     sphere_shape sphere{0.2};
     // Over the centre of face 0.
-    auto r = run(tet, sphere, at(tet_n0 * (tet_inradius + sphere.radius - scalar(0.01))));
+    auto r =
+        collide_polyhedron_checked(tet, sphere, at(tet_n0 * (tet_inradius + sphere.radius - scalar(0.01))));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.01, tol);
-    expect_vec_near(r.point[0].normal, -tet_n0, tol);
-    expect_vec_near(r.point[0].pivotA, tet_n0 * tet_inradius, tol);
-    expect_vec_near(r.point[0].pivotB, -tet_n0 * sphere.radius, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.01, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -tet_n0, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, tet_n0 * tet_inradius, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotB, -tet_n0 * sphere.radius, polyhedron_tol);
     // Beyond vertex 0, apart within the threshold.
     auto v0_dir = normalize(vector3_one);
-    r = run(tet, sphere, at(v0_dir * (tet_circumradius + sphere.radius + scalar(0.01))));
+    r = collide_polyhedron_checked(tet, sphere,
+                                   at(v0_dir * (tet_circumradius + sphere.radius + scalar(0.01))));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, 0.01, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
+    EXPECT_NEAR(r.point[0].distance, 0.01, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, polyhedron_tol);
     // Beyond the middle of edge 0-1, whose faces' normals straddle +x.
-    r = run(tet, sphere, at(vec(tet_s + sphere.radius + 0.005, 0, 0)));
+    r = collide_polyhedron_checked(tet, sphere, at(vec(tet_s + sphere.radius + 0.005, 0, 0)));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, 0.005, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, 0, 0}, tol);
-    expect_vec_near(r.point[0].normal, -vector3_x, tol);
-    EXPECT_EQ(run(tet, sphere, at(vec(tet_s + sphere.radius + 0.03, 0, 0))).num_points, 0u);
+    EXPECT_NEAR(r.point[0].distance, 0.005, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, 0, 0}, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -vector3_x, polyhedron_tol);
+    EXPECT_EQ(collide_polyhedron_checked(tet, sphere, at(vec(tet_s + sphere.radius + 0.03, 0, 0))).num_points,
+              0u);
     // Centre inside, nearest to face 0: out through it.
     auto center = vector3{0.1, 0.05, 0} * tet_s;
-    r = run(tet, sphere, at(center));
+    r = collide_polyhedron_checked(tet, sphere, at(center));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, dot(center, tet_n0) - tet_inradius - sphere.radius, tol);
-    expect_vec_near(r.point[0].normal, -tet_n0, tol);
+    EXPECT_NEAR(r.point[0].distance, dot(center, tet_n0) - tet_inradius - sphere.radius, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -tet_n0, polyhedron_tol);
 }
 
 TEST(collide_polyhedron_test, tetrahedron_against_box) {
     auto tet = tetrahedron(tet_s);
     box_shape big{{1, 0.5, 1}};
-    auto r =
-        run(tet, big, at(vec(0.1, -(tet_inradius + 0.5) + 0.005, 0), quaternion_identity, tet_face_down));
+    auto r = collide_polyhedron_checked(
+        tet, big, at(vec(0.1, -(tet_inradius + 0.5) + 0.005, 0), quaternion_identity, tet_face_down));
     ASSERT_EQ(r.num_points, 3u);
     for (std::size_t i = 0; i < 3; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        expect_vec_near(r.point[i].normal, vector3_y, tol);
-        EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, tol);
-        EXPECT_NEAR(r.point[i].pivotB.y, 0.5, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        expect_vec_near(r.point[i].normal, vector3_y, polyhedron_tol);
+        EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, polyhedron_tol);
+        EXPECT_NEAR(r.point[i].pivotB.y, 0.5, polyhedron_tol);
         EXPECT_FALSE(r.point[i].featureA.has_value());
         expect_feature(r.point[i].featureB, box_feature::face, 2);
     }
-    r = run(tet, big,
-            at(vec(0.1, -(tet_circumradius + 0.5) + 0.004, 0), quaternion_identity, tet_vertex_down));
+    r = collide_polyhedron_checked(
+        tet, big, at(vec(0.1, -(tet_circumradius + 0.5) + 0.004, 0), quaternion_identity, tet_vertex_down));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.004, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.004, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, polyhedron_tol);
     expect_feature(r.point[0].featureB, box_feature::face, 2);
     // Box vertex into the middle of face 0.
     auto box_down = shortest_arc(normalize(vector3_one), -tet_n0);
     box_shape small{{0.1, 0.1, 0.1}};
     auto center = tet_n0 * (tet_inradius + length(small.half_extents) - scalar(0.003));
-    r = run(tet, small, at(center, box_down));
+    r = collide_polyhedron_checked(tet, small, at(center, box_down));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.003, tol);
-    expect_vec_near(r.point[0].normal, -tet_n0, tol);
-    expect_vec_near(r.point[0].pivotB, small.half_extents, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.003, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -tet_n0, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotB, small.half_extents, polyhedron_tol);
     expect_feature(r.point[0].featureB, box_feature::vertex, 0);
 }
 
 TEST(collide_polyhedron_test, tetrahedron_against_tetrahedron) {
     auto tet = tetrahedron(tet_s);
     // A's vertex 0 down into the middle of B's upward face 0.
-    auto r = run(tet, tet,
-                 at(vec(0, -(tet_circumradius + tet_inradius) + 0.003, 0), tet_face_up, tet_vertex_down));
+    auto r = collide_polyhedron_checked(
+        tet, tet, at(vec(0, -(tet_circumradius + tet_inradius) + 0.003, 0), tet_face_up, tet_vertex_down));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.003, tol);
-    expect_vec_near(r.point[0].normal, vector3_y, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.003, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, vector3_y, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, polyhedron_tol);
     // Face on face, B turned about the vertical: the overlap of two triangles (a hexagon),
     // reduced to four of its corners.
     auto turned = quaternion_axis_angle(vector3_y, 0.5) * tet_face_up;
-    r = run(tet, tet, at(vec(0.02, -2 * tet_inradius + 0.005, 0), turned, tet_face_down));
+    r = collide_polyhedron_checked(tet, tet,
+                                   at(vec(0.02, -2 * tet_inradius + 0.005, 0), turned, tet_face_down));
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        expect_vec_near(r.point[i].normal, vector3_y, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        expect_vec_near(r.point[i].normal, vector3_y, polyhedron_tol);
         // On both faces' planes.
-        EXPECT_NEAR(to_world_space(r.point[i].pivotA, vector3_zero, tet_face_down).y, -tet_inradius, tol);
+        EXPECT_NEAR(to_world_space(r.point[i].pivotA, vector3_zero, tet_face_down).y, -tet_inradius,
+                    polyhedron_tol);
     }
     // Apart beyond the threshold.
-    EXPECT_EQ(run(tet, tet, at(vec(0.02, -2 * tet_inradius - 0.03, 0), turned, tet_face_down)).num_points,
+    EXPECT_EQ(collide_polyhedron_checked(tet, tet,
+                                         at(vec(0.02, -2 * tet_inradius - 0.03, 0), turned, tet_face_down))
+                  .num_points,
               0u);
 }
 
@@ -623,74 +629,80 @@ TEST(collide_polyhedron_test, tetrahedron_against_capsule) {
     auto tet = tetrahedron(tet_s);
     // Face 0 up; a short capsule lying on its middle, a long one across it.
     capsule_shape short_capsule{0.1, 0.2, coordinate_axis::x};
-    auto r =
-        run(tet, short_capsule, at(vec(0, tet_inradius + 0.1 - 0.005, 0), quaternion_identity, tet_face_up));
+    auto r = collide_polyhedron_checked(
+        tet, short_capsule, at(vec(0, tet_inradius + 0.1 - 0.005, 0), quaternion_identity, tet_face_up));
     ASSERT_EQ(r.num_points, 2u);
     for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        expect_vec_near(r.point[i].normal, -vector3_y, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        expect_vec_near(r.point[i].normal, -vector3_y, polyhedron_tol);
         // The ends of the side line (the surface faces the face there, not along the axis).
-        EXPECT_NEAR(std::abs(r.point[i].pivotB.x), 0.2, tol);
+        EXPECT_NEAR(std::abs(r.point[i].pivotB.x), 0.2, polyhedron_tol);
         expect_feature(r.point[i].featureB, capsule_feature::side, 0);
     }
     capsule_shape long_capsule{0.1, 1.5, coordinate_axis::x};
-    r = run(tet, long_capsule, at(vec(0, tet_inradius + 0.1 - 0.005, 0), quaternion_identity, tet_face_up));
+    r = collide_polyhedron_checked(
+        tet, long_capsule, at(vec(0, tet_inradius + 0.1 - 0.005, 0), quaternion_identity, tet_face_up));
     ASSERT_EQ(r.num_points, 2u);
     auto v = [&](int i) {
         vector3 corners[3] = {{tet_s, tet_s, tet_s}, {tet_s, -tet_s, -tet_s}, {-tet_s, tet_s, -tet_s}};
         return corners[i];
     };
     for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
         // Where the segment leaves the face: on the triangle's boundary.
-        EXPECT_NEAR(distance_to_boundary(r.point[i].pivotA, v(0), v(1), v(2)), 0, tol);
+        EXPECT_NEAR(distance_to_boundary(r.point[i].pivotA, v(0), v(1), v(2)), 0, polyhedron_tol);
         expect_feature(r.point[i].featureB, capsule_feature::side, 0);
     }
     // Standing on vertex 0.
     auto standing = quaternion_axis_angle(vector3_z, pi / 2);
     auto vertex_up = quaternion_axis_angle(vector3_x, pi) * tet_vertex_down;
-    r = run(tet, short_capsule, at(vec(0, tet_circumradius + 0.3 - 0.002, 0), standing, vertex_up));
+    r = collide_polyhedron_checked(tet, short_capsule,
+                                   at(vec(0, tet_circumradius + 0.3 - 0.002, 0), standing, vertex_up));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.002, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.002, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, polyhedron_tol);
 }
 
 TEST(collide_polyhedron_test, tetrahedron_against_cylinder) {
     auto tet = tetrahedron(tet_s);
     // A narrow cylinder standing on face 0: its cap lies inside the triangle, four rim points.
     cylinder_shape narrow{0.15, 0.2, coordinate_axis::y};
-    auto r = run(tet, narrow, at(vec(0, tet_inradius + 0.2 - 0.005, 0), quaternion_identity, tet_face_up));
+    auto r = collide_polyhedron_checked(
+        tet, narrow, at(vec(0, tet_inradius + 0.2 - 0.005, 0), quaternion_identity, tet_face_up));
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        expect_vec_near(r.point[i].normal, -vector3_y, tol);
-        EXPECT_NEAR(std::hypot(r.point[i].pivotB.x, r.point[i].pivotB.z), 0.15, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        expect_vec_near(r.point[i].normal, -vector3_y, polyhedron_tol);
+        EXPECT_NEAR(std::hypot(r.point[i].pivotB.x, r.point[i].pivotB.z), 0.15, polyhedron_tol);
         expect_feature(r.point[i].featureB, cylinder_feature::face, 1);
     }
     // A wide one covers the triangle: its three corners.
     cylinder_shape wide{1.2, 0.2, coordinate_axis::y};
-    r = run(tet, wide, at(vec(0, tet_inradius + 0.2 - 0.005, 0), quaternion_identity, tet_face_up));
+    r = collide_polyhedron_checked(
+        tet, wide, at(vec(0, tet_inradius + 0.2 - 0.005, 0), quaternion_identity, tet_face_up));
     ASSERT_EQ(r.num_points, 3u);
     for (std::size_t i = 0; i < 3; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        EXPECT_NEAR(length(r.point[i].pivotA), tet_circumradius, polyhedron_tol);
     }
     // Lying on face 0 along x: the side line's two ends over the triangle.
     auto lying = quaternion_axis_angle(vector3_z, pi / 2);
     cylinder_shape short_cylinder{0.1, 0.15, coordinate_axis::y};
-    r = run(tet, short_cylinder, at(vec(0, tet_inradius + 0.1 - 0.005, 0), lying, tet_face_up));
+    r = collide_polyhedron_checked(tet, short_cylinder,
+                                   at(vec(0, tet_inradius + 0.1 - 0.005, 0), lying, tet_face_up));
     ASSERT_EQ(r.num_points, 2u);
     for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        EXPECT_NEAR(std::abs(r.point[i].pivotB.y), 0.15, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        EXPECT_NEAR(std::abs(r.point[i].pivotB.y), 0.15, polyhedron_tol);
         expect_feature(r.point[i].featureB, cylinder_feature::side_edge, 0);
     }
     // Rim on vertex 0 pointing up.
     auto up = quaternion_axis_angle(vector3_x, pi) * tet_vertex_down;
-    r = run(tet, narrow, at(vec(0.05, tet_circumradius + 0.2 - 0.004, 0), quaternion_identity, up));
+    r = collide_polyhedron_checked(tet, narrow,
+                                   at(vec(0.05, tet_circumradius + 0.2 - 0.004, 0), quaternion_identity, up));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.004, tol);
-    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.004, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, {tet_s, tet_s, tet_s}, polyhedron_tol);
     expect_feature(r.point[0].featureB, cylinder_feature::face, 1);
 }
 
@@ -726,18 +738,20 @@ TEST(collide_polyhedron_test, irregular_hull_against_plane_and_sphere) {
     auto hull = irregular_hull();
     auto points = irregular_points();
     auto lowest = *std::min_element(points.begin(), points.end(), [](auto &a, auto &b) { return a.y < b.y; });
-    auto r = run(hull, plane_shape{vector3_y, lowest.y + scalar(0.005)}, at(vector3_zero));
+    auto r =
+        collide_polyhedron_checked(hull, plane_shape{vector3_y, lowest.y + scalar(0.005)}, at(vector3_zero));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.005, tol);
-    expect_vec_near(r.point[0].pivotA, lowest, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.005, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, lowest, polyhedron_tol);
 
     auto face = face_of(hull, 0);
     sphere_shape sphere{0.2};
-    r = run(hull, sphere, at(face.centroid + face.normal * (sphere.radius - scalar(0.01))));
+    r = collide_polyhedron_checked(hull, sphere,
+                                   at(face.centroid + face.normal * (sphere.radius - scalar(0.01))));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.01, tol);
-    expect_vec_near(r.point[0].normal, -face.normal, tol);
-    expect_vec_near(r.point[0].pivotA, face.centroid, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.01, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -face.normal, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, face.centroid, polyhedron_tol);
 }
 
 TEST(collide_polyhedron_test, irregular_hull_against_box_and_polyhedron) {
@@ -746,34 +760,36 @@ TEST(collide_polyhedron_test, irregular_hull_against_box_and_polyhedron) {
     // A small box's vertex 0 into the face's centroid.
     box_shape small{{0.05, 0.04, 0.03}};
     auto box_down = shortest_arc(normalize(small.half_extents), -face.normal);
-    auto r = run(hull, small,
-                 at(face.centroid + face.normal * (length(small.half_extents) - scalar(0.003)), box_down));
+    auto r = collide_polyhedron_checked(
+        hull, small,
+        at(face.centroid + face.normal * (length(small.half_extents) - scalar(0.003)), box_down));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.003, tol);
-    expect_vec_near(r.point[0].normal, -face.normal, tol);
-    expect_vec_near(r.point[0].pivotA, face.centroid, tol);
-    expect_vec_near(r.point[0].pivotB, small.half_extents, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.003, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -face.normal, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, face.centroid, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotB, small.half_extents, polyhedron_tol);
     expect_feature(r.point[0].featureB, box_feature::vertex, 0);
     // A small tetrahedron's vertex 0 likewise.
     auto tet = tetrahedron(0.1);
     auto tet_down = shortest_arc(normalize(vector3_one), -face.normal);
     auto tip = std::sqrt(scalar(3)) * scalar(0.1);
-    r = run(hull, tet, at(face.centroid + face.normal * (tip - scalar(0.003)), tet_down));
+    r = collide_polyhedron_checked(hull, tet,
+                                   at(face.centroid + face.normal * (tip - scalar(0.003)), tet_down));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.003, tol);
-    expect_vec_near(r.point[0].normal, -face.normal, tol);
-    expect_vec_near(r.point[0].pivotB, {0.1, 0.1, 0.1}, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.003, polyhedron_tol);
+    expect_vec_near(r.point[0].normal, -face.normal, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotB, {0.1, 0.1, 0.1}, polyhedron_tol);
     // Two copies resting vertex to vertex, apart: the exact closest pair.
     auto points = irregular_points();
     auto top = *std::max_element(points.begin(), points.end(), [](auto &a, auto &b) { return a.y < b.y; });
     auto flip = quaternion_axis_angle(vector3_z, pi);
     // B upside down, its top vertex (now its lowest) 0.01 above A's top vertex.
     auto pos_b = top + vec(0, 0.01, 0) - rotate(flip, top);
-    r = run(hull, hull, at(pos_b, flip));
+    r = collide_polyhedron_checked(hull, hull, at(pos_b, flip));
     auto expected = polyhedra_distance(placed_polyhedron(hull, vector3_zero, quaternion_identity),
                                        placed_polyhedron(hull, pos_b, flip));
     EXPECT_GT(expected, 0);
-    EXPECT_LE(expected, 0.01 + tol);
+    EXPECT_LE(expected, 0.01 + polyhedron_tol);
     ASSERT_GE(r.num_points, 1u);
     EXPECT_NEAR(min_distance(r), expected, 1e-4);
 }
@@ -784,21 +800,23 @@ TEST(collide_polyhedron_test, irregular_hull_against_capsule_and_cylinder) {
     // A capsule standing on the face's centroid.
     capsule_shape capsule{0.05, 0.2, coordinate_axis::x};
     auto standing = shortest_arc(vector3_x, face.normal);
-    auto r = run(hull, capsule, at(face.centroid + face.normal * (0.25 - 0.005), standing));
+    auto r =
+        collide_polyhedron_checked(hull, capsule, at(face.centroid + face.normal * (0.25 - 0.005), standing));
     ASSERT_EQ(r.num_points, 1u);
-    EXPECT_NEAR(r.point[0].distance, -0.005, tol);
-    expect_vec_near(r.point[0].pivotA, face.centroid, tol);
+    EXPECT_NEAR(r.point[0].distance, -0.005, polyhedron_tol);
+    expect_vec_near(r.point[0].pivotA, face.centroid, polyhedron_tol);
     expect_feature(r.point[0].featureB, capsule_feature::hemisphere, 1);
     // A cylinder standing on it with its cap inside the face: four rim points.
     ASSERT_GT(face.inradius, 0.02);
     cylinder_shape cylinder{face.inradius * scalar(0.5), 0.1, coordinate_axis::y};
     auto upright = shortest_arc(vector3_y, face.normal);
-    r = run(hull, cylinder, at(face.centroid + face.normal * scalar(0.1 - 0.005), upright));
+    r = collide_polyhedron_checked(hull, cylinder,
+                                   at(face.centroid + face.normal * scalar(0.1 - 0.005), upright));
     ASSERT_EQ(r.num_points, 4u);
     for (std::size_t i = 0; i < 4; ++i) {
-        EXPECT_NEAR(r.point[i].distance, -0.005, tol);
-        expect_vec_near(r.point[i].normal, -face.normal, tol);
-        EXPECT_NEAR(std::hypot(r.point[i].pivotB.x, r.point[i].pivotB.z), cylinder.radius, tol);
+        EXPECT_NEAR(r.point[i].distance, -0.005, polyhedron_tol);
+        expect_vec_near(r.point[i].normal, -face.normal, polyhedron_tol);
+        EXPECT_NEAR(std::hypot(r.point[i].pivotB.x, r.point[i].pivotB.z), cylinder.radius, polyhedron_tol);
         expect_feature(r.point[i].featureB, cylinder_feature::face, 1);
     }
 }
@@ -868,7 +886,7 @@ TEST(collide_polyhedron_test, random_polyhedron_sphere_matches_brute_force) {
         auto ctx = random_context(random, 0.6);
         placed_polyhedron poly(hull, ctx.posA, ctx.ornA);
         auto expected = polyhedron_sdf(poly, ctx.posB) - sphere.radius;
-        auto r = run(hull, sphere, ctx, 1e-4);
+        auto r = collide_polyhedron_checked(hull, sphere, ctx, 1e-4);
         expect_apart(r, expected, ctx.threshold, i);
         (expected > 0 ? apart : overlapping) += r.num_points > 0;
         ASSERT_LE(r.num_points, 1u);
@@ -888,7 +906,7 @@ TEST(collide_polyhedron_test, random_polyhedron_polyhedron_matches_brute_force) 
         auto a = random_hull(random, i);
         auto b = random_hull(random, i / 4 + i);
         auto ctx = random_context(random, 0.5);
-        auto r = run(a, b, ctx, 1e-4);
+        auto r = collide_polyhedron_checked(a, b, ctx, 1e-4);
         placed_polyhedron pa(a, ctx.posA, ctx.ornA), pb(b, ctx.posB, ctx.ornB);
         auto dirs = polyhedron_directions(pa, face_normals(pb), edge_directions(pb), random);
         auto max_sep = max_separation(pa.vertices, 0, pb.vertices, 0, dirs);
@@ -909,7 +927,7 @@ TEST(collide_polyhedron_test, random_polyhedron_polyhedron_matches_brute_force) 
             EXPECT_NEAR(polyhedron_sdf(pa, w.a), 0, 1e-4) << "case " << i;
             EXPECT_NEAR(polyhedron_sdf(pb, w.b), 0, 1e-4) << "case " << i;
         }
-        auto s = run(b, a, swap_context(ctx), 1e-4);
+        auto s = collide_polyhedron_checked(b, a, swap_context(ctx), 1e-4);
         ASSERT_EQ(s.num_points > 0, r.num_points > 0) << "case " << i;
         if (r.num_points > 0) {
             EXPECT_NEAR(min_distance(s), min_distance(r), sat_bias(min_distance(r))) << "case " << i;
@@ -926,7 +944,7 @@ TEST(collide_polyhedron_test, random_polyhedron_box_matches_brute_force) {
         auto a = random_hull(random, i);
         box_shape b{random.vec(0.1, 0.5)};
         auto ctx = random_context(random, 0.5);
-        auto r = run(a, b, ctx, 1e-4);
+        auto r = collide_polyhedron_checked(a, b, ctx, 1e-4);
         placed_polyhedron pa(a, ctx.posA, ctx.ornA), pb(box_hull(b.half_extents), ctx.posB, ctx.ornB);
         auto dirs = polyhedron_directions(pa, face_normals(pb), edge_directions(pb), random);
         auto max_sep = max_separation(pa.vertices, 0, pb.vertices, 0, dirs);
@@ -956,7 +974,7 @@ TEST(collide_polyhedron_test, random_polyhedron_box_matches_brute_force) {
                 EXPECT_NEAR(pivot[axis], index % 2 ? -b.half_extents[axis] : b.half_extents[axis], 1e-4);
             }
         }
-        auto s = run(b, a, swap_context(ctx), 1e-4);
+        auto s = collide_polyhedron_checked(b, a, swap_context(ctx), 1e-4);
         ASSERT_EQ(s.num_points > 0, r.num_points > 0) << "case " << i;
         if (r.num_points > 0) {
             EXPECT_NEAR(min_distance(s), min_distance(r), sat_bias(min_distance(r))) << "case " << i;
@@ -973,7 +991,7 @@ TEST(collide_polyhedron_test, random_polyhedron_capsule_matches_brute_force) {
         auto hull = random_hull(random, i);
         capsule_shape capsule{random.uniform(0.05, 0.3), random.uniform(0, 0.6), coordinate_axis(i % 3)};
         auto ctx = random_context(random, 0.4);
-        auto r = run(hull, capsule, ctx, 1e-4);
+        auto r = collide_polyhedron_checked(hull, capsule, ctx, 1e-4);
         placed_polyhedron poly(hull, ctx.posA, ctx.ornA);
         vector3 p0, p1;
         capsule_ends(capsule, ctx.posB, ctx.ornB, p0, p1);
@@ -1013,7 +1031,7 @@ TEST(collide_polyhedron_test, random_polyhedron_cylinder_matches_brute_force) {
         cylinder_shape cylinder{random.uniform(0.1, 0.5), random.uniform(0.1, 0.5), coordinate_axis(i % 3)};
         auto ctx = random_context(random, 0.6);
         ctx.threshold = 100;
-        auto r = run(hull, cylinder, ctx, 1e-4);
+        auto r = collide_polyhedron_checked(hull, cylinder, ctx, 1e-4);
         ASSERT_GE(r.num_points, 1u) << "case " << i;
         placed_polyhedron poly(hull, ctx.posA, ctx.ornA);
         auto axis = coordinate_axis_vector(cylinder.axis, ctx.ornB);
@@ -1058,7 +1076,7 @@ TEST(collide_polyhedron_test, random_polyhedron_plane_matches_brute_force) {
         auto hull = random_hull(random, i);
         auto ctx = random_context(random, 0.3);
         plane_shape plane{random.unit(), random.uniform(-0.4, 0.4)};
-        auto r = run(hull, plane, ctx, 1e-4);
+        auto r = collide_polyhedron_checked(hull, plane, ctx, 1e-4);
         placed_polyhedron poly(hull, ctx.posA, ctx.ornA);
         auto expected = large_scalar;
         std::size_t within = 0;
@@ -1094,15 +1112,16 @@ TEST(collide_polyhedron_test, argument_order_swaps_the_roles) {
         cylinder_shape cylinder{random.uniform(0.05, 0.4), random.uniform(0.05, 0.4),
                                 coordinate_axis((i + 1) % 3)};
         plane_shape plane{random.unit(), random.uniform(-0.3, 0.3)};
-        auto r = run(hull, sphere, ctx, 1e-4);
-        expect_swapped(r, run(sphere, hull, swapped, 1e-4), 1e-6, "sphere " + label);
+        auto r = collide_polyhedron_checked(hull, sphere, ctx, 1e-4);
+        expect_swapped(r, collide_polyhedron_checked(sphere, hull, swapped, 1e-4), 1e-6, "sphere " + label);
         with_points += r.num_points > 0;
-        r = run(hull, capsule, ctx, 1e-4);
-        expect_swapped(r, run(capsule, hull, swapped, 1e-4), 1e-6, "capsule " + label);
-        r = run(hull, cylinder, ctx, 1e-4);
-        expect_swapped(r, run(cylinder, hull, swapped, 1e-4), 1e-6, "cylinder " + label);
-        r = run(hull, plane, ctx, 1e-4);
-        expect_swapped(r, run(plane, hull, swapped, 1e-4), 1e-6, "plane " + label);
+        r = collide_polyhedron_checked(hull, capsule, ctx, 1e-4);
+        expect_swapped(r, collide_polyhedron_checked(capsule, hull, swapped, 1e-4), 1e-6, "capsule " + label);
+        r = collide_polyhedron_checked(hull, cylinder, ctx, 1e-4);
+        expect_swapped(r, collide_polyhedron_checked(cylinder, hull, swapped, 1e-4), 1e-6,
+                       "cylinder " + label);
+        r = collide_polyhedron_checked(hull, plane, ctx, 1e-4);
+        expect_swapped(r, collide_polyhedron_checked(plane, hull, swapped, 1e-4), 1e-6, "plane " + label);
     }
     EXPECT_GT(with_points, 60);
 }
@@ -1130,15 +1149,17 @@ TEST(collide_polyhedron_test, argument_order_of_polytope_pairs) {
     for (std::size_t i = 0; i < std::size(configs); ++i) {
         auto &ctx = configs[i];
         auto label = "config " + std::to_string(i);
-        auto r = run(hull, big, ctx);
+        auto r = collide_polyhedron_checked(hull, big, ctx);
         EXPECT_GE(r.num_points, 1u) << label;
-        expect_swapped(r, run(big, hull, swap_context(ctx)), 1e-5, "box " + label);
-        r = run(hull, big_hull, ctx);
-        expect_swapped(r, run(big_hull, hull, swap_context(ctx)), 1e-5, "polyhedron " + label);
+        expect_swapped(r, collide_polyhedron_checked(big, hull, swap_context(ctx)), 1e-5, "box " + label);
+        r = collide_polyhedron_checked(hull, big_hull, ctx);
+        expect_swapped(r, collide_polyhedron_checked(big_hull, hull, swap_context(ctx)), 1e-5,
+                       "polyhedron " + label);
     }
     // A tetrahedron's vertex on an upward face of another.
     auto ctx = at(vec(0, -(tet_circumradius + tet_inradius) + 0.003, 0), tet_face_up, tet_vertex_down);
-    expect_swapped(run(tet, tet, ctx), run(tet, tet, swap_context(ctx)), 1e-5, "tetrahedra");
+    expect_swapped(collide_polyhedron_checked(tet, tet, ctx),
+                   collide_polyhedron_checked(tet, tet, swap_context(ctx)), 1e-5, "tetrahedra");
 }
 
 // Building blocks.
@@ -1196,8 +1217,8 @@ TEST(collide_polyhedron_test, hull_with_many_faces_uses_the_uncached_path_alike)
     for (int i = 0; i < 12; ++i) {
         auto ctx = at(random.unit() * random.uniform(0.45, 0.65), random_orientation(random),
                       random_orientation(random));
-        auto r = run(small, big, ctx, 1e-4);
-        auto s = run(big, small, swap_context(ctx), 1e-4);
+        auto r = collide_polyhedron_checked(small, big, ctx, 1e-4);
+        auto s = collide_polyhedron_checked(big, small, swap_context(ctx), 1e-4);
         placed_polyhedron ps(small, ctx.posA, ctx.ornA), pb(big, ctx.posB, ctx.ornB);
         auto dirs = polyhedron_directions(ps, face_normals(pb), edge_directions(pb), random);
         auto max_sep = max_separation(ps.vertices, 0, pb.vertices, 0, dirs);

@@ -19,6 +19,11 @@ namespace collide_test {
 
 using namespace edyn;
 
+inline vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar(z)}; }
+
+template<typename S>
+constexpr bool is_plane = std::is_same_v<S, plane_shape>;
+
 inline std::string str(const vector3 &v) {
     return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
 }
@@ -27,6 +32,13 @@ inline void expect_vec_near(const vector3 &actual, const vector3 &expected, scal
     EXPECT_NEAR(actual.x, expected.x, tol) << "x of " << str(actual) << " vs " << str(expected);
     EXPECT_NEAR(actual.y, expected.y, tol) << "y of " << str(actual) << " vs " << str(expected);
     EXPECT_NEAR(actual.z, expected.z, tol) << "z of " << str(actual) << " vs " << str(expected);
+}
+
+// collide(a, b) in the given placement, as it is.
+inline collision_result collide_pair(const auto &a, const auto &b, const collision_context &ctx) {
+    collision_result r;
+    collide(a, b, ctx, r);
+    return r;
 }
 
 template<typename Kind>

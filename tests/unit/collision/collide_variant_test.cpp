@@ -4,7 +4,7 @@
 #include <utility>
 
 // collide(shapes_variant_t, shapes_variant_t): every ordered pair of alternatives, each at a
-// touching configuration (A resting on B, sunk `depth` into it), must report the depth and give
+// touching configuration (A resting on B, sunk `variant_depth` into it), must report the depth and give
 // exactly what the pair's own overload gives; plane against plane reports nothing.
 
 using namespace edyn;
@@ -12,8 +12,8 @@ using namespace collide_test;
 
 namespace {
 
-constexpr scalar depth = scalar(0.01);
-constexpr scalar tol = scalar(1e-4);
+constexpr scalar variant_depth = scalar(0.01);
+constexpr scalar variant_tol = scalar(1e-4);
 
 // A shape, and how far it reaches below and above its origin along y.
 template<typename Shape>
@@ -105,7 +105,7 @@ struct scene {
     collision_context ctx;
 };
 
-// A resting on B with `depth` of overlap: B at the origin, A above it. Both get a yaw so that
+// A resting on B with `variant_depth` of overlap: B at the origin, A above it. Both get a yaw so that
 // the pivots' object spaces differ from world space.
 template<typename A, typename B>
 scene make_scene() {
@@ -128,18 +128,18 @@ scene make_scene() {
     }
     shapes_variant_t a;
     if constexpr (std::is_same_v<A, plane_shape>) {
-        a = plane_above(b_top - depth);
+        a = plane_above(b_top - variant_depth);
     } else if constexpr (std::is_same_v<A, mesh_shape>) {
         // The mesh takes its body's transform: at the origin, facing down at B's top less depth.
-        a = flat_mesh(b_top - depth, false);
+        a = flat_mesh(b_top - variant_depth, false);
         ctx.ornA = quaternion_identity;
     } else if constexpr (std::is_same_v<A, paged_mesh_shape>) {
-        a = flat_paged_mesh(b_top - depth, false);
+        a = flat_paged_mesh(b_top - variant_depth, false);
         ctx.ornA = quaternion_identity;
     } else {
         auto s = make_sample(std::type_identity<A>{});
         a = s.shape;
-        ctx.posA = {0, b_top + s.bottom - depth, 0};
+        ctx.posA = {0, b_top + s.bottom - variant_depth, 0};
     }
     return {std::move(a), std::move(b), ctx};
 }
@@ -158,11 +158,12 @@ void check_pair() {
         if constexpr (touches_at_one_point_v<A, B>) {
             EXPECT_EQ(r.num_points, 1u);
         }
-        EXPECT_NEAR(min_distance(r), -depth, tol);
-        expect_consistent(r, s.ctx, tol, std::is_same_v<A, plane_shape>, std::is_same_v<B, plane_shape>);
+        EXPECT_NEAR(min_distance(r), -variant_depth, variant_tol);
+        expect_consistent(r, s.ctx, variant_tol, std::is_same_v<A, plane_shape>,
+                          std::is_same_v<B, plane_shape>);
         // Each point's normal points from B (below) up towards A.
         for (std::size_t i = 0; i < r.num_points; ++i)
-            expect_vec_near(r.point[i].normal, vector3_y, tol);
+            expect_vec_near(r.point[i].normal, vector3_y, variant_tol);
 
         // The dispatcher is the pair's own overload, bit for bit.
         collision_result direct;
@@ -209,12 +210,12 @@ TEST(collide_variant_test, plane_against_plane_reports_nothing) {
 TEST(collide_variant_test, separated_pairs_report_nothing) {
     // A lifted by the threshold and a bit more above B: no pair reports a point.
     auto s = make_scene<box_shape, compound_shape>();
-    s.ctx.posA.y += depth + s.ctx.threshold + scalar(0.01);
+    s.ctx.posA.y += variant_depth + s.ctx.threshold + scalar(0.01);
     collision_result r;
     collide(s.a, s.b, s.ctx, r);
     EXPECT_EQ(r.num_points, 0u);
     auto t = make_scene<compound_shape, sphere_shape>();
-    t.ctx.posA.y += depth + t.ctx.threshold + scalar(0.01);
+    t.ctx.posA.y += variant_depth + t.ctx.threshold + scalar(0.01);
     collide(t.a, t.b, t.ctx, r);
     EXPECT_EQ(r.num_points, 0u);
     auto u = make_scene<plane_shape, polyhedron_shape>();

@@ -13,7 +13,7 @@ using edyn::manifold_transforms;
 using edyn::scalar;
 using edyn::vector3;
 
-constexpr scalar tol = scalar(1e-5);
+constexpr scalar contact_manifold_tol = scalar(1e-5);
 
 // Body B at the origin, body A one metre above; contact normals point up (from B to A).
 struct manifold_fixture : ::testing::Test {
@@ -72,8 +72,8 @@ TEST_F(manifold_fixture, new_points_fill_slots_and_start_contact) {
     EXPECT_EQ(created, live);
 
     auto &cp = manifold.point[manifold.ids[0]];
-    EXPECT_NEAR(cp.distance, -0.01, tol);
-    EXPECT_NEAR(cp.pivotA.y, -1.01, tol);
+    EXPECT_NEAR(cp.distance, -0.01, contact_manifold_tol);
+    EXPECT_NEAR(cp.pivotA.y, -1.01, contact_manifold_tol);
     EXPECT_EQ(cp.lifetime, 0u);
     EXPECT_EQ(cp.normal_impulse, 0);
     expect_ids_permutation();
@@ -108,9 +108,9 @@ TEST_F(manifold_fixture, matched_point_keeps_slot_impulses_and_ages) {
     EXPECT_EQ(p0.friction_impulse[1], -0.25f);
     EXPECT_EQ(p1.normal_impulse, 7);
     EXPECT_EQ(p0.lifetime, 1u);
-    EXPECT_NEAR(p0.pivotB.x, 0.01, tol);
-    EXPECT_NEAR(p1.pivotB.x, 1.01, tol);
-    EXPECT_NEAR(p0.distance, -0.02, tol);
+    EXPECT_NEAR(p0.pivotB.x, 0.01, contact_manifold_tol);
+    EXPECT_NEAR(p1.pivotB.x, 1.01, contact_manifold_tol);
+    EXPECT_NEAR(p0.distance, -0.02, contact_manifold_tol);
 }
 
 TEST_F(manifold_fixture, equal_features_match_beyond_caching_radius) {
@@ -131,7 +131,7 @@ TEST_F(manifold_fixture, equal_features_match_beyond_caching_radius) {
     EXPECT_EQ(changes.num_created, 0u);
     ASSERT_EQ(manifold.num_points, 1u);
     EXPECT_EQ(manifold.point[slot].normal_impulse, 5);
-    EXPECT_NEAR(manifold.point[slot].pivotA.x, 0.05, tol);
+    EXPECT_NEAR(manifold.point[slot].pivotA.x, 0.05, contact_manifold_tol);
 
     // Other features at the very same place: clipping relabelled the point, which continues
     // with its impulse (warm starting depends on it).
@@ -175,8 +175,8 @@ TEST_F(manifold_fixture, proximity_match_needs_caching_radius) {
     changes = edyn::update_contact_manifold(manifold, tf, make_result({rolled}));
     EXPECT_EQ(changes.num_created, 0u);
     EXPECT_EQ(manifold.point[slot].normal_impulse, 2);
-    EXPECT_NEAR(manifold.point[slot].pivotA.z, 0.05, tol);
-    EXPECT_NEAR(manifold.point[other].pivotB.x, 0.09, tol);
+    EXPECT_NEAR(manifold.point[slot].pivotA.z, 0.05, contact_manifold_tol);
+    EXPECT_NEAR(manifold.point[other].pivotB.x, 0.09, contact_manifold_tol);
 }
 
 TEST_F(manifold_fixture, a_one_point_pair_continues_its_point_wherever_the_result_lies) {
@@ -194,7 +194,7 @@ TEST_F(manifold_fixture, a_one_point_pair_continues_its_point_wherever_the_resul
     ASSERT_EQ(manifold.num_points, 1u);
     EXPECT_EQ(manifold.ids[0], slot);
     EXPECT_EQ(manifold.point[slot].normal_impulse, 2);
-    EXPECT_NEAR(manifold.point[slot].pivotB.x, 0.09, tol);
+    EXPECT_NEAR(manifold.point[slot].pivotB.x, 0.09, contact_manifold_tol);
 
     // No point in the result: the pair does not touch within the threshold, though the live
     // point's pivots are still close.
@@ -266,7 +266,7 @@ TEST_F(manifold_fixture, deepest_point_is_always_kept) {
     EXPECT_TRUE(live_positions().count({500, 0, 500}));
     scalar deepest = 1;
     manifold.each_point([&](const edyn::contact_point &cp) { deepest = std::min(deepest, cp.distance); });
-    EXPECT_NEAR(deepest, -0.05, tol);
+    EXPECT_NEAR(deepest, -0.05, contact_manifold_tol);
 }
 
 TEST_F(manifold_fixture, two_new_points_into_three_replace_together) {
@@ -294,8 +294,8 @@ TEST_F(manifold_fixture, separation_removes_points_and_ends_contact) {
     tf.posA.y += 0.01f;
     auto changes = edyn::refresh_contact_manifold(manifold, tf);
     EXPECT_EQ(changes.num_destroyed, 0u);
-    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, 0.01, tol);
-    EXPECT_NEAR(manifold.point[manifold.ids[1]].distance, 0.01, tol);
+    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, 0.01, contact_manifold_tol);
+    EXPECT_NEAR(manifold.point[manifold.ids[1]].distance, 0.01, contact_manifold_tol);
 
     // A tilts about z around the first point: the second rises by sin(0.03) ~ 3 cm, past the
     // threshold, while the first stays.
@@ -324,7 +324,7 @@ TEST_F(manifold_fixture, tangential_drift_removes_points) {
     edyn::update_contact_manifold(manifold, tf, make_result({make_point({0, 0, 0}, -0.005f)}));
     tf.posA.x += 0.015f; // below contact_drift_threshold (2 cm)
     EXPECT_EQ(edyn::refresh_contact_manifold(manifold, tf).num_destroyed, 0u);
-    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, -0.005, tol);
+    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, -0.005, contact_manifold_tol);
     tf.posA.x += 0.01f; // 2.5 cm in total
     auto changes = edyn::refresh_contact_manifold(manifold, tf);
     EXPECT_EQ(changes.num_destroyed, 1u);
@@ -347,7 +347,7 @@ TEST_F(manifold_fixture, removal_keeps_other_slots) {
     EXPECT_EQ(manifold.ids[0], slots[0]);
     EXPECT_EQ(manifold.ids[1], slots[2]);
     EXPECT_EQ(manifold.point[slots[2]].normal_impulse, 9);
-    EXPECT_NEAR(manifold.point[slots[2]].pivotB.x, 2, tol);
+    EXPECT_NEAR(manifold.point[slots[2]].pivotB.x, 2, contact_manifold_tol);
     expect_ids_permutation();
 }
 
@@ -376,7 +376,7 @@ TEST_F(manifold_fixture, rotated_bodies_use_object_space_pivots) {
     ASSERT_EQ(manifold.num_points, 1u);
     auto changes = edyn::refresh_contact_manifold(manifold, tf);
     EXPECT_EQ(changes.num_destroyed, 0u);
-    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, -0.004, tol);
+    EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, -0.004, contact_manifold_tol);
     EXPECT_EQ(manifold.point[manifold.ids[0]].lifetime, 1u);
 }
 
@@ -426,11 +426,11 @@ TEST_F(manifold_fixture, updates_leave_the_pivots_in_world_space) {
     edyn::update_contact_manifold(manifold, tf, result);
     ASSERT_EQ(manifold.num_points, 1u);
     auto &cp = manifold.point[manifold.ids[0]];
-    EXPECT_NEAR(edyn::distance(cp.positionB, {0.25f, 0, 0}), 0, tol);
-    EXPECT_NEAR(edyn::distance(cp.positionA, {0.25f, -0.01f, 0}), 0, tol);
+    EXPECT_NEAR(edyn::distance(cp.positionB, {0.25f, 0, 0}), 0, contact_manifold_tol);
+    EXPECT_NEAR(edyn::distance(cp.positionA, {0.25f, -0.01f, 0}), 0, contact_manifold_tol);
 
     tf.posA.y -= scalar(0.005);
     edyn::refresh_contact_manifold(manifold, tf);
-    EXPECT_NEAR(edyn::distance(cp.positionA, {0.25f, -0.015f, 0}), 0, tol);
-    EXPECT_NEAR(cp.distance, scalar(-0.015), tol);
+    EXPECT_NEAR(edyn::distance(cp.positionA, {0.25f, -0.015f, 0}), 0, contact_manifold_tol);
+    EXPECT_NEAR(cp.distance, scalar(-0.015), contact_manifold_tol);
 }

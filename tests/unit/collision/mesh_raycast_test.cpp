@@ -1,6 +1,7 @@
 // shape_raycast() against triangle meshes (surfaces hit from either side, the first triangle
 // along the ray, the lowest index on ties) and edyn::raycast() through a registry with a mesh
 // body. Expected fractions come from plane intersections written out here.
+#include "collide_test_helpers.hpp"
 #include "edyn/collision/shape_raycast.hpp"
 #include "edyn/edyn.hpp"
 #include "edyn/math/transform.hpp"
@@ -13,31 +14,16 @@
 #include <vector>
 
 using namespace edyn;
+using namespace collide_test;
 
 namespace {
 
-constexpr scalar tol = scalar(1e-5);
-
-vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar(z)}; }
-
-std::string str(const vector3 &v) {
-    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
-}
-
-void expect_vec_near(const vector3 &a, const vector3 &b, scalar t) {
-    EXPECT_NEAR(a.x, b.x, t) << str(a) << " vs " << str(b);
-    EXPECT_NEAR(a.y, b.y, t) << str(a) << " vs " << str(b);
-    EXPECT_NEAR(a.z, b.z, t) << str(a) << " vs " << str(b);
-}
+constexpr scalar mesh_raycast_tol = scalar(1e-5);
 
 // n x n unit cells in the xz plane at height y, front +y, appended to (vertices, indices). Cell
 // (i, j) gives triangles first + 2 (i n + j) (where z - j >= x - i) and first + 2 (i n + j) + 1.
 void add_floor(std::vector<vector3> &vertices, std::vector<int> &indices, int n, scalar y) {
     test::append_grid(vertices, indices, n, 1, {0, y, 0});
-}
-
-mesh_shape make_mesh(const std::vector<vector3> &vertices, const std::vector<int> &indices) {
-    return mesh_shape{test::make_triangle_mesh(vertices, indices)};
 }
 
 // Two 4 x 4 floors: triangles 0..31 at y = 0, 32..63 at y = 1.
@@ -46,7 +32,7 @@ mesh_shape two_floors() {
     std::vector<int> idx;
     add_floor(v, idx, 4, 0);
     add_floor(v, idx, 4, 1);
-    return make_mesh(v, idx);
+    return test::make_mesh(v, idx);
 }
 
 // The triangle of a 4 x 4 floor containing (x, z) strictly inside a cell.
@@ -77,22 +63,22 @@ TEST(mesh_raycast_test, hits_the_first_triangle_from_above_and_below) {
         // Down from y = 5 to y = -5: the upper floor at fraction 0.4, facing up.
         auto down = cast(mesh, vec(x, 5, z), vec(x, -5, z));
         ASSERT_TRUE(down.hit()) << x << ", " << z;
-        EXPECT_NEAR(down.fraction, 0.4, tol);
-        expect_vec_near(down.normal, vector3_y, tol);
+        EXPECT_NEAR(down.fraction, 0.4, mesh_raycast_tol);
+        expect_vec_near(down.normal, vector3_y, mesh_raycast_tol);
         EXPECT_EQ(triangle_of(down), floor_triangle(x, z, 32)) << x << ", " << z;
 
         // Up from below: the lower floor at fraction 0.5, the normal facing the ray's start.
         auto up = cast(mesh, vec(x, -5, z), vec(x, 5, z));
         ASSERT_TRUE(up.hit());
-        EXPECT_NEAR(up.fraction, 0.5, tol);
-        expect_vec_near(up.normal, -vector3_y, tol);
+        EXPECT_NEAR(up.fraction, 0.5, mesh_raycast_tol);
+        expect_vec_near(up.normal, -vector3_y, mesh_raycast_tol);
         EXPECT_EQ(triangle_of(up), floor_triangle(x, z, 0));
 
         // Between the floors, upwards: the upper floor from behind.
         auto between = cast(mesh, vec(x, 0.5, z), vec(x, 1.5, z));
         ASSERT_TRUE(between.hit());
-        EXPECT_NEAR(between.fraction, 0.5, tol);
-        expect_vec_near(between.normal, -vector3_y, tol);
+        EXPECT_NEAR(between.fraction, 0.5, mesh_raycast_tol);
+        expect_vec_near(between.normal, -vector3_y, mesh_raycast_tol);
         EXPECT_EQ(triangle_of(between), floor_triangle(x, z, 32));
     }
 }
@@ -114,8 +100,8 @@ TEST(mesh_raycast_test, slanted_rays_match_the_plane_intersection) {
         if (!inside) continue;
         ++hits;
         ASSERT_TRUE(r.hit()) << str(p0) << " -> " << str(p1);
-        EXPECT_NEAR(r.fraction, t, tol);
-        expect_vec_near(r.normal, vector3_y, tol);
+        EXPECT_NEAR(r.fraction, t, mesh_raycast_tol);
+        expect_vec_near(r.normal, vector3_y, mesh_raycast_tol);
         auto hit_point = p0 + (p1 - p0) * r.fraction;
         EXPECT_EQ(triangle_of(r), floor_triangle(hit_point.x, hit_point.z, 32)) << str(hit_point);
     }
@@ -145,12 +131,12 @@ TEST(mesh_raycast_test, rays_through_edges_and_vertices_hit) {
     std::vector<vector3> v;
     std::vector<int> idx;
     add_floor(v, idx, 4, 0);
-    auto mesh = make_mesh(v, idx);
+    auto mesh = test::make_mesh(v, idx);
     // On the line x = 2 between cell (1, 1)'s second triangle (11) and cell (2, 1)'s first (18).
     auto edge = cast(mesh, vec(2, 1, 1.5), vec(2, -1, 1.5));
     ASSERT_TRUE(edge.hit());
-    EXPECT_NEAR(edge.fraction, 0.5, tol);
-    expect_vec_near(edge.normal, vector3_y, tol);
+    EXPECT_NEAR(edge.fraction, 0.5, mesh_raycast_tol);
+    expect_vec_near(edge.normal, vector3_y, mesh_raycast_tol);
     EXPECT_EQ(triangle_of(edge), 11u) << "the lowest index on equal fractions";
     // On a diagonal: both triangles of cell (2, 3) (22 and 23).
     auto diagonal = cast(mesh, vec(2.25, 1, 3.25), vec(2.25, -1, 3.25));
@@ -159,7 +145,7 @@ TEST(mesh_raycast_test, rays_through_edges_and_vertices_hit) {
     // Through vertex (2, 0, 2), shared by triangles 10, 11, 13, 18, 20, 21 (the lowest is 10).
     auto vertex = cast(mesh, vec(2, 1, 2), vec(2, -1, 2));
     ASSERT_TRUE(vertex.hit());
-    EXPECT_NEAR(vertex.fraction, 0.5, tol);
+    EXPECT_NEAR(vertex.fraction, 0.5, mesh_raycast_tol);
     EXPECT_EQ(triangle_of(vertex), 10u);
     // On the outer boundary edge x = 0 and the corner (4, 0, 4).
     EXPECT_TRUE(cast(mesh, vec(0, 1, 2.5), vec(0, -1, 2.5)).hit());
@@ -182,13 +168,14 @@ TEST(mesh_raycast_test, the_mesh_body_transform_is_honoured) {
         auto local = cast(mesh, local_p0, local_p1);
         auto world = cast(mesh, world_p0, world_p1, pos, orn);
         ASSERT_TRUE(world.hit());
-        EXPECT_NEAR(world.fraction, local.fraction, tol);
-        EXPECT_NEAR(world.fraction, 0.4, tol);
-        expect_vec_near(world.normal, rotate(orn, vector3_y), tol);
+        EXPECT_NEAR(world.fraction, local.fraction, mesh_raycast_tol);
+        EXPECT_NEAR(world.fraction, 0.4, mesh_raycast_tol);
+        expect_vec_near(world.normal, rotate(orn, vector3_y), mesh_raycast_tol);
         EXPECT_EQ(triangle_of(world), triangle_of(local));
         // The untransformed world ray misses the mesh at the origin, or hits something else.
         auto untransformed = cast(mesh, world_p0, world_p1);
-        EXPECT_FALSE(untransformed.hit() && std::abs(untransformed.fraction - scalar(0.4)) < tol);
+        EXPECT_FALSE(untransformed.hit() &&
+                     std::abs(untransformed.fraction - scalar(0.4)) < mesh_raycast_tol);
     }
 }
 
@@ -199,7 +186,7 @@ TEST(mesh_raycast_test, through_the_shape_variant) {
         var, raycast_context{vec(0, -1, 0), quaternion_identity, vec(1.2, 5, 0.3), vec(1.2, -5, 0.3)});
     ASSERT_TRUE(r.hit());
     // The mesh moved down by 1: the upper floor at y = 0.
-    EXPECT_NEAR(r.fraction, 0.5, tol);
+    EXPECT_NEAR(r.fraction, 0.5, mesh_raycast_tol);
     EXPECT_EQ(triangle_of(r), floor_triangle(1.2, 0.3, 32));
 }
 
@@ -230,25 +217,25 @@ TEST_F(mesh_raycast_registry_test, raycast_finds_a_static_mesh_body) {
 
     auto hit_mesh = raycast(reg, vec(11.7, 5, 1.2), vec(11.7, -5, 1.2));
     ASSERT_EQ(hit_mesh.entity, body);
-    EXPECT_NEAR(hit_mesh.fraction, 0.4, tol);
-    expect_vec_near(hit_mesh.normal, vector3_y, tol);
+    EXPECT_NEAR(hit_mesh.fraction, 0.4, mesh_raycast_tol);
+    expect_vec_near(hit_mesh.normal, vector3_y, mesh_raycast_tol);
     auto *info = std::get_if<mesh_raycast_info>(&hit_mesh.info_var);
     ASSERT_NE(info, nullptr);
     EXPECT_EQ(info->triangle_index, floor_triangle(1.7, 1.2, 32));
 
     auto hit_sphere = raycast(reg, vec(12.5, 5, 2.5), vec(12.5, -5, 2.5));
     EXPECT_EQ(hit_sphere.entity, sphere);
-    EXPECT_NEAR(hit_sphere.fraction, (5 - 3.25) / 10, tol);
+    EXPECT_NEAR(hit_sphere.fraction, (5 - 3.25) / 10, mesh_raycast_tol);
 
     auto ignoring = raycast(reg, vec(12.5, 5, 2.5), vec(12.5, -5, 2.5), {sphere});
     EXPECT_EQ(ignoring.entity, body);
-    EXPECT_NEAR(ignoring.fraction, 0.4, tol);
+    EXPECT_NEAR(ignoring.fraction, 0.4, mesh_raycast_tol);
 
     // Upwards from between the floors: the upper floor's back at y = 1.
     auto from_between = raycast(reg, vec(11.7, 0.5, 1.2), vec(11.7, 3, 1.2));
     ASSERT_EQ(from_between.entity, body);
-    EXPECT_NEAR(from_between.fraction, 0.2, tol);
-    expect_vec_near(from_between.normal, -vector3_y, tol);
+    EXPECT_NEAR(from_between.fraction, 0.2, mesh_raycast_tol);
+    expect_vec_near(from_between.normal, -vector3_y, mesh_raycast_tol);
 
     auto miss = raycast(reg, vec(0, 5, 1.5), vec(0, -5, 1.5));
     EXPECT_FALSE(miss.hit());

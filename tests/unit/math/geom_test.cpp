@@ -1,24 +1,13 @@
 #include "edyn/math/geom.hpp"
 #include "edyn/math/math.hpp"
+#include "math_test_helpers.hpp"
 #include <gtest/gtest.h>
 #include <random>
 
 using namespace edyn;
+using namespace math_test;
 
 namespace {
-
-constexpr scalar tol = scalar(1e-5);
-
-void expect_near(const vector3 &a, const vector3 &b, scalar t = tol) {
-    EXPECT_NEAR(a.x, b.x, t) << "x of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.y, b.y, t) << "y of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.z, b.z, t) << "z of (" << a.x << ", " << a.y << ", " << a.z << ")";
-}
-
-void expect_near(const vector2 &a, const vector2 &b, scalar t = tol) {
-    EXPECT_NEAR(a.x, b.x, t) << "x of (" << a.x << ", " << a.y << ")";
-    EXPECT_NEAR(a.y, b.y, t) << "y of (" << a.x << ", " << a.y << ")";
-}
 
 struct random_source {
     std::mt19937 engine{1234};

@@ -1,24 +1,12 @@
 #include "edyn/math/math.hpp"
 #include "edyn/math/matrix3x3.hpp"
+#include "math_test_helpers.hpp"
 #include <gtest/gtest.h>
 
 using namespace edyn;
+using namespace math_test;
 
 namespace {
-constexpr scalar tol = scalar(1e-5);
-
-void expect_near(const vector3 &a, const vector3 &b, scalar t = tol) {
-    EXPECT_NEAR(a.x, b.x, t) << "x of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.y, b.y, t) << "y of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.z, b.z, t) << "z of (" << a.x << ", " << a.y << ", " << a.z << ")";
-}
-
-void expect_near(const matrix3x3 &a, const matrix3x3 &b, scalar t = tol) {
-    for (int i = 0; i < 3; ++i) {
-        SCOPED_TRACE(i);
-        expect_near(a[i], b[i], t);
-    }
-}
 
 const matrix3x3 m = matrix3x3_rows({2, -1, 0}, {1, 3, 4}, {0.5, 0, 1});
 } // namespace

@@ -1,19 +1,14 @@
 #include "edyn/math/math.hpp"
 #include "edyn/math/quaternion.hpp"
 #include "edyn/math/transform.hpp"
+#include "math_test_helpers.hpp"
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace edyn;
+using namespace math_test;
 
 namespace {
-constexpr scalar tol = scalar(1e-5);
-
-void expect_near(const vector3 &a, const vector3 &b, scalar t = tol) {
-    EXPECT_NEAR(a.x, b.x, t) << "x of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.y, b.y, t) << "y of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.z, b.z, t) << "z of (" << a.x << ", " << a.y << ", " << a.z << ")";
-}
 
 // q and -q are the same rotation.
 void expect_same_rotation(const quaternion &a, const quaternion &b, scalar t = tol) {

@@ -1,22 +1,14 @@
 #include "edyn/math/math.hpp"
 #include "edyn/math/vector2.hpp"
 #include "edyn/math/vector3.hpp"
+#include "math_test_helpers.hpp"
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
 #include <utility>
 
 using namespace edyn;
-
-namespace {
-constexpr scalar tol = scalar(1e-5);
-
-void expect_near(const vector3 &a, const vector3 &b, scalar t = tol) {
-    EXPECT_NEAR(a.x, b.x, t) << "x of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.y, b.y, t) << "y of (" << a.x << ", " << a.y << ", " << a.z << ")";
-    EXPECT_NEAR(a.z, b.z, t) << "z of (" << a.x << ", " << a.y << ", " << a.z << ")";
-}
-} // namespace
+using namespace math_test;
 
 TEST(vector3_test, constants) {
     EXPECT_EQ(vector3_zero, (vector3{0, 0, 0}));

@@ -46,12 +46,12 @@ void consume_jumps(registry &registry) {
             jumps_seen.push_back(j.id);
 }
 
-void setup(registry &registry) {
+void rules_setup(registry &registry) {
     register_external_components<steering, health, action_list<jump>>(registry);
     register_networked_components<steering, health>(registry, std::tuple<jump>{});
 }
 
-entity make_box(registry &registry, const vector3 &pos) {
+entity rules_box(registry &registry, const vector3 &pos) {
     auto def = rigidbody_def{};
     def.shape = box_shape{{0.5, 0.5, 0.5}};
     def.position = pos;
@@ -62,10 +62,10 @@ entity make_box(registry &registry, const vector3 &pos) {
 }
 
 TEST(network_rules, actions_reach_the_server_once_each_under_loss) {
-    net_harness h(&setup);
+    net_harness h(&rules_setup);
     set_pre_step_callback(h.server, &consume_jumps);
     jumps_seen.clear();
-    auto box = make_box(h.server, {0, 0, 0});
+    auto box = rules_box(h.server, {0, 0, 0});
     auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.25, .duplication = 0.1, .seed = 3});
     h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
     h.run(1);
@@ -90,9 +90,9 @@ TEST(network_rules, actions_reach_the_server_once_each_under_loss) {
 }
 
 TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
-    net_harness h(&setup);
-    auto mine = make_box(h.server, {0, 0, 0});
-    auto theirs = make_box(h.server, {2, 0, 0});
+    net_harness h(&rules_setup);
+    auto mine = rules_box(h.server, {0, 0, 0});
+    auto theirs = rules_box(h.server, {2, 0, 0});
     h.server.emplace<health>(mine);
     auto &c = h.add_client({.latency = 0.01});
     auto &rc = h.server.get<remote_client>(c.server_entity);
@@ -159,8 +159,8 @@ TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
 }
 
 TEST(network_rules, random_bytes_never_crash_the_server) {
-    net_harness h(&setup);
-    auto mine = make_box(h.server, {0, 0, 0});
+    net_harness h(&rules_setup);
+    auto mine = rules_box(h.server, {0, 0, 0});
     auto &c = h.add_client({.latency = 0.01});
     h.server.get<remote_client>(c.server_entity).owned_entities.push_back(mine);
     h.run(0.3);
@@ -190,9 +190,9 @@ TEST(network_rules, random_bytes_never_crash_the_server) {
 }
 
 TEST(network_rules, islands_enter_and_leave_the_aabb_of_interest) {
-    net_harness h(&setup);
-    auto near_box = make_box(h.server, {0, 0, 0});
-    auto far_box = make_box(h.server, {100, 0, 5});
+    net_harness h(&rules_setup);
+    auto near_box = rules_box(h.server, {0, 0, 0});
+    auto far_box = rules_box(h.server, {100, 0, 5});
     auto &c = h.add_client({.latency = 0.02});
     auto &rc = h.server.get<remote_client>(c.server_entity);
     rc.aabb_of_interest = {{-10, -10, -10}, {10, 10, 10}};
@@ -215,9 +215,9 @@ TEST(network_rules, islands_enter_and_leave_the_aabb_of_interest) {
 }
 
 TEST(network_rules, destroyed_entities_are_destroyed_in_the_client) {
-    net_harness h(&setup);
-    auto a = make_box(h.server, {0, 0, 0});
-    auto b = make_box(h.server, {3, 0, 0});
+    net_harness h(&rules_setup);
+    auto a = rules_box(h.server, {0, 0, 0});
+    auto b = rules_box(h.server, {3, 0, 0});
     h.server.emplace<health>(b, health{42});
     auto &c = h.add_client({.latency = 0.02, .loss = 0.2, .seed = 9});
     h.run(0.5);

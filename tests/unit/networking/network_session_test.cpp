@@ -31,13 +31,13 @@ void apply_thrust(registry &registry) {
         v += t.force * (dt / m.s);
 }
 
-void setup(registry &registry) {
+void session_setup(registry &registry) {
     register_external_components<thrust>(registry);
     register_networked_components<thrust>(registry);
     set_pre_step_callback(registry, &apply_thrust);
 }
 
-entity make_box(registry &registry, const vector3 &pos, const vector3 &vel = vector3_zero) {
+entity session_box(registry &registry, const vector3 &pos, const vector3 &vel = vector3_zero) {
     auto def = rigidbody_def{};
     def.mass = 10;
     def.shape = box_shape{{0.5, 0.5, 0.5}};
@@ -77,9 +77,9 @@ struct server_history {
 };
 
 TEST(network_session, entities_reach_the_client_with_their_shapes) {
-    net_harness h(&setup);
+    net_harness h(&session_setup);
     make_ground(h.server);
-    auto box = make_box(h.server, {0, 3, 0});
+    auto box = session_box(h.server, {0, 3, 0});
     auto &c = h.add_client({.latency = 0.05});
     h.run(1);
     auto local = client_local_entity(c.reg, box);
@@ -95,11 +95,11 @@ TEST(network_session, entities_reach_the_client_with_their_shapes) {
 }
 
 void check_convergence(execution_mode mode) {
-    net_harness h(&setup, mode);
+    net_harness h(&session_setup, mode);
     make_ground(h.server);
     auto boxes = std::vector<entity>{};
     for (int i = 0; i < 4; ++i)
-        boxes.push_back(make_box(h.server, {scalar(i * 2 - 3), scalar(1 + i), 0}, {scalar(1 - i), 2, 0}));
+        boxes.push_back(session_box(h.server, {scalar(i * 2 - 3), scalar(1 + i), 0}, {scalar(1 - i), 2, 0}));
     auto history = server_history{{}, get_fixed_dt(h.server)};
     auto clients = std::vector<net_client *>{};
     for (std::uint64_t i = 0; i < 3; ++i)
@@ -144,9 +144,9 @@ TEST(network_session, client_view_converges_in_asynchronous_mode) {
 }
 
 void check_inputs(execution_mode mode) {
-    net_harness h(&setup, mode);
+    net_harness h(&session_setup, mode);
     make_ground(h.server);
-    auto box = make_box(h.server, {0, 0.5, 0});
+    auto box = session_box(h.server, {0, 0.5, 0});
     auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.1, .seed = 5});
     h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
     h.run(1);
@@ -172,9 +172,9 @@ TEST(network_session, inputs_reach_the_server_in_asynchronous_mode) {
 // client's present input as the state at the snapshot's time, the box ran ahead by the whole
 // extrapolation: up to 45 cm off.)
 TEST(network_session, an_input_acts_from_its_own_time_in_the_client_s_extrapolation) {
-    net_harness h(&setup);
+    net_harness h(&session_setup);
     make_ground(h.server);
-    auto box = make_box(h.server, {0, 0.5, 0});
+    auto box = session_box(h.server, {0, 0.5, 0});
     auto history = server_history{{}, get_fixed_dt(h.server)};
     auto &c = h.add_client({.latency = 0.05});
     h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
@@ -211,9 +211,9 @@ TEST(network_session, an_input_acts_from_its_own_time_in_the_client_s_extrapolat
 // its inputs.
 TEST(network_session, the_playout_delay_and_the_client_s_lead_settle) {
     for (std::uint64_t seed : {1, 2, 3, 4}) {
-        net_harness h(&setup);
+        net_harness h(&session_setup);
         make_ground(h.server);
-        make_box(h.server, {0, 0.5, 0});
+        session_box(h.server, {0, 0.5, 0});
         auto link = simulated_link_settings{.latency = 0.05, .jitter = 0.02, .loss = 0.1, .seed = seed};
         link.reordering = 0.01;
         auto &c = h.add_client(link);
@@ -235,10 +235,10 @@ TEST(network_session, the_playout_delay_and_the_client_s_lead_settle) {
 }
 
 TEST(network_session, constraints_reach_the_client_between_its_bodies) {
-    net_harness h(&setup);
+    net_harness h(&session_setup);
     make_ground(h.server);
-    auto a = make_box(h.server, {0, 3, 0});
-    auto b = make_box(h.server, {1.5, 3, 0});
+    auto a = session_box(h.server, {0, 3, 0});
+    auto b = session_box(h.server, {1.5, 3, 0});
     auto hinge = make_constraint<hinge_constraint>(h.server, a, b, [](hinge_constraint &c) {
         c.pivot[0] = {0.75, 0, 0};
         c.pivot[1] = {-0.75, 0, 0};
@@ -260,7 +260,7 @@ TEST(network_session, constraints_reach_the_client_between_its_bodies) {
 }
 
 TEST(network_session, corrections_are_shown_gradually_and_decay) {
-    net_harness h(&setup);
+    net_harness h(&session_setup);
     auto def = rigidbody_def{};
     def.shape = sphere_shape{0.5};
     def.gravity = vector3_zero;
@@ -293,7 +293,7 @@ TEST(network_session, corrections_are_shown_gradually_and_decay) {
 } // namespace
 
 TEST(network_session, a_body_resting_on_a_paged_terrain_rests_on_the_client_s_copy_of_it) {
-    net_harness h(&setup);
+    net_harness h(&session_setup);
     // A hilly 40 m x 40 m terrain of 3,200 triangles in pages of 200, kept in memory.
     auto grid =
         scenes::make_grid_mesh(40, 1, [](scalar x, scalar z) { return scenes::terrain_height(x, z, 2); });
@@ -306,7 +306,7 @@ TEST(network_session, a_body_resting_on_a_paged_terrain_rests_on_the_client_s_co
     h.server.emplace<networked_tag>(terrain);
     const auto &server_mesh = *h.server.get<paged_mesh_shape>(terrain).trimesh;
     auto x = scalar(3), z = scalar(-4);
-    auto box = make_box(h.server, {x, scenes::terrain_height(x, z, 2) + scalar(0.6), z});
+    auto box = session_box(h.server, {x, scenes::terrain_height(x, z, 2) + scalar(0.6), z});
     auto &c = h.add_client({.latency = 0.05});
 
     auto worst_sink = scalar(0);

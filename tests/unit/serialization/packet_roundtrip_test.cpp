@@ -82,7 +82,7 @@ int first_default_field(const T &value) {
     return found;
 }
 
-std::vector<std::uint8_t> encode(const packet::edyn_packet &packet) {
+std::vector<std::uint8_t> encode_packet(const packet::edyn_packet &packet) {
     std::vector<std::uint8_t> data;
     memory_output_archive archive(data);
     archive(packet);
@@ -90,8 +90,8 @@ std::vector<std::uint8_t> encode(const packet::edyn_packet &packet) {
 }
 
 // Decodes from a heap block of exactly `size` bytes, so that AddressSanitizer sees over-reads.
-bool decode(const std::uint8_t *bytes, std::size_t size, packet::edyn_packet &packet,
-            std::size_t *left = nullptr) {
+bool decode_packet(const std::uint8_t *bytes, std::size_t size, packet::edyn_packet &packet,
+                   std::size_t *left = nullptr) {
     // The range constructor allocates exactly `size` bytes.
     auto block = std::vector<std::uint8_t>(bytes, bytes + size);
     memory_input_archive archive(block.data(), block.size());
@@ -108,24 +108,24 @@ void check_round_trip() {
     EXPECT_EQ(first_default_field(original), -1)
         << "sample of kind " << Index << " leaves a field at its default";
 
-    auto data = encode(sample);
+    auto data = encode_packet(sample);
     ASSERT_FALSE(data.empty());
     EXPECT_EQ(data[0], Index) << "the first byte is the kind";
-    EXPECT_NE(data, encode(packet::edyn_packet{kind{}})) << "kind " << Index;
+    EXPECT_NE(data, encode_packet(packet::edyn_packet{kind{}})) << "kind " << Index;
 
     packet::edyn_packet decoded;
     std::size_t left = 1;
-    ASSERT_TRUE(decode(data.data(), data.size(), decoded, &left)) << "kind " << Index;
+    ASSERT_TRUE(decode_packet(data.data(), data.size(), decoded, &left)) << "kind " << Index;
     EXPECT_EQ(left, 0u) << "kind " << Index;
     ASSERT_EQ(decoded.var.index(), Index);
     EXPECT_TRUE(same(std::get<Index>(decoded.var), original))
         << "kind " << Index << " changed in the round trip";
-    EXPECT_EQ(encode(decoded), data) << "kind " << Index << " re-encodes differently";
+    EXPECT_EQ(encode_packet(decoded), data) << "kind " << Index << " re-encodes differently";
 
     // Every strict prefix fails without reading past it.
     for (std::size_t size = 0; size < data.size(); ++size) {
         packet::edyn_packet truncated;
-        EXPECT_FALSE(decode(data.data(), size, truncated))
+        EXPECT_FALSE(decode_packet(data.data(), size, truncated))
             << "kind " << Index << ", " << size << " of " << data.size() << " bytes";
     }
 
@@ -133,9 +133,9 @@ void check_round_trip() {
     auto padded = data;
     padded.insert(padded.end(), {0xff, 0x00, 0x7f});
     packet::edyn_packet with_trailing;
-    ASSERT_TRUE(decode(padded.data(), padded.size(), with_trailing, &left)) << "kind " << Index;
+    ASSERT_TRUE(decode_packet(padded.data(), padded.size(), with_trailing, &left)) << "kind " << Index;
     EXPECT_EQ(left, 3u) << "kind " << Index;
-    EXPECT_EQ(encode(with_trailing), data) << "kind " << Index;
+    EXPECT_EQ(encode_packet(with_trailing), data) << "kind " << Index;
 }
 
 TEST(packet_roundtrip, every_kind) {
@@ -144,9 +144,9 @@ TEST(packet_roundtrip, every_kind) {
 }
 
 TEST(packet_roundtrip, registry_snapshot_fields) {
-    auto data = encode(test::sample_packet<0>());
+    auto data = encode_packet(test::sample_packet<0>());
     packet::edyn_packet decoded;
-    ASSERT_TRUE(decode(data.data(), data.size(), decoded));
+    ASSERT_TRUE(decode_packet(data.data(), data.size(), decoded));
     auto *snapshot = std::get_if<packet::registry_snapshot>(&decoded.var);
     ASSERT_NE(snapshot, nullptr);
     EXPECT_EQ(snapshot->timestamp, 12.5);
@@ -162,9 +162,9 @@ TEST(packet_roundtrip, registry_snapshot_fields) {
 TEST(packet_roundtrip, settings_and_assets_fields) {
     auto settings_packet = packet::edyn_packet{};
     test::fill(settings_packet.var.emplace<packet::server_settings>());
-    auto data = encode(settings_packet);
+    auto data = encode_packet(settings_packet);
     packet::edyn_packet decoded;
-    ASSERT_TRUE(decode(data.data(), data.size(), decoded));
+    ASSERT_TRUE(decode_packet(data.data(), data.size(), decoded));
     auto &settings = std::get<packet::server_settings>(decoded.var);
     EXPECT_EQ(settings.fixed_dt, scalar(1) / 60);
     EXPECT_EQ(settings.gravity, (vector3{scalar(0.5), scalar(-9.81), scalar(0.25)}));
@@ -172,8 +172,8 @@ TEST(packet_roundtrip, settings_and_assets_fields) {
 
     auto assets_packet = packet::edyn_packet{};
     test::fill(assets_packet.var.emplace<packet::entity_entered>());
-    data = encode(assets_packet);
-    ASSERT_TRUE(decode(data.data(), data.size(), decoded));
+    data = encode_packet(assets_packet);
+    ASSERT_TRUE(decode_packet(data.data(), data.size(), decoded));
     auto &entered = std::get<packet::entity_entered>(decoded.var);
     ASSERT_EQ(entered.assets.size(), 2u);
     EXPECT_EQ(entered.assets[0].id, 0x0123456789abcdefULL);
@@ -186,14 +186,14 @@ TEST(packet_roundtrip, settings_and_assets_fields) {
 TEST(packet_roundtrip, small_packets_have_the_expected_bytes) {
     auto packet = packet::edyn_packet{packet::time_request{0xdeadbeef}};
     auto index = std::uint8_t(packet.var.index());
-    EXPECT_EQ(encode(packet), (std::vector<std::uint8_t>{index, 0xef, 0xbe, 0xad, 0xde}));
+    EXPECT_EQ(encode_packet(packet), (std::vector<std::uint8_t>{index, 0xef, 0xbe, 0xad, 0xde}));
 }
 
 TEST(packet_roundtrip, unknown_kind_fails) {
     for (std::size_t kind : {packet_kinds, std::size_t{255}}) {
         std::vector<std::uint8_t> data{std::uint8_t(kind), 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
         packet::edyn_packet decoded{packet::time_request{5}};
-        EXPECT_FALSE(decode(data.data(), data.size(), decoded)) << "kind " << kind;
+        EXPECT_FALSE(decode_packet(data.data(), data.size(), decoded)) << "kind " << kind;
         ASSERT_TRUE(std::holds_alternative<packet::time_request>(decoded.var));
         EXPECT_EQ(std::get<packet::time_request>(decoded.var).id, 5u) << "a failed decode changed the packet";
     }

@@ -19,14 +19,14 @@ namespace {
 // to first order, with room for the second-order terms.
 constexpr double max_angle_error = 0.005;
 
-std::vector<std::uint8_t> encode(vector3 v, quantum_step quantum) {
+std::vector<std::uint8_t> encode_quantized(vector3 v, quantum_step quantum) {
     std::vector<std::uint8_t> data;
     memory_output_archive archive(data);
     serialize_quantized(archive, v, quantum);
     return data;
 }
 
-vector3 decode(const std::vector<std::uint8_t> &data, quantum_step quantum, bool *ok = nullptr) {
+vector3 decode_quantized(const std::vector<std::uint8_t> &data, quantum_step quantum, bool *ok = nullptr) {
     memory_input_archive archive(data.data(), data.size());
     auto v = vector3{-1, -1, -1};
     serialize_quantized(archive, v, quantum);
@@ -35,9 +35,9 @@ vector3 decode(const std::vector<std::uint8_t> &data, quantum_step quantum, bool
     return v;
 }
 
-vector3 round_trip(vector3 v, quantum_step quantum) {
+vector3 round_trip_quantized(vector3 v, quantum_step quantum) {
     bool ok = false;
-    auto result = decode(encode(v, quantum), quantum, &ok);
+    auto result = decode_quantized(encode_quantized(v, quantum), quantum, &ok);
     EXPECT_TRUE(ok);
     return result;
 }
@@ -90,7 +90,7 @@ void check_round_trip_error(quantum_step step, scalar range, const char *what) {
         for (int j = 0; j < 3; ++j) {
             v[j] = (i & 1) ? uniform(rng) : scalar(std::exp2(exponent(rng))) * (rng() & 1 ? 1 : -1);
         }
-        auto result = round_trip(v, step);
+        auto result = round_trip_quantized(v, step);
         for (int j = 0; j < 3; ++j) {
             auto error = std::abs(result[j] - v[j]);
             worst = std::max(worst, error);
@@ -111,29 +111,29 @@ TEST(quantize, velocity_error_is_at_most_half_a_quantum) {
 
 TEST(quantize, multiples_of_the_quantum_are_exact) {
     auto v = vector3{position_quantum * 3, -position_quantum * 1000001, max_quantized_coordinate};
-    EXPECT_EQ(round_trip(v, position_quantum), v);
+    EXPECT_EQ(round_trip_quantized(v, position_quantum), v);
 }
 
 TEST(quantize, values_beyond_the_bound_clamp) {
     auto inf = std::numeric_limits<scalar>::infinity();
     auto beyond = vector3{max_quantized_coordinate * 3, -inf, std::numeric_limits<scalar>::max()};
-    auto result = round_trip(beyond, position_quantum);
+    auto result = round_trip_quantized(beyond, position_quantum);
     EXPECT_EQ(result,
               (vector3{max_quantized_coordinate, -max_quantized_coordinate, max_quantized_coordinate}))
         << "got " << result.x << " " << result.y << " " << result.z;
-    auto velocity = round_trip({inf, -std::numeric_limits<scalar>::max(), 1e30f}, velocity_quantum);
+    auto velocity = round_trip_quantized({inf, -std::numeric_limits<scalar>::max(), 1e30f}, velocity_quantum);
     EXPECT_EQ(velocity,
               (vector3{max_quantized_coordinate, -max_quantized_coordinate, max_quantized_coordinate}));
 }
 
 TEST(quantize, nan_encodes_as_zero) {
     auto nan = std::numeric_limits<scalar>::quiet_NaN();
-    auto result = round_trip({nan, 1, -nan}, position_quantum);
+    auto result = round_trip_quantized({nan, 1, -nan}, position_quantum);
     EXPECT_EQ(result, (vector3{0, 1, 0})) << "got " << result.x << " " << result.y << " " << result.z;
 }
 
 TEST(quantize, byte_sizes) {
-    EXPECT_EQ(encode(vector3_zero, position_quantum).size(), 3u);
+    EXPECT_EQ(encode_quantized(vector3_zero, position_quantum).size(), 3u);
     std::mt19937 rng(99);
     std::uniform_real_distribution<scalar> direction(-1, 1);
     std::size_t largest = 0;
@@ -143,14 +143,14 @@ TEST(quantize, byte_sizes) {
         if (len < scalar(0.01)) continue;
         // Magnitude just under 8 m.
         v = v * (scalar(7.99) / len);
-        largest = std::max(largest, encode(v, position_quantum).size());
-        largest = std::max(largest, encode(v * 2, velocity_quantum).size());
+        largest = std::max(largest, encode_quantized(v, position_quantum).size());
+        largest = std::max(largest, encode_quantized(v * 2, velocity_quantum).size());
     }
     std::printf("a position under 8 m (a velocity under 16 m/s) takes at most %zu bytes\n", largest);
     EXPECT_LE(largest, 6u);
-    EXPECT_EQ(encode({1000, -1000, 1023}, position_quantum).size(), 9u);
+    EXPECT_EQ(encode_quantized({1000, -1000, 1023}, position_quantum).size(), 9u);
     auto far = vector3{max_quantized_coordinate, -max_quantized_coordinate, max_quantized_coordinate};
-    EXPECT_EQ(encode(far, position_quantum).size(), 15u);
+    EXPECT_EQ(encode_quantized(far, position_quantum).size(), 15u);
 }
 
 // serialize_quantized(archive, v, 0) and a quantum known only at run time do not compile: a
@@ -165,7 +165,7 @@ TEST(quantize, the_quantum_is_a_checked_compile_time_constant) {
     EXPECT_EQ(position.value, position_quantum);
     EXPECT_EQ(velocity.value, velocity_quantum);
     EXPECT_EQ(custom.value, scalar(0.125));
-    EXPECT_EQ(round_trip({scalar(0.25), -1, 3}, custom), (vector3{scalar(0.25), -1, 3}));
+    EXPECT_EQ(round_trip_quantized({scalar(0.25), -1, 3}, custom), (vector3{scalar(0.25), -1, 3}));
 }
 
 TEST(quantize, a_value_past_the_bound_fails) {
@@ -190,7 +190,7 @@ TEST(quantize, a_value_past_the_bound_fails) {
 }
 
 TEST(quantize, truncated_vector_fails_untouched) {
-    auto data = encode({100, -200, 300}, position_quantum);
+    auto data = encode_quantized({100, -200, 300}, position_quantum);
     for (std::size_t size = 0; size < data.size(); ++size) {
         memory_input_archive input(data.data(), size);
         auto v = vector3{7, 7, 7};

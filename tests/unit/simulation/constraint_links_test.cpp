@@ -29,7 +29,7 @@ struct constraint_links_fixture : ::testing::Test {
     }
 };
 
-std::size_t count_constraints(registry &reg) {
+std::size_t count_point_and_hinge(registry &reg) {
     return reg.view<point_constraint>().size() + reg.view<hinge_constraint>().size();
 }
 
@@ -86,14 +86,14 @@ TEST_F(constraint_links_fixture, ten_thousand_bodies_and_constraints_are_built_a
         bodies.push_back(body(scalar(i)));
     for (int i = 0; i < n; ++i)
         make_constraint<point_constraint>(reg, bodies[i], bodies[(i + 1) % n]);
-    EXPECT_EQ(count_constraints(reg), std::size_t(n));
+    EXPECT_EQ(count_point_and_hinge(reg), std::size_t(n));
     for (int i = 0; i < n; i += 97)
         ASSERT_EQ(of(bodies[i]).size(), 2u) << "body " << i;
 
     // Every other body first: each takes its two constraints with it.
     for (int i = 0; i < n; i += 2)
         reg.destroy(bodies[i]);
-    EXPECT_EQ(count_constraints(reg), 0u);
+    EXPECT_EQ(count_point_and_hinge(reg), 0u);
     for (int i = 1; i < n; i += 2) {
         ASSERT_TRUE(of(bodies[i]).empty()) << "body " << i;
         reg.destroy(bodies[i]);
