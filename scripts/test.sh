@@ -16,11 +16,12 @@
 # Warnings are errors when CI is set or with --werror. Sanitizer builds, and every build under CI,
 # keep line tables only (-g1): stack traces still name file and line, and compiling takes about a
 # quarter less time. Sanitizer builds also compile at -O1, which builds 40 % faster than -O2, and
-# as a unity build (CMake joins each target's source files eight to a compilation, so that the
-# headers and templates they share are compiled once per eight files, not once per file). The
-# normal build compiles each file alone, so that CI still checks that every file includes what
-# it uses; the sanitizer builds check that the files can be joined (no two files of a target
-# define the same name in their anonymous namespaces).
+# as unity builds (CMake joins each target's source files eight to a compilation, so that the
+# inline functions and templates they share are compiled once per eight files). The test
+# programs are unity builds in every build (tests/CMakeLists.txt); the normal build compiles each
+# file of the library, the scenes, the benchmarks and the examples alone, so that CI still checks
+# that each includes what it uses, and the sanitizer builds check that the library's files can
+# be joined (no two of them define the same name in their anonymous namespaces).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
