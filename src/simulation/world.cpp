@@ -247,13 +247,9 @@ void set_fixed_dt(registry &registry, scalar dt) {
 scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fixed_dt; }
 
 void set_gravity(registry &registry, const vector3 &gravity) {
-    auto text = [&] {
-        return "(" + concat(gravity.x) + ", " + concat(gravity.y) + ", " + concat(gravity.z) + ")";
-    };
-    if (!isfinite(gravity)) invalid("set_gravity", "gravity must be finite, got " + text());
+    if (!isfinite(gravity)) invalid("set_gravity", concat("gravity must be finite, got ", gravity));
     if (!(length(gravity) <= max_gravity))
-        invalid("set_gravity",
-                "gravity must be at most " + concat(max_gravity) + " m/s^2 long, got " + text());
+        invalid("set_gravity", concat("gravity must be at most ", max_gravity, " m/s^2 long, got ", gravity));
     mutable_settings(registry).gravity = gravity;
     // Resting bodies must notice a new gravity (in asynchronous mode the worker wakes its own;
     // here they are shown awake at once).

@@ -298,6 +298,15 @@ TEST(world, settings_are_validated_and_read_back) {
     set_gravity(reg, {0, -1.62, 0});
     EXPECT_EQ(get_gravity(reg).y, scalar(-1.62));
     EXPECT_THROW(set_gravity(reg, {0, std::numeric_limits<scalar>::infinity(), 0}), std::invalid_argument);
+    try {
+        set_gravity(reg, {0, -20000, 0});
+        ADD_FAILURE() << "gravity of 20000 m/s^2 accepted";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("set_gravity: gravity must be at most "), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("long, got (0, -20000, 0)"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(get_gravity(reg).y, scalar(-1.62));
     EXPECT_THROW(set_solver_substeps(reg, 0), std::invalid_argument);
     set_solver_substeps(reg, 4);
     EXPECT_EQ(get_solver_substeps(reg), 4u);
