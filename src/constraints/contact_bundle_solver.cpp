@@ -554,6 +554,7 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
     gather_sides<F>(bodies.data(), bundle, a, b);
     auto zero = wide_set(0);
     auto one = wide_set(1);
+    auto half = wide_set(scalar(0.5));
     auto inv_h = wide_set(pass.inv_h);
     auto bias_rate = wide_set(pass.rigid.bias_rate);
     auto rigid_mass_scale = wide_set(pass.rigid.mass_scale);
@@ -597,37 +598,56 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         wide_store(slot.normal_impulse, new_impulse);
     }
 
+    // Both tangents from the same velocities, limited together to the friction disc, as
+    // solve_friction() in contact_solver.cpp (and with the same operations, for the same bits).
     auto friction = wide_load(bundle.friction);
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
         auto &slot = contacts.bundle_slots[bundle.first_slot + s];
         auto partial = s >= bundle.full_slots;
-        auto active = partial ? slot_mask(bundle, s) : wide_mask{};
-        auto max_impulse = friction * wide_load(slot.normal_impulse);
-        auto min_impulse = -max_impulse;
+        auto before = velocities_of(a, b);
+        auto mean_mass = (wide_load(slot.tangent_mass[0]) + wide_load(slot.tangent_mass[1])) * half;
+        wide_row row[2];
+        wide3 tangent[2];
+        wide old_impulse[2], new_impulse[2], shared[2];
         for (int t = 0; t < 2; ++t) {
-            auto before = velocities_of(a, b);
-            auto row = load_row(slot.tangent_row[t]);
-            auto tangent = wide3_load(slot.tangent[t]);
-            auto old_impulse = wide_load(slot.tangent_impulse[t]);
-            auto vt = row_velocity<F>(row, tangent, a, b);
+            row[t] = load_row(slot.tangent_row[t]);
+            tangent[t] = wide3_load(slot.tangent[t]);
+            old_impulse[t] = wide_load(slot.tangent_impulse[t]);
+            auto vt = row_velocity<F>(row[t], tangent[t], a, b);
             auto mass_scale = one, impulse_scale = zero;
             if (pass.use_bias) {
                 // Friction anchors, as solve_friction() in contact_solver.cpp.
-                auto slid = dot(tangent, wide3_load(slot.adjusted_anchor_gap) + motion[s]);
+                auto slid = dot(tangent[t], wide3_load(slot.adjusted_anchor_gap) + motion[s]);
                 vt = vt + std_clamp(anchor_bias_rate * slid, min_bias, max_bias);
                 mass_scale = anchor_mass_scale;
                 impulse_scale = anchor_impulse_scale;
             }
-            auto new_impulse = std_clamp(old_impulse - wide_load(slot.tangent_mass[t]) * mass_scale * vt -
-                                             impulse_scale * old_impulse,
-                                         min_impulse, max_impulse);
-            apply_row<F>(row, tangent, new_impulse - old_impulse, a, b);
-            if (partial) {
-                keep_unmasked<F>(active, before, a, b);
-                new_impulse = select(active, new_impulse, old_impulse);
-            }
-            wide_store(slot.tangent_impulse[t], new_impulse);
+            auto relaxed = old_impulse[t] - impulse_scale * old_impulse[t];
+            new_impulse[t] = relaxed - wide_load(slot.tangent_mass[t]) * mass_scale * vt;
+            shared[t] = relaxed - mean_mass * mass_scale * vt;
         }
+        // limit_to_disc() in contact_solver.cpp, lane by lane.
+        auto limit = friction * wide_load(slot.normal_impulse);
+        auto length2 = new_impulse[0] * new_impulse[0] + new_impulse[1] * new_impulse[1];
+        auto outside = limit * limit < length2;
+        if (any(outside)) {
+            auto shared2 = shared[0] * shared[0] + shared[1] * shared[1];
+            auto use_shared = zero < shared2;
+            auto scale = limit / wide_sqrt(select(use_shared, shared2, length2));
+            for (int t = 0; t < 2; ++t)
+                new_impulse[t] =
+                    select(outside, select(use_shared, shared[t], new_impulse[t]) * scale, new_impulse[t]);
+        }
+        for (int t = 0; t < 2; ++t)
+            apply_row<F>(row[t], tangent[t], new_impulse[t] - old_impulse[t], a, b);
+        if (partial) {
+            auto active = slot_mask(bundle, s);
+            keep_unmasked<F>(active, before, a, b);
+            for (int t = 0; t < 2; ++t)
+                new_impulse[t] = select(active, new_impulse[t], old_impulse[t]);
+        }
+        for (int t = 0; t < 2; ++t)
+            wide_store(slot.tangent_impulse[t], new_impulse[t]);
     }
 
     scatter_sides<F>(bodies.data(), bundle, a, b);

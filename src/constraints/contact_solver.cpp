@@ -60,6 +60,26 @@ inline void apply_row(const contact_row &row, const vector3 &d, scalar impulse, 
     }
 }
 
+// Coulomb's law in every direction along the surface. `impulse` is the pair of new impulses
+// along two orthogonal rows, each worked out with its own row's mass, and `shared` the same pair
+// worked out with one mass for both (their mean). While `impulse` lies in the disc of radius
+// `limit` the surfaces stick and it stands. Outside, they slide: the pair goes to the disc's
+// edge, in the direction of `shared`. Repeated pass after pass, that step leaves the friction
+// opposite the slip, where the rows' own masses would turn it towards the lighter row; and
+// limiting each row alone would let a slide across both rows take up to sqrt(2) times the force.
+// contact_bundle_solver.cpp does the same operations lane by lane, for the same bits.
+inline void limit_to_disc(scalar (&impulse)[2], const scalar (&shared)[2], scalar limit) {
+    auto length2 = impulse[0] * impulse[0] + impulse[1] * impulse[1];
+    if (!(limit * limit < length2)) return;
+    auto shared2 = shared[0] * shared[0] + shared[1] * shared[1];
+    auto use_shared = scalar(0) < shared2;
+    auto x = use_shared ? shared[0] : impulse[0];
+    auto y = use_shared ? shared[1] : impulse[1];
+    auto scale = limit / std::sqrt(use_shared ? shared2 : length2);
+    impulse[0] = x * scale;
+    impulse[1] = y * scale;
+}
+
 // Calls fn with the constraint's fixed side as a std::integral_constant.
 template<typename Fn>
 decltype(auto) with_fixed_side(const contact_solver_constraint &c, Fn &&fn) {
@@ -259,7 +279,9 @@ scalar current_separation(const contact_solver_point &p, const solver_body &a, c
     return current_separation(p, point_motion<F>(p, a, b));
 }
 
-// Coulomb friction on both tangents of every point, limited by that point's normal impulse.
+// Coulomb friction on both tangents of every point: the pair of tangent impulses is limited to
+// a disc of radius friction times that point's normal impulse. Both rows are worked out from
+// the same velocities before either is applied, so that the pair can be limited as one.
 // In the biased pass (`motion` given: each point's since the step began) the rows are also a
 // soft spring (settings' friction_anchor_hertz) that pulls the surfaces back to where they stuck.
 template<fixed_side F>
@@ -267,7 +289,8 @@ void solve_friction(const contact_solver_constraint &c, std::span<contact_solver
                     solver_body &a, solver_body &b, const detail::bundle_pass &pass, const vector3 *motion) {
     for (std::size_t i = 0; i < points.size(); ++i) {
         auto &p = points[i];
-        auto max_impulse = c.friction * p.normal_impulse;
+        auto mean_mass = (p.tangent_mass[0] + p.tangent_mass[1]) * scalar(0.5);
+        scalar new_impulse[2], shared[2];
         for (int t = 0; t < 2; ++t) {
             auto vt = row_velocity<F>(p.tangent_row[t], p.tangent[t], a, b);
             scalar mass_scale = 1, impulse_scale = 0;
@@ -278,11 +301,14 @@ void solve_friction(const contact_solver_constraint &c, std::span<contact_solver
                 mass_scale = pass.anchor.mass_scale;
                 impulse_scale = pass.anchor.impulse_scale;
             }
-            auto new_impulse = std::clamp(p.tangent_impulse[t] - p.tangent_mass[t] * mass_scale * vt -
-                                              impulse_scale * p.tangent_impulse[t],
-                                          -max_impulse, max_impulse);
-            apply_row<F>(p.tangent_row[t], p.tangent[t], new_impulse - p.tangent_impulse[t], a, b);
-            p.tangent_impulse[t] = new_impulse;
+            auto relaxed = p.tangent_impulse[t] - impulse_scale * p.tangent_impulse[t];
+            new_impulse[t] = relaxed - p.tangent_mass[t] * mass_scale * vt;
+            shared[t] = relaxed - mean_mass * mass_scale * vt;
+        }
+        limit_to_disc(new_impulse, shared, c.friction * p.normal_impulse);
+        for (int t = 0; t < 2; ++t) {
+            apply_row<F>(p.tangent_row[t], p.tangent[t], new_impulse[t] - p.tangent_impulse[t], a, b);
+            p.tangent_impulse[t] = new_impulse[t];
         }
     }
 }
@@ -298,12 +324,24 @@ void solve_spin_and_roll(contact_solver_constraint &c, solver_body &a, solver_bo
         c.spin_impulse = new_impulse;
     }
 
+    // Two rolling axes (a ball's) share one limit, as the friction tangents do; a cylinder
+    // rolls about one.
+    if (c.num_roll_axes == 0) return;
     auto max_roll = c.roll_friction * total_normal;
+    auto mean_mass = (c.roll_mass[0] + c.roll_mass[1]) * scalar(0.5);
+    scalar new_impulse[2]{}, shared[2]{};
     for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
         auto w = dot(c.roll_axis[i], a.angvel - b.angvel);
-        auto new_impulse = std::clamp(c.roll_impulse[i] - c.roll_mass[i] * w, -max_roll, max_roll);
-        apply_angular_impulse(a, b, c.roll_axis[i] * (new_impulse - c.roll_impulse[i]));
-        c.roll_impulse[i] = new_impulse;
+        new_impulse[i] = c.roll_impulse[i] - c.roll_mass[i] * w;
+        shared[i] = c.roll_impulse[i] - mean_mass * w;
+    }
+    if (c.num_roll_axes == 2)
+        limit_to_disc(new_impulse, shared, max_roll);
+    else
+        new_impulse[0] = std::clamp(new_impulse[0], -max_roll, max_roll);
+    for (std::uint32_t i = 0; i < c.num_roll_axes; ++i) {
+        apply_angular_impulse(a, b, c.roll_axis[i] * (new_impulse[i] - c.roll_impulse[i]));
+        c.roll_impulse[i] = new_impulse[i];
     }
 }
 
@@ -478,14 +516,18 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
         }
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = points[i];
-            auto max_impulse = c.friction * normal[i];
+            auto mean_mass = (p.tangent_mass[0] + p.tangent_mass[1]) * scalar(0.5);
+            scalar new_impulse[2], shared[2];
             for (int t = 0; t < 2; ++t) {
                 auto vt = row_velocity<fixed_side::none>(p.tangent_row[t], p.tangent[t], a, b);
-                auto new_impulse =
-                    std::clamp(tangent[i][t] - p.tangent_mass[t] * vt, -max_impulse, max_impulse);
-                apply_row<fixed_side::none>(p.tangent_row[t], p.tangent[t], new_impulse - tangent[i][t], a,
+                new_impulse[t] = tangent[i][t] - p.tangent_mass[t] * vt;
+                shared[t] = tangent[i][t] - mean_mass * vt;
+            }
+            limit_to_disc(new_impulse, shared, c.friction * normal[i]);
+            for (int t = 0; t < 2; ++t) {
+                apply_row<fixed_side::none>(p.tangent_row[t], p.tangent[t], new_impulse[t] - tangent[i][t], a,
                                             b);
-                tangent[i][t] = new_impulse;
+                tangent[i][t] = new_impulse[t];
             }
         }
     }
@@ -500,6 +542,58 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
 }
 
 } // namespace
+
+void record_approach_speeds(contact_solver_set &contacts, std::span<const solver_body> bodies) {
+    for (auto k : contacts.bouncy) {
+        auto &c = contacts.constraints[k];
+        auto &a = bodies[c.body[0]];
+        auto &b = bodies[c.body[1]];
+        for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
+            auto &p = contacts.points[i];
+            auto &approach = contacts.totals[i].relative_velocity;
+            approach = std::min(approach, dot(p.normal, relative_velocity(a, b, p.rA, p.rB)));
+        }
+    }
+}
+
+void bounce_without_restitution_solver(contact_solver_set &contacts, std::span<solver_body> bodies,
+                                       const contact_solver_settings &settings) {
+    // Gauss-Seidel passes over one manifold's hit points, for a box landing on a face to leave
+    // it level.
+    constexpr unsigned passes = 4;
+    for (auto k : contacts.bouncy) {
+        auto &c = contacts.constraints[k];
+        auto points = points_of(contacts, c);
+        auto totals = std::span(contacts.totals).subspan(c.first_point, c.num_points);
+        auto &a = bodies[c.body[0]];
+        auto &b = bodies[c.body[1]];
+        scalar target[contact_solver_constraint::max_points]{};
+        scalar normal[contact_solver_constraint::max_points]{};
+        bool hit[contact_solver_constraint::max_points]{};
+        bool any = false;
+        for (std::uint32_t i = 0; i < c.num_points; ++i) {
+            // Approaching (at the fastest the step saw), and met by the contact in the step.
+            hit[i] =
+                totals[i].relative_velocity < -settings.restitution_threshold && totals[i].normal_impulse > 0;
+            target[i] = -c.restitution * totals[i].relative_velocity;
+            any |= hit[i];
+        }
+        if (!any) continue;
+        for (unsigned pass = 0; pass < passes; ++pass) {
+            for (std::uint32_t i = 0; i < c.num_points; ++i) {
+                if (!hit[i]) continue;
+                auto &p = points[i];
+                auto vn = row_velocity<fixed_side::none>(p.normal_row, p.normal, a, b);
+                auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
+                apply_row<fixed_side::none>(p.normal_row, p.normal, new_impulse - normal[i], a, b);
+                normal[i] = new_impulse;
+            }
+        }
+        // Part of the contact's own impulse: the restitution solver's totals stay zero.
+        for (std::uint32_t i = 0; i < c.num_points; ++i)
+            totals[i].normal_impulse += normal[i];
+    }
+}
 
 unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> bodies,
                            const contact_solver_settings &settings, scalar h, unsigned iterations,

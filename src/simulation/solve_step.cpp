@@ -317,13 +317,19 @@ void solve_constraints(world_state &world, const settings &settings) {
     queue.clear(); // of what a step that threw may have left
     refresh_joint_geometry(world.joints, bodies, queue);
     auto bounces = !contacts.bouncy.empty();
+    auto restitution_solver =
+        settings.num_restitution_iterations > 0 && settings.num_individual_restitution_iterations > 0;
 
     for (unsigned i = 0; i < substeps; ++i) {
         integrate_velocities(bodies, h, queue);
         if (bounces) {
             queue.run(scheduler);
-            solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
-                              settings.num_individual_restitution_iterations);
+            if (restitution_solver) {
+                solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
+                                  settings.num_individual_restitution_iterations);
+            } else {
+                record_approach_speeds(contacts, bodies);
+            }
         }
         // Joints before contacts in each pass: contacts, solved last, keep bodies apart.
         warm_start_constraints(world.joints, bodies, queue);
@@ -343,8 +349,12 @@ void solve_constraints(world_state &world, const settings &settings) {
     }
     queue.run(scheduler);
     unpack_contact_impulses(contacts, scheduler);
-    solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
-                      settings.num_individual_restitution_iterations, bounce_moment::step_end);
+    if (restitution_solver) {
+        solve_restitution(contacts, bodies, settings.contact, h, settings.num_restitution_iterations,
+                          settings.num_individual_restitution_iterations, bounce_moment::step_end);
+    } else if (bounces) {
+        bounce_without_restitution_solver(contacts, bodies, settings.contact);
+    }
 }
 
 namespace {

@@ -8,7 +8,9 @@
 //  - spinning about the normal under a torque s m g decelerates at alpha = s m g / I, and stops
 //    after t = w0 I / (s m g).
 #include "behaviour_support.hpp"
+#include <cmath>
 #include <edyn_scenes/scenes.hpp>
+#include <vector>
 
 using namespace edyn;
 using edyn::test::world_fixture;
@@ -59,6 +61,73 @@ TEST_F(friction, rolling_friction_decelerates_a_rolling_sphere_at_c_g_over_1_4_r
     EXPECT_NEAR(-angular(ball).z * r, v_end, scalar(0.01) * v_end)
         << "w r " << -angular(ball).z * r << " vs v " << v_end;
     EXPECT_NEAR(pos(ball).y, r, scalar(0.01));
+}
+
+// Coulomb friction does not depend on the direction of sliding: the friction impulse is limited
+// as a vector, not along each of the solver's two tangents apart (which would let a slide at
+// 45 degrees to them take sqrt(2) times the force, stop in 1/sqrt(2) of the distance and bend
+// its path towards a tangent).
+TEST_F(friction, rolling_friction_decelerates_a_sphere_the_same_in_every_direction) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar r = scalar(0.5), v0 = 5, c = scalar(0.05);
+    const scalar degrees[] = {0, 30, 45, 60, 135};
+    std::vector<entity> balls;
+    for (std::size_t i = 0; i < std::size(degrees); ++i) {
+        auto angle = to_radians(degrees[i]);
+        auto dir = vector3{std::cos(angle), 0, std::sin(angle)};
+        auto def = edyn::test::sphere_def(r, {scalar(20 * i), r, 0});
+        def.material->friction = 1;
+        def.material->roll_friction = c;
+        def.linvel = dir * v0;
+        // Rolling without slipping: w = n x v / r, with n the ground's normal.
+        def.angvel = cross(vector3_y, dir) * (v0 / r);
+        def.sleeping_disabled = true;
+        balls.push_back(make_rigidbody(reg, def));
+    }
+    edyn::test::step(reg);
+    std::vector<scalar> start;
+    for (auto ball : balls)
+        start.push_back(length(vel(ball)));
+    const scalar seconds = 2;
+    run_for(seconds);
+    auto expected = c * test::earth_g / (scalar(1.4) * r);
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+        auto measured = (start[i] - length(vel(balls[i]))) / seconds;
+        EXPECT_NEAR(measured, expected, scalar(0.03) * expected)
+            << "at " << degrees[i] << " degrees: deceleration " << measured << " m/s^2, expected "
+            << expected;
+    }
+}
+
+TEST_F(friction, sliding_friction_stops_a_box_after_v_squared_over_2_mu_g_in_every_direction) {
+    const scalar mu = scalar(0.4), v0 = 5;
+    scenes::make_ground(reg, mu, 0);
+    const scalar degrees[] = {0, 30, 45, 60, 135};
+    std::vector<entity> boxes;
+    std::vector<vector3> dirs;
+    for (std::size_t i = 0; i < std::size(degrees); ++i) {
+        auto angle = to_radians(degrees[i]);
+        dirs.push_back({std::cos(angle), 0, std::sin(angle)});
+        auto def =
+            edyn::test::box_def({scalar(0.5), scalar(0.5), scalar(0.5)}, {scalar(20 * i), scalar(0.5), 0});
+        // Turned to face its way, so that every box slides on the same edges.
+        def.orientation = quaternion_axis_angle(vector3_y, -angle);
+        def.material->friction = mu;
+        def.linvel = dirs.back() * v0;
+        boxes.push_back(make_rigidbody(reg, def));
+    }
+    run_for(3);
+    // Both materials 0.4: the default mixing gives 0.4.
+    auto expected = v0 * v0 / (2 * mu * test::earth_g);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        auto moved = pos(boxes[i]) - vector3{scalar(20 * i), scalar(0.5), 0};
+        auto along = dot(moved, dirs[i]);
+        EXPECT_NEAR(along, expected, scalar(0.03) * expected)
+            << "at " << degrees[i] << " degrees: slid " << along << " m, expected " << expected;
+        EXPECT_NEAR(length(moved - dirs[i] * along), 0, scalar(0.01))
+            << "at " << degrees[i] << " degrees: strayed from its line";
+        EXPECT_NEAR(length(vel(boxes[i])), 0, scalar(1e-3));
+    }
 }
 
 TEST_F(friction, rolling_friction_stops_a_slow_sphere_and_keeps_it_stopped) {

@@ -31,28 +31,88 @@ TEST_F(free_fall, per_body_gravity_overrides_the_world) {
     EXPECT_NEAR(vel(sideways).y, 0, 1e-6);
 }
 
+namespace {
+
+// A ball of restitution `e` dropped from `height` (its bottom) on the ground, with the
+// restitution solver's iterations set to `restitution_iterations`: the peak after its first
+// bounce is e^2 height.
+void expect_bounce_to_e_squared_h(scalar e, scalar height, unsigned restitution_iterations) {
+    registry r;
+    attach(r, edyn::test::test_config());
+    set_solver_restitution_iterations(r, restitution_iterations);
+    scenes::make_ground(r, scalar(0.5), 0);
+    auto def = edyn::test::sphere_def(scalar(0.25), {0, height + scalar(0.25), 0});
+    def.material->restitution = e;
+    auto ball = make_rigidbody(r, def);
+    auto peak = edyn::test::rebound_peak(r, ball, scalar(0.25));
+    EXPECT_GE(peak, 0) << "the ball did not bounce";
+    auto expected = height * e * e;
+    EXPECT_NEAR(peak, expected, edyn::test::rebound_tolerance(r, height, expected))
+        << "restitution " << e << ", dropped from " << height << " m, " << restitution_iterations
+        << " restitution iterations";
+    detach(r);
+}
+
+} // namespace
+
 // From every height: whether the ball comes within reach of the ground at the start of a step
 // or in its middle, and whether the speculative contact braked it short of the surface in the
 // step before, it bounces from the speed it fell at (once, from 1 m, it rebounded 2 cm).
 TEST_F(contact_motion, bounce_height_ratio_is_restitution_squared) {
     for (scalar e : {scalar(0.5), scalar(0.8)}) {
         for (scalar height :
-             {scalar(0.3), scalar(0.4), scalar(0.5), scalar(0.7), scalar(1), scalar(1.3), scalar(2)}) {
-            registry r;
-            attach(r, edyn::test::test_config());
-            scenes::make_ground(r, scalar(0.5), 0);
-            auto def = edyn::test::sphere_def(scalar(0.25), {0, height + scalar(0.25), 0});
-            def.material->restitution = e;
-            auto ball = make_rigidbody(r, def);
-            // Dropped from `height` (bottom of the ball), then the peak after the first bounce.
-            auto peak = edyn::test::rebound_peak(r, ball, scalar(0.25));
-            ASSERT_GE(peak, 0) << "the ball did not bounce";
-            auto expected = height * e * e;
-            EXPECT_NEAR(peak, expected, edyn::test::rebound_tolerance(r, height, expected))
-                << "restitution " << e << ", dropped from " << height << " m";
-            detach(r);
+             {scalar(0.3), scalar(0.4), scalar(0.5), scalar(0.7), scalar(1), scalar(1.3), scalar(2)})
+            expect_bounce_to_e_squared_h(e, height, 8);
+    }
+}
+
+// With the restitution solver off (0 iterations), restitution still acts as the manual's
+// "Restitution" says, in a limited fashion: a point that approaches when the contact meets it
+// bounces, all of it in the contact's own normal impulse; one resting (no approach) returns
+// nothing, so a ball left on the ground stays there.
+TEST_F(contact_motion, without_the_restitution_solver_an_approaching_ball_still_bounces) {
+    for (scalar e : {scalar(0.5), scalar(0.8), scalar(1)}) {
+        for (scalar height : {scalar(0.4), scalar(1), scalar(2)})
+            expect_bounce_to_e_squared_h(e, height, 0);
+    }
+
+    // The impulse of a bounce: m v (1 + e), all of it the contact's, none the restitution
+    // solver's.
+    set_solver_restitution_iterations(reg, 0);
+    scenes::make_ground(reg, scalar(0.5), 0);
+    auto def = edyn::test::sphere_def(scalar(0.25), {0, scalar(1.25), 0});
+    def.material->restitution = scalar(0.8);
+    auto ball = make_rigidbody(reg, def);
+    scalar impact = 0, largest = 0, from_restitution_solver = 0;
+    for (int i = 0; i < 120 && largest == 0; ++i) {
+        auto before = vel(ball).y;
+        edyn::test::step(reg);
+        for (auto [e, manifold] : reg.view<contact_manifold>().each()) {
+            for (std::uint32_t k = 0; k < manifold.num_points; ++k) {
+                auto &cp = manifold.point[manifold.ids[k]];
+                if (cp.normal_impulse > largest) largest = cp.normal_impulse, impact = before;
+                from_restitution_solver += cp.normal_restitution_impulse;
+            }
         }
     }
+    ASSERT_GT(largest, 0) << "no contact impulse";
+    // Speed at impact: a step's gravity below the speed the step began with, at most.
+    auto expected = -impact * scalar(1.8);
+    EXPECT_NEAR(largest, expected, scalar(0.05) * expected);
+    EXPECT_EQ(from_restitution_solver, 0);
+    EXPECT_GT(vel(ball).y, 0);
+
+    // Resting on the ground, the bouncy ball stays put.
+    edyn::test::disable_sleeping(reg);
+    run_for(3);
+    auto rest = pos(ball).y;
+    scalar highest = rest;
+    for (int i = 0; i < 120; ++i) {
+        edyn::test::step(reg);
+        highest = std::max(highest, pos(ball).y);
+    }
+    EXPECT_NEAR(rest, scalar(0.25), scalar(2e-3));
+    EXPECT_LT(highest - rest, scalar(1e-3)) << "the resting ball hopped";
 }
 
 // The step that brakes a falling ball short of the ground answers its bounce itself: nothing

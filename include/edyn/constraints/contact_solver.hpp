@@ -331,6 +331,29 @@ unsigned solve_restitution(contact_solver_set &contacts, std::span<solver_body> 
                            const contact_solver_settings &settings, scalar h, unsigned iterations,
                            unsigned individual_iterations, bounce_moment moment = bounce_moment::sub_step);
 
+/// Lowers each point's approach speed (contact_point_totals::relative_velocity) to its relative
+/// normal velocity now, if faster, on the contacts with restitution: the fastest approach of the
+/// step, which bounce_without_restitution_solver answers. Call at each sub-step, after the
+/// velocities are integrated. Runs on the calling thread.
+/// @param contacts The step's contacts, prepared.
+/// @param bodies The step's solver bodies.
+void record_approach_speeds(contact_solver_set &contacts, std::span<const solver_body> bodies);
+
+/// Restitution without the restitution solver (its iterations set to 0), the limited kind
+/// the manual describes: at the end of the step, each point of a contact with restitution that
+/// approached faster than the threshold in the step (record_approach_speeds), and that the
+/// contact solver met in the step, gets the normal impulse making it separate at restitution
+/// times that speed.
+/// Manifolds are taken one at a time, without friction, and each once: a point already resting
+/// (approaching slower than the threshold) returns nothing, so the shock does not travel along a
+/// chain of touching bodies. The impulses are added to the points' normal impulse totals. Runs
+/// on the calling thread.
+/// @param contacts The step's contacts, solved and unpacked (unpack_contact_impulses).
+/// @param bodies The step's solver bodies.
+/// @param settings The contact settings (restitution threshold).
+void bounce_without_restitution_solver(contact_solver_set &contacts, std::span<solver_body> bodies,
+                                       const contact_solver_settings &settings);
+
 } // namespace edyn
 
 #endif // EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP

@@ -198,8 +198,9 @@ void set_solver_position_iterations(registry &registry, unsigned iterations);
 unsigned get_solver_position_iterations(const registry &registry);
 /// Sets the number of iterations of the restitution solver, which propagates the shock of
 /// bouncing contacts through chains of bodies.
-/// 0 turns the restitution solver off: restitution then only acts on contacts that are
-/// approaching when they are solved, and is cheaper.
+/// 0 turns the restitution solver off: restitution then only acts on contact points that
+/// approach in the step, each manifold alone and once, at the end of the step (shocks do not
+/// travel along chains of touching bodies), and is cheaper.
 /// @param registry An attached registry.
 /// @param iterations Iterations per sub-step, in [0, `max_solver_iterations`]; default 8.
 /// @throws std::invalid_argument Naming the function and the value, when `iterations` is
