@@ -23,7 +23,7 @@ void collide(const box_shape &a, const plane_shape &b, const collision_context &
         auto world = to_world_space(vertex, ctx.posA, ctx.ornA);
         collision_result::collision_point p;
         p.pivotA = vertex;
-        p.pivotB = world - b.normal * distance;
+        p.pivotB = to_object_space(world - b.normal * distance, ctx.posB, ctx.ornB);
         p.normal = b.normal;
         p.distance = distance;
         p.featureA = collision_feature{box_feature::vertex, i};

@@ -17,7 +17,7 @@ void collide(const capsule_shape &a, const plane_shape &b, const collision_conte
         if (distance > ctx.threshold) continue;
         collision_result::collision_point p;
         p.pivotA = to_object_space(ends[i] - b.normal * a.radius, ctx.posA, ctx.ornA);
-        p.pivotB = ends[i] - b.normal * center_dist;
+        p.pivotB = to_object_space(ends[i] - b.normal * center_dist, ctx.posB, ctx.ornB);
         p.normal = b.normal;
         p.distance = distance;
         p.featureA = detail::capsule_feature_at(scalar(i), -b.normal, seg.axis);

@@ -3,12 +3,12 @@
 #include "edyn/collision/detail/cylinder_geom.hpp"
 #include "edyn/math/geom.hpp"
 
-// Cylinder–plane. The plane lives in world space (it ignores its body's transform), so its pivot
-// is a world-space point on the plane. The points are chosen for a resting cylinder to be stable:
-// lying on its side, the two ends of the lowest side line; otherwise four points of the lower
-// cap's rim, the deepest one and those a quarter, half and three quarters of a turn away, so
-// that a cylinder standing on a cap gets four points and a tilted one its deepest rim point plus
-// whichever others come within the threshold.
+// Cylinder–plane. The plane lives in world space (it ignores its body's transform); its pivot is
+// the point on the plane in its body's object space, as every pivot. The points are chosen for a resting
+// cylinder to be stable: lying on its side, the two ends of the lowest side line; otherwise four points of
+// the lower cap's rim, the deepest one and those a quarter, half and three quarters of a turn away, so that a
+// cylinder standing on a cap gets four points and a tilted one its deepest rim point plus whichever others
+// come within the threshold.
 namespace edyn {
 
 void collide(const cylinder_shape &a, const plane_shape &b, const collision_context &ctx,
@@ -35,7 +35,7 @@ void collide(const cylinder_shape &a, const plane_shape &b, const collision_cont
         if (distance > ctx.threshold) continue;
         collision_result::collision_point p;
         p.pivotA = to_object_space(points[i], ctx.posA, ctx.ornA);
-        p.pivotB = points[i] - b.normal * distance;
+        p.pivotB = to_object_space(points[i] - b.normal * distance, ctx.posB, ctx.ornB);
         p.normal = b.normal;
         p.distance = distance;
         p.featureA = feature.id;

@@ -24,8 +24,9 @@ void collide(const polyhedron_shape &a, const plane_shape &b, const collision_co
         if (distance > ctx.threshold) return;
         collision_result::collision_point p;
         p.pivotA = vertex;
-        // The plane's pivot is a world-space point on the plane.
-        p.pivotB = to_world_space(vertex, ctx.posA, ctx.ornA) - b.normal * distance;
+        // The point on the plane, in its body's object space as every pivot.
+        p.pivotB = to_object_space(to_world_space(vertex, ctx.posA, ctx.ornA) - b.normal * distance, ctx.posB,
+                                   ctx.ornB);
         p.normal = b.normal;
         p.distance = distance;
         result.add_point(p);

@@ -4,8 +4,8 @@
 
 namespace edyn {
 
-// Planes live in world space (they ignore their body's transform), so the plane's pivot is a
-// world-space point on the plane.
+// Planes live in world space (they ignore their body's transform); the plane's pivot is the
+// point on the plane given, as every pivot, in its body's object space.
 void collide(const sphere_shape &a, const plane_shape &b, const collision_context &ctx,
              collision_result &result) {
     EDYN_ASSERT(std::abs(length_sqr(b.normal) - 1) < scalar(1e-3), "plane normal must be unit length");
@@ -14,7 +14,7 @@ void collide(const sphere_shape &a, const plane_shape &b, const collision_contex
     if (distance > ctx.threshold) return;
     collision_result::collision_point p;
     p.pivotA = rotate(conjugate(ctx.ornA), -b.normal * a.radius);
-    p.pivotB = ctx.posA - b.normal * center_dist;
+    p.pivotB = to_object_space(ctx.posA - b.normal * center_dist, ctx.posB, ctx.ornB);
     p.normal = b.normal;
     p.distance = distance;
     result.add_point(p);

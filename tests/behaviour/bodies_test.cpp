@@ -268,3 +268,34 @@ TEST_F(change_shape, other_resting_pairs_keep_reusing_their_contact_points) {
     EXPECT_NEAR(pos(changed).y, scalar(0.75), scalar(0.01)) << "ball centre at " << pos(changed).y;
     EXPECT_NEAR(pos(other).y, scalar(0.5), scalar(0.01)) << "ball centre at " << pos(other).y;
 }
+
+// A plane ignores its body's transform (the manual's "Rigid bodies"): the surface is where its
+// normal and constant put it, wherever the body stands and however it is turned, and what rests
+// on it rests still.
+using plane_body = world_fixture;
+
+TEST_F(plane_body, bodies_rest_and_sleep_on_a_plane_whose_body_is_moved_and_turned) {
+    rigidbody_def ground;
+    ground.kind = rigidbody_kind::rb_static;
+    ground.shape = plane_shape{vector3_y, 0};
+    ground.position = {3, 1, -2};
+    ground.orientation = quaternion_axis_angle(normalize(vector3{1, 2, 3}), scalar(0.7));
+    make_rigidbody(reg, ground);
+    auto box = make_rigidbody(reg, edyn::test::box_def({0.5, 0.5, 0.5}, {0, scalar(0.6), 0}));
+    auto ball = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.25), {4, scalar(0.3), 0}));
+    auto capsule_def = rigidbody_def{};
+    capsule_def.mass = 1;
+    capsule_def.shape = capsule_shape{scalar(0.2), scalar(0.5), coordinate_axis::x};
+    capsule_def.position = {-4, scalar(0.25), 0};
+    auto capsule = make_rigidbody(reg, capsule_def);
+    run_for(3);
+    EXPECT_NEAR(pos(box).y, scalar(0.5), scalar(2e-3));
+    EXPECT_NEAR(pos(ball).y, scalar(0.25), scalar(2e-3));
+    EXPECT_NEAR(pos(capsule).y, scalar(0.2), scalar(2e-3));
+    for (auto e : {box, ball, capsule}) {
+        EXPECT_TRUE(reg.all_of<sleeping_tag>(e)) << "body " << to_integral(e) << " still awake after 3 s at "
+                                                 << pos(e).x << ", " << pos(e).y << ", " << pos(e).z;
+    }
+    // Resting, not drifting: the box stayed where it landed.
+    EXPECT_LT(std::hypot(pos(box).x, pos(box).z), scalar(0.01));
+}

@@ -21,9 +21,6 @@ using namespace edyn;
 
 inline vector3 vec(double x, double y, double z) { return {scalar(x), scalar(y), scalar(z)}; }
 
-template<typename S>
-constexpr bool is_plane = std::is_same_v<S, plane_shape>;
-
 inline std::string str(const vector3 &v) {
     return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
 }
@@ -64,27 +61,24 @@ inline std::size_t deepest_index(const collision_result &r) {
     return k;
 }
 
-// World-space pivots; planes keep theirs in world space.
+// World-space pivots (every shape's pivot is in its body's object space, a plane's too).
 struct world_pair {
     vector3 a, b;
 };
 
-inline world_pair world_points(const collision_result::collision_point &p, const collision_context &ctx,
-                               bool a_is_plane = false, bool b_is_plane = false) {
-    return {a_is_plane ? p.pivotA : to_world_space(p.pivotA, ctx.posA, ctx.ornA),
-            b_is_plane ? p.pivotB : to_world_space(p.pivotB, ctx.posB, ctx.ornB)};
+inline world_pair world_points(const collision_result::collision_point &p, const collision_context &ctx) {
+    return {to_world_space(p.pivotA, ctx.posA, ctx.ornA), to_world_space(p.pivotB, ctx.posB, ctx.ornB)};
 }
 
 // Checks every point: unit normal, distance within the threshold, and the two world points
 // apart by exactly `distance` along the normal.
-inline void expect_consistent(const collision_result &r, const collision_context &ctx, scalar tol,
-                              bool a_is_plane = false, bool b_is_plane = false) {
+inline void expect_consistent(const collision_result &r, const collision_context &ctx, scalar tol) {
     ASSERT_LE(r.num_points, collision_result::max_contacts);
     for (std::size_t i = 0; i < r.num_points; ++i) {
         auto &p = r.point[i];
         EXPECT_NEAR(length(p.normal), 1, 1e-4) << "point " << i;
         EXPECT_LE(p.distance, ctx.threshold + tol) << "point " << i;
-        auto w = world_points(p, ctx, a_is_plane, b_is_plane);
+        auto w = world_points(p, ctx);
         expect_vec_near(w.a - w.b, p.normal * p.distance, tol);
     }
 }

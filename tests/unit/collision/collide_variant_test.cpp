@@ -159,8 +159,7 @@ void check_pair() {
             EXPECT_EQ(r.num_points, 1u);
         }
         EXPECT_NEAR(min_distance(r), -variant_depth, variant_tol);
-        expect_consistent(r, s.ctx, variant_tol, std::is_same_v<A, plane_shape>,
-                          std::is_same_v<B, plane_shape>);
+        expect_consistent(r, s.ctx, variant_tol);
         // Each point's normal points from B (below) up towards A.
         for (std::size_t i = 0; i < r.num_points; ++i)
             expect_vec_near(r.point[i].normal, vector3_y, variant_tol);
