@@ -187,10 +187,18 @@ void refresh_aabb(registry &registry, entity e) {
     registry.emplace_or_replace<AABB>(e, aabb);
 }
 
+void check_kind(const char *function, rigidbody_kind kind) {
+    if (kind != rigidbody_kind::rb_dynamic && kind != rigidbody_kind::rb_static &&
+        kind != rigidbody_kind::rb_kinematic)
+        throw std::invalid_argument(std::string(function) + ": kind " + std::to_string(unsigned(kind)) +
+                                    " is not a rigidbody_kind (rb_dynamic, rb_static or rb_kinematic)");
+}
+
 } // namespace
 
 void validate_rigidbody_def(const rigidbody_def &def) {
     const char *fn = "make_rigidbody";
+    check_kind(fn, def.kind);
     check_finite(fn, "position", def.position);
     check_orientation(fn, def.orientation);
     check_finite(fn, "linvel", def.linvel);
@@ -277,6 +285,7 @@ entity make_rigidbody(registry &registry, const rigidbody_def &def) {
 
 void rigidbody_set_kind(registry &registry, entity e, rigidbody_kind kind) {
     check_body("rigidbody_set_kind", registry, e);
+    check_kind("rigidbody_set_kind", kind);
     auto old_kind = get_kind(registry, e);
     if (old_kind == kind) return;
 
@@ -420,6 +429,7 @@ void set_center_of_mass(registry &registry, entity e, const vector3 &com) {
 }
 
 vector3 get_rigidbody_origin(const registry &registry, entity e) {
+    check_body("get_rigidbody_origin", registry, e);
     auto *com = registry.try_get<center_of_mass>(e);
     if (!com) return registry.get<position>(e);
     return rigidbody_origin(registry.get<position>(e), registry.get<orientation>(e), com);

@@ -576,6 +576,13 @@ void update_network_server(registry &registry) {
             throw std::invalid_argument("update_network_server: remote_client::snapshot_rate of entity " +
                                         std::to_string(to_index(client)) + " must be finite and > 0, got " +
                                         std::to_string(rc.snapshot_rate));
+        // A NaN or inverted box would hold nothing: the client would silently be sent no body.
+        auto &box = rc.aabb_of_interest;
+        if (!isfinite(box.min) || !isfinite(box.max) ||
+            !(box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z))
+            throw std::invalid_argument("update_network_server: remote_client::aabb_of_interest of entity " +
+                                        std::to_string(to_index(client)) +
+                                        " must be finite with min <= max on every axis");
     }
     auto &types = registry.ctx().get<network_registry>();
     auto now = get_simulation_time(registry);

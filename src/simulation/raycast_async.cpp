@@ -53,6 +53,8 @@ raycast_id_type raycast_async(registry &registry, const vector3 &p0, const vecto
                               const raycast_delegate_type &delegate,
                               const std::vector<entity> &ignore_entities) {
     auto &pending = queries(registry, "raycast_async");
+    if (!delegate)
+        throw std::invalid_argument("raycast_async: delegate is empty (nothing to call with the result)");
     if (!isfinite(p0) || !isfinite(p1)) {
         std::ostringstream msg;
         msg << "raycast_async: p0 and p1 must be finite, got p0 = (" << p0.x << ", " << p0.y << ", " << p0.z
@@ -81,6 +83,8 @@ raycast_id_type raycast_async(registry &registry, const vector3 &p0, const vecto
 query_aabb_id_type query_aabb_async(registry &registry, const AABB &aabb,
                                     const query_aabb_delegate_type &delegate) {
     auto &pending = queries(registry, "query_aabb_async");
+    if (!delegate)
+        throw std::invalid_argument("query_aabb_async: delegate is empty (nothing to call with the result)");
     if (!isfinite(aabb.min) || !isfinite(aabb.max) ||
         !(aabb.min.x <= aabb.max.x && aabb.min.y <= aabb.max.y && aabb.min.z <= aabb.max.z)) {
         std::ostringstream msg;

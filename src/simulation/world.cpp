@@ -32,23 +32,31 @@ namespace {
 
 using detail::concat;
 
-world_state &world(registry &registry) {
+[[noreturn]] void not_attached(const char *function) {
+    throw std::invalid_argument(std::string(function) +
+                                ": the registry is not attached (call edyn::attach first)");
+}
+
+// The world of an attached registry; `function`, the one called, is named in the error.
+world_state &world(registry &registry, const char *function) {
     auto *w = registry.ctx().find<world_state>();
-    if (!w) throw std::invalid_argument("edyn: the registry is not attached (call edyn::attach first)");
+    if (!w) not_attached(function);
     return *w;
 }
 
-// For the getters: unlike world(), names the function that was called.
 const world_state &attached_world(const registry &registry, const char *function) {
     auto *w = registry.ctx().find<world_state>();
-    if (!w)
-        throw std::invalid_argument(std::string(function) +
-                                    ": the registry is not attached (call edyn::attach first)");
+    if (!w) not_attached(function);
     return *w;
 }
 
-settings &mutable_settings(registry &registry) {
-    world(registry);
+settings &mutable_settings(registry &registry, const char *function) {
+    world(registry, function);
+    return registry.ctx().get<settings>();
+}
+
+const settings &settings_of(const registry &registry, const char *function) {
+    attached_world(registry, function);
     return registry.ctx().get<settings>();
 }
 
@@ -69,6 +77,12 @@ bool is_attached(const registry &registry) noexcept { return registry.ctx().cont
 namespace {
 
 void check_config(const char *function, const init_config &config) {
+    if (config.execution_mode != execution_mode::sequential &&
+        config.execution_mode != execution_mode::sequential_multithreaded &&
+        config.execution_mode != execution_mode::asynchronous)
+        invalid(function,
+                "init_config::execution_mode is " + std::to_string(unsigned(config.execution_mode)) +
+                    ", not an execution_mode (sequential, sequential_multithreaded or asynchronous)");
     if (config.execution_mode != execution_mode::sequential_multithreaded) return;
     if (config.scheduler) {
         auto &hooks = *config.scheduler;
@@ -152,7 +166,7 @@ void detach(registry &registry) {
 }
 
 void step_simulation(registry &registry) {
-    world(registry);
+    world(registry, "step_simulation");
     if (auto *async = registry.ctx().find<async_execution>()) {
         async->step_simulation(registry);
         return;
@@ -198,7 +212,7 @@ scalar present_fraction(const world_state &w, const settings &s) {
 
 void update(registry &registry, double time) {
     if (!std::isfinite(time)) invalid("update", "time must be finite, got " + std::to_string(time));
-    auto &w = world(registry);
+    auto &w = world(registry, "update");
     if (auto *async = registry.ctx().find<async_execution>()) {
         async->update(registry, time);
         return;
@@ -214,7 +228,7 @@ void update(registry &registry, double time) {
 }
 
 void wait_for_simulation(registry &registry) {
-    world(registry);
+    world(registry, "wait_for_simulation");
     if (auto *async = registry.ctx().find<async_execution>()) {
         async->wait(registry);
         return;
@@ -235,98 +249,99 @@ void wake_up_entity(registry &registry, entity e) {
     });
 }
 
-void set_paused(registry &registry, bool paused) { world(registry).paused = paused; }
+void set_paused(registry &registry, bool paused) { world(registry, "set_paused").paused = paused; }
 bool is_paused(const registry &registry) { return attached_world(registry, "is_paused").paused; }
 
 void set_fixed_dt(registry &registry, scalar dt) {
     if (!(dt >= min_fixed_dt && dt <= max_fixed_dt))
         invalid("set_fixed_dt", "dt must be in [" + concat(min_fixed_dt) + ", " + concat(max_fixed_dt) +
                                     "] s, got " + concat(dt));
-    mutable_settings(registry).fixed_dt = dt;
+    mutable_settings(registry, "set_fixed_dt").fixed_dt = dt;
 }
-scalar get_fixed_dt(const registry &registry) { return get_settings(registry).fixed_dt; }
+scalar get_fixed_dt(const registry &registry) { return settings_of(registry, "get_fixed_dt").fixed_dt; }
 
 void set_gravity(registry &registry, const vector3 &gravity) {
     if (!isfinite(gravity)) invalid("set_gravity", concat("gravity must be finite, got ", gravity));
     if (!(length(gravity) <= max_gravity))
         invalid("set_gravity", concat("gravity must be at most ", max_gravity, " m/s^2 long, got ", gravity));
-    mutable_settings(registry).gravity = gravity;
+    mutable_settings(registry, "set_gravity").gravity = gravity;
     // Resting bodies must notice a new gravity (in asynchronous mode the worker wakes its own;
     // here they are shown awake at once).
     if (registry.ctx().contains<async_execution>()) {
         registry.clear<sleeping_tag>();
         return;
     }
-    auto &w = world(registry);
+    auto &w = world(registry, "set_gravity");
     for (auto e : registry.view<dynamic_tag, sleeping_tag>())
         w.islands.wake_entity(registry, e);
 }
-vector3 get_gravity(const registry &registry) { return get_settings(registry).gravity; }
+vector3 get_gravity(const registry &registry) { return settings_of(registry, "get_gravity").gravity; }
 
 void set_solver_substeps(registry &registry, unsigned substeps) {
     check_count("set_solver_substeps", "substeps", substeps, 1, max_solver_substeps);
-    mutable_settings(registry).num_substeps = substeps;
+    mutable_settings(registry, "set_solver_substeps").num_substeps = substeps;
 }
-unsigned get_solver_substeps(const registry &registry) { return get_settings(registry).num_substeps; }
+unsigned get_solver_substeps(const registry &registry) {
+    return settings_of(registry, "get_solver_substeps").num_substeps;
+}
 
 void set_solver_relax_iterations(registry &registry, unsigned iterations) {
     check_count("set_solver_relax_iterations", "iterations", iterations, 0, max_solver_iterations);
-    mutable_settings(registry).num_relax_iterations = iterations;
+    mutable_settings(registry, "set_solver_relax_iterations").num_relax_iterations = iterations;
 }
 unsigned get_solver_relax_iterations(const registry &registry) {
-    return get_settings(registry).num_relax_iterations;
+    return settings_of(registry, "get_solver_relax_iterations").num_relax_iterations;
 }
 
 void set_solver_velocity_iterations(registry &registry, unsigned iterations) {
     check_count("set_solver_velocity_iterations", "iterations", iterations, 1, max_solver_substeps);
-    mutable_settings(registry).num_substeps = iterations;
+    mutable_settings(registry, "set_solver_velocity_iterations").num_substeps = iterations;
 }
 unsigned get_solver_velocity_iterations(const registry &registry) {
-    return get_settings(registry).num_substeps;
+    return settings_of(registry, "get_solver_velocity_iterations").num_substeps;
 }
 
 void set_solver_position_iterations(registry &registry, unsigned iterations) {
     check_count("set_solver_position_iterations", "iterations", iterations, 0, max_solver_iterations);
-    mutable_settings(registry).joint.position_projection_iterations = iterations;
+    mutable_settings(registry, "set_solver_position_iterations").joint.position_projection_iterations =
+        iterations;
 }
 unsigned get_solver_position_iterations(const registry &registry) {
-    return get_settings(registry).joint.position_projection_iterations;
+    return settings_of(registry, "get_solver_position_iterations").joint.position_projection_iterations;
 }
 
 void set_solver_restitution_iterations(registry &registry, unsigned iterations) {
     check_count("set_solver_restitution_iterations", "iterations", iterations, 0, max_solver_iterations);
-    mutable_settings(registry).num_restitution_iterations = iterations;
+    mutable_settings(registry, "set_solver_restitution_iterations").num_restitution_iterations = iterations;
 }
 unsigned get_solver_restitution_iterations(const registry &registry) {
-    return get_settings(registry).num_restitution_iterations;
+    return settings_of(registry, "get_solver_restitution_iterations").num_restitution_iterations;
 }
 
 void set_solver_individual_restitution_iterations(registry &registry, unsigned iterations) {
     check_count("set_solver_individual_restitution_iterations", "iterations", iterations, 0,
                 max_solver_iterations);
-    mutable_settings(registry).num_individual_restitution_iterations = iterations;
+    mutable_settings(registry, "set_solver_individual_restitution_iterations")
+        .num_individual_restitution_iterations = iterations;
 }
 unsigned get_solver_individual_restitution_iterations(const registry &registry) {
-    return get_settings(registry).num_individual_restitution_iterations;
+    return settings_of(registry, "get_solver_individual_restitution_iterations")
+        .num_individual_restitution_iterations;
 }
 
 void set_max_steps_per_update(registry &registry, unsigned steps) {
     check_count("set_max_steps_per_update", "steps", steps, 1, max_steps_per_update_limit);
-    mutable_settings(registry).max_steps_per_update = steps;
+    mutable_settings(registry, "set_max_steps_per_update").max_steps_per_update = steps;
 }
 
 void set_pre_step_callback(registry &registry, step_callback_t callback) {
-    mutable_settings(registry).pre_step_callback = callback;
+    mutable_settings(registry, "set_pre_step_callback").pre_step_callback = callback;
 }
 void set_post_step_callback(registry &registry, step_callback_t callback) {
-    mutable_settings(registry).post_step_callback = callback;
+    mutable_settings(registry, "set_post_step_callback").post_step_callback = callback;
 }
 
-const settings &get_settings(const registry &registry) {
-    auto *s = registry.ctx().find<settings>();
-    if (!s) throw std::invalid_argument("edyn: the registry is not attached (call edyn::attach first)");
-    return *s;
-}
+const settings &get_settings(const registry &registry) { return settings_of(registry, "get_settings"); }
 
 double get_simulation_time(const registry &registry) {
     return attached_world(registry, "get_simulation_time").simulation_time;

@@ -14,9 +14,12 @@ namespace edyn {
 /// Two bodies collide only when each one's `group` has a bit in common with the other's `mask`
 /// (see should_collide_default). Bodies without this component are in every group and collide
 /// with every group (the defaults below). make_rigidbody() emplaces it from
-/// `rigidbody_def::collision_group` and `collision_mask`; the user may change it at any time (in
-/// asynchronous mode through `registry::replace` or `registry::patch`, so that the simulation
-/// worker sees the change).
+/// `rigidbody_def::collision_group` and `collision_mask`; the user may change it at any time,
+/// through `registry::replace` or `registry::patch` (or `patch` after writing the component
+/// directly), in every mode: that is what makes the body's existing contacts be filtered again
+/// (a pair the new filter refuses stops colliding at once) and, in asynchronous mode, what
+/// sends the change to the simulation worker. A value written without either is read only when
+/// the body meets a new neighbour.
 struct collision_filter {
     /// Every bit set: member of, or colliding with, all groups.
     static constexpr std::uint64_t all_groups = ~std::uint64_t{0};

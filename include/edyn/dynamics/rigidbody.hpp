@@ -104,8 +104,9 @@ void set_center_of_mass(registry &registry, entity entity, const vector3 &com);
 /// The origin is where the body's shape and constraint pivots are anchored; it differs from
 /// `position` (the centre of mass) when the centre of mass is shifted.
 /// @param registry The registry the body lives in.
-/// @param entity A rigid body; not checked, other than by assertions in debug builds.
+/// @param entity A rigid body.
 /// @return The origin, in world space, in metres.
+/// @throws std::invalid_argument Naming the function, when `entity` is not a valid rigid body.
 vector3 get_rigidbody_origin(const registry &registry, entity entity);
 
 /// The body's origin from components the caller already holds, as get_rigidbody_origin()

@@ -43,7 +43,8 @@ struct remote_client {
     double snapshot_rate{30};
     /// The region of the world the client is sent, in world space (m; default a 100 m cube
     /// centred at the origin): islands with a body inside it are created in the client, those
-    /// leaving it destroyed.
+    /// leaving it destroyed. Finite, with min <= max on every axis: update_network_server
+    /// refuses another box.
     AABB aabb_of_interest{{-50, -50, -50}, {50, 50, 50}};
     /// When set (the default) and the client owns bodies, aabb_of_interest is recentred on them
     /// every update, keeping its size.

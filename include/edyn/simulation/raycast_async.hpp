@@ -28,8 +28,8 @@ using raycast_delegate_type = delegate<void(raycast_id_type, const raycast_resul
 /// @param delegate Receives the id, the result, p0 and p1; it must stay callable until then.
 /// @param ignore_entities Bodies the ray passes through (main-registry entities).
 /// @return The id the delegate will receive.
-/// @throws std::invalid_argument When the registry is not attached, or when p0 or p1 is not
-/// finite.
+/// @throws std::invalid_argument When the registry is not attached, when the delegate is empty,
+/// or when p0 or p1 is not finite.
 raycast_id_type raycast_async(registry &registry, const vector3 &p0, const vector3 &p1,
                               const raycast_delegate_type &delegate,
                               const std::vector<entity> &ignore_entities = {});
@@ -56,8 +56,8 @@ using query_aabb_delegate_type = delegate<void(query_aabb_id_type, const query_a
 /// @param delegate Receives the id and the result, during a later update() (or
 /// wait_for_simulation(), in asynchronous mode); it must stay callable until then.
 /// @return The id the delegate will receive.
-/// @throws std::invalid_argument When the registry is not attached, or when the box is not
-/// finite or has a min above its max on some axis.
+/// @throws std::invalid_argument When the registry is not attached, when the delegate is empty,
+/// or when the box is not finite or has a min above its max on some axis.
 query_aabb_id_type query_aabb_async(registry &registry, const AABB &aabb,
                                     const query_aabb_delegate_type &delegate);
 

@@ -242,6 +242,33 @@ TEST_F(rigidbody_test, an_entity_is_made_a_rigid_body_only_once_and_only_if_vali
     EXPECT_TRUE(snapshot(reg) == before);
 }
 
+// A kind outside the enumeration, a body that is not one: refused, naming the function, and
+// nothing changes.
+TEST_F(rigidbody_test, an_unknown_kind_and_an_entity_that_is_no_body_are_refused) {
+    auto expect_refused = [](const char *what, auto &&call) {
+        try {
+            call();
+            ADD_FAILURE() << "accepted: " << what;
+        } catch (const std::invalid_argument &e) {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+        }
+    };
+    auto def = valid_box();
+    def.kind = static_cast<rigidbody_kind>(9);
+    auto before = snapshot(reg);
+    expect_refused("make_rigidbody: kind 9 is not a rigidbody_kind", [&] { make_rigidbody(reg, def); });
+    EXPECT_TRUE(snapshot(reg) == before);
+
+    auto body = make_rigidbody(reg, valid_box());
+    expect_refused("rigidbody_set_kind: kind 7 is not a rigidbody_kind",
+                   [&] { rigidbody_set_kind(reg, body, static_cast<rigidbody_kind>(7)); });
+    EXPECT_TRUE(reg.all_of<dynamic_tag>(body));
+
+    auto plain = reg.create();
+    expect_refused("get_rigidbody_origin: entity is not a rigid body",
+                   [&] { get_rigidbody_origin(reg, plain); });
+}
+
 // make_rigidbody creates the components the manual names.
 TEST_F(rigidbody_test, a_dynamic_body_gets_the_manuals_components) {
     auto def = valid_box();

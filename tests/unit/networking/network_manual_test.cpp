@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -24,7 +25,10 @@ void send_edyn_packet_to_client(registry &, entity client_entity, const packet::
     to_client.push_back(std::move(data));
 }
 
-void send_edyn_packet_to_server(const packet::edyn_packet &packet) {
+// The manual names the packet both edyn::edyn_packet and edyn::packet::edyn_packet: one type.
+static_assert(std::is_same_v<edyn::edyn_packet, edyn::packet::edyn_packet>);
+
+void send_edyn_packet_to_server(const edyn::edyn_packet &packet) {
     auto data = std::vector<uint8_t>{};
     auto archive = memory_output_archive(data);
     archive(packet);
@@ -203,6 +207,18 @@ TEST(network_manual, server_refuses_a_bad_client_snapshot_rate) {
     EXPECT_THROW(update_network_server(server), std::invalid_argument);
     EXPECT_EQ(server.get<remote_client>(c).packets_sent, 0u) << "nothing was sent to the client";
     server.get<remote_client>(c).snapshot_rate = 20;
+
+    // So is a box of interest that holds nothing: NaN, or inverted.
+    auto &box = server.get<remote_client>(c).aabb_of_interest;
+    auto good = box;
+    box.min.x = std::nanf("");
+    expect_invalid([&] { update_network_server(server); },
+                   {"update_network_server", "aabb_of_interest", client_name.c_str()});
+    box = good;
+    std::swap(box.min.y, box.max.y);
+    EXPECT_THROW(update_network_server(server), std::invalid_argument);
+    EXPECT_EQ(server.get<remote_client>(c).packets_sent, 0u) << "nothing was sent to the client";
+    box = good;
     update_network_server(server);
     EXPECT_GT(server.get<remote_client>(c).packets_sent, 0u);
     deinit_network_server(server);

@@ -424,6 +424,33 @@ TEST(async_raycast, replies_in_the_sequential_mode_at_the_next_update) {
     EXPECT_EQ(caught.result.entity, entity{1}) << "the box";
 }
 
+// An empty delegate would be called with the reply: refused up front, in every mode, and the
+// world steps on.
+TEST(async_raycast, an_empty_delegate_is_refused_naming_the_function) {
+    for (auto mode : {execution_mode::sequential, execution_mode::asynchronous}) {
+        registry reg;
+        attach(reg, init_config{mode});
+        build_scene(reg);
+        try {
+            raycast_async(reg, {0, 5, 0}, {0, -5, 0}, raycast_delegate_type{});
+            ADD_FAILURE() << "raycast_async took an empty delegate";
+        } catch (const std::invalid_argument &e) {
+            EXPECT_NE(std::string(e.what()).find("raycast_async: delegate is empty"), std::string::npos)
+                << e.what();
+        }
+        try {
+            query_aabb_async(reg, AABB{{-1, -1, -1}, {1, 1, 1}}, query_aabb_delegate_type{});
+            ADD_FAILURE() << "query_aabb_async took an empty delegate";
+        } catch (const std::invalid_argument &e) {
+            EXPECT_NE(std::string(e.what()).find("query_aabb_async: delegate is empty"), std::string::npos)
+                << e.what();
+        }
+        update(reg, 0);
+        wait_for_simulation(reg);
+        detach(reg);
+    }
+}
+
 // Tools that step one step at a time (step_simulation, wait_for_simulation) get their replies in
 // every mode, without an update() that would move the clock.
 TEST(async_raycast, wait_for_simulation_hands_over_the_replies_in_every_mode) {

@@ -1,3 +1,4 @@
+#include <chrono>
 #include <cmath>
 #include <edyn/edyn.hpp>
 #include <functional>
@@ -5,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace edyn {
 namespace {
@@ -83,6 +85,18 @@ TEST(world, sequential_multithreaded_attaches_with_its_own_threads_or_the_progra
     EXPECT_FALSE(is_attached(reg));
     config.num_worker_threads = 2;
 
+    // A mode outside the enumeration is refused, naming the field.
+    auto unknown = config;
+    unknown.execution_mode = static_cast<execution_mode>(9);
+    try {
+        attach(reg, unknown);
+        ADD_FAILURE() << "attach accepted execution mode 9";
+    } catch (const std::invalid_argument &e) {
+        EXPECT_NE(std::string(e.what()).find("attach: init_config::execution_mode is 9"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_FALSE(is_attached(reg));
+
     // Incomplete hooks are refused, naming the field, and nothing is attached.
     config.scheduler = task_hooks{};
     try {
@@ -129,6 +143,25 @@ TEST(world, init_sets_the_configuration_attach_uses_when_given_none) {
     detach(reg);
     // Back to what the other unit tests expect (support/sequential_default.cpp).
     init(init_config{execution_mode::sequential});
+}
+
+// The manual's main loop calls update(registry) with no time: it reads the clock itself, so
+// steps follow the wall time that passes between calls.
+TEST(world, update_without_a_time_steps_as_the_clock_moves) {
+    registry reg;
+    attach(reg, init_config{execution_mode::sequential});
+    update(reg);
+    auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(150)) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        update(reg);
+    }
+    // 150 ms at 60 steps a second: about 9 steps (a slow machine may take longer between calls,
+    // never fewer steps than the time passed allows).
+    EXPECT_GE(get_step_count(reg), 8u);
+    EXPECT_LE(double(get_step_count(reg)),
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 60 + 2);
+    detach(reg);
 }
 
 TEST(world, update_runs_as_many_fixed_steps_as_the_time_asks_for) {
@@ -357,6 +390,14 @@ TEST(world, state_getters_refuse_a_registry_that_is_not_attached) {
     expect_refused([&] { (void)is_paused(reg); }, "is_paused");
     expect_refused([&] { (void)get_simulation_time(reg); }, "get_simulation_time");
     expect_refused([&] { (void)get_step_count(reg); }, "get_step_count");
+    // The setters and the step functions name themselves too.
+    expect_refused([&] { update(reg); }, "update");
+    expect_refused([&] { update(reg, 1.0); }, "update");
+    expect_refused([&] { step_simulation(reg); }, "step_simulation");
+    expect_refused([&] { set_pre_step_callback(reg, nullptr); }, "set_pre_step_callback");
+    expect_refused([&] { set_gravity(reg, {0, -1, 0}); }, "set_gravity");
+    expect_refused([&] { (void)get_fixed_dt(reg); }, "get_fixed_dt");
+    expect_refused([&] { (void)get_settings(reg); }, "get_settings");
     attach(reg);
     EXPECT_FALSE(is_paused(reg));
     EXPECT_EQ(get_step_count(reg), 0u);

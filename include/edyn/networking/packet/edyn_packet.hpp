@@ -46,6 +46,9 @@ void serialize(Archive &archive, edyn_packet &packet) {
 
 namespace edyn {
 
+/// The manual's name for a packet: `edyn::edyn_packet` is packet::edyn_packet.
+using packet::edyn_packet;
+
 /// Whether a packet must be sent through a reliable channel.
 ///
 /// Every packet must arrive but registry snapshots, which are sent many times per second and
