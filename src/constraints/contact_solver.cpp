@@ -468,6 +468,19 @@ void unpack_contact_impulses(contact_solver_set &contacts, task_scheduler *sched
 
 namespace {
 
+// One Gauss-Seidel pass over a manifold's normal rows towards the separation speeds `target`,
+// with the impulses accumulated in `normal` (from zero at the bounce) and never pulling.
+void bounce_normal_pass(const contact_solver_constraint &c, std::span<contact_solver_point> points,
+                        const scalar *target, scalar *normal, solver_body &a, solver_body &b) {
+    for (std::uint32_t i = 0; i < c.num_points; ++i) {
+        auto &p = points[i];
+        auto vn = row_velocity<fixed_side::none>(p.normal_row, p.normal, a, b);
+        auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
+        apply_row<fixed_side::none>(p.normal_row, p.normal, new_impulse - normal[i], a, b);
+        normal[i] = new_impulse;
+    }
+}
+
 // Solves one manifold's bounce as an isolated collision: each call is a new collision event,
 // so its impulses start from zero. Returns whether any point was hit.
 bool solve_restitution_individually(const contact_solver_constraint &c,
@@ -507,13 +520,7 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
     if (!any) return false;
 
     for (unsigned k = 0; k < iterations; ++k) {
-        for (std::uint32_t i = 0; i < c.num_points; ++i) {
-            auto &p = points[i];
-            auto vn = row_velocity<fixed_side::none>(p.normal_row, p.normal, a, b);
-            auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
-            apply_row<fixed_side::none>(p.normal_row, p.normal, new_impulse - normal[i], a, b);
-            normal[i] = new_impulse;
-        }
+        bounce_normal_pass(c, points, target, normal, a, b);
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = points[i];
             auto mean_mass = (p.tangent_mass[0] + p.tangent_mass[1]) * scalar(0.5);
@@ -558,8 +565,8 @@ void record_approach_speeds(contact_solver_set &contacts, std::span<const solver
 
 void bounce_without_restitution_solver(contact_solver_set &contacts, std::span<solver_body> bodies,
                                        const contact_solver_settings &settings) {
-    // Gauss-Seidel passes over one manifold's hit points, for a box landing on a face to leave
-    // it level.
+    // Passes over one manifold's points, for a box landing on a face to leave it level; the
+    // points not hit only keep from closing in, as in the restitution solver.
     constexpr unsigned passes = 4;
     for (auto k : contacts.bouncy) {
         auto &c = contacts.constraints[k];
@@ -569,26 +576,17 @@ void bounce_without_restitution_solver(contact_solver_set &contacts, std::span<s
         auto &b = bodies[c.body[1]];
         scalar target[contact_solver_constraint::max_points]{};
         scalar normal[contact_solver_constraint::max_points]{};
-        bool hit[contact_solver_constraint::max_points]{};
         bool any = false;
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             // Approaching (at the fastest the step saw), and met by the contact in the step.
-            hit[i] =
+            auto hit =
                 totals[i].relative_velocity < -settings.restitution_threshold && totals[i].normal_impulse > 0;
-            target[i] = -c.restitution * totals[i].relative_velocity;
-            any |= hit[i];
+            target[i] = hit ? -c.restitution * totals[i].relative_velocity : scalar(0);
+            any |= hit;
         }
         if (!any) continue;
-        for (unsigned pass = 0; pass < passes; ++pass) {
-            for (std::uint32_t i = 0; i < c.num_points; ++i) {
-                if (!hit[i]) continue;
-                auto &p = points[i];
-                auto vn = row_velocity<fixed_side::none>(p.normal_row, p.normal, a, b);
-                auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
-                apply_row<fixed_side::none>(p.normal_row, p.normal, new_impulse - normal[i], a, b);
-                normal[i] = new_impulse;
-            }
-        }
+        for (unsigned pass = 0; pass < passes; ++pass)
+            bounce_normal_pass(c, points, target, normal, a, b);
         // Part of the contact's own impulse: the restitution solver's totals stay zero.
         for (std::uint32_t i = 0; i < c.num_points; ++i)
             totals[i].normal_impulse += normal[i];

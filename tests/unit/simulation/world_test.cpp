@@ -73,39 +73,32 @@ TEST(world, sequential_multithreaded_attaches_with_its_own_threads_or_the_progra
     EXPECT_EQ(get_settings(reg).execution_mode, execution_mode::sequential_multithreaded);
     detach(reg);
 
-    // A thread count no machine has is refused, naming the field, and nothing is attached.
-    config.num_worker_threads = 100000;
-    try {
-        attach(reg, config);
-        ADD_FAILURE() << "attach accepted 100,000 worker threads";
-    } catch (const std::invalid_argument &e) {
-        EXPECT_NE(std::string(e.what()).find("init_config::num_worker_threads is 100000"), std::string::npos)
-            << e.what();
-    }
-    EXPECT_FALSE(is_attached(reg));
-    config.num_worker_threads = 2;
+    // A configuration attach refuses, with a message that contains `expected`; nothing is
+    // attached.
+    auto expect_refused = [&reg](const init_config &refused, const char *what, const char *expected) {
+        try {
+            attach(reg, refused);
+            ADD_FAILURE() << "attach accepted " << what;
+        } catch (const std::invalid_argument &e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+        EXPECT_FALSE(is_attached(reg));
+    };
+
+    // A thread count no machine has is refused, naming the field.
+    auto too_many = config;
+    too_many.num_worker_threads = 100000;
+    expect_refused(too_many, "100,000 worker threads", "init_config::num_worker_threads is 100000");
 
     // A mode outside the enumeration is refused, naming the field.
     auto unknown = config;
     unknown.execution_mode = static_cast<execution_mode>(9);
-    try {
-        attach(reg, unknown);
-        ADD_FAILURE() << "attach accepted execution mode 9";
-    } catch (const std::invalid_argument &e) {
-        EXPECT_NE(std::string(e.what()).find("attach: init_config::execution_mode is 9"), std::string::npos)
-            << e.what();
-    }
-    EXPECT_FALSE(is_attached(reg));
+    expect_refused(unknown, "execution mode 9", "attach: init_config::execution_mode is 9");
 
-    // Incomplete hooks are refused, naming the field, and nothing is attached.
-    config.scheduler = task_hooks{};
-    try {
-        attach(reg, config);
-        ADD_FAILURE() << "attach accepted task_hooks without enqueue";
-    } catch (const std::invalid_argument &e) {
-        EXPECT_NE(std::string(e.what()).find("init_config::scheduler"), std::string::npos) << e.what();
-    }
-    EXPECT_FALSE(is_attached(reg));
+    // Incomplete hooks are refused, naming the field.
+    auto no_hooks = config;
+    no_hooks.scheduler = task_hooks{};
+    expect_refused(no_hooks, "task_hooks without enqueue", "init_config::scheduler");
 }
 
 // The manual's edyn::init(init_config): the configuration attach uses when given none.
