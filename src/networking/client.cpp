@@ -273,12 +273,22 @@ void init_network_client(registry &registry) {
     auto &ctx = registry.ctx().emplace<client_context>();
     ctx.job = std::make_unique<background_job>();
     ctx.decay_step = get_step_count(registry);
+    // Just before a step (or, in asynchronous mode, an update) empties the action lists, their
+    // actions go into the histories the snapshots carry.
+    registry.ctx().emplace<detail::action_types>().before_clear = [](edyn::registry &r) {
+        auto *client = r.ctx().find<client_context>();
+        if (!client) return;
+        auto now = client_time(r, *client);
+        for (auto &t : r.ctx().get<network_registry>().types)
+            if (t.record_actions) t.record_actions(r, now, history_length);
+    };
 }
 
 void deinit_network_client(registry &registry) {
     auto *ctx = registry.ctx().find<client_context>();
     if (!ctx) return;
     ctx->job->wait();
+    if (auto *actions = registry.ctx().find<detail::action_types>()) actions->before_clear = nullptr;
     registry.ctx().erase<client_context>();
     registry.ctx().erase<network_client_rejections>();
 }
@@ -347,18 +357,6 @@ void update_network_client(registry &registry) {
         ctx.packet_signal.publish({packet::time_request{id}});
     }
 
-    // Actions recorded last time were consumed by the steps run since.
-    if (ctx.actions_pending && get_step_count(registry) > ctx.actions_step) {
-        for (auto &t : types.types)
-            if (t.clear_actions) t.clear_actions(registry, true);
-        ctx.actions_pending = false;
-    }
-    for (auto &t : types.types) {
-        if (!t.record_actions) continue;
-        t.record_actions(registry, now, history_length);
-        ctx.actions_pending = true;
-        ctx.actions_step = get_step_count(registry);
-    }
     for (auto i = types.first_program_type; i < types.types.size(); ++i) {
         if (!types.types[i].action) continue;
         for (auto e : registry.view<networked_tag>())

@@ -111,8 +111,6 @@ struct client_context {
     double last_input_record{-std::numeric_limits<double>::infinity()};
 
     std::uint64_t decay_step{0};
-    bool actions_pending{false};
-    std::uint64_t actions_step{0};
 
     // Steps ahead of the present an extrapolation aims at (adapted to how long jobs take).
     int lead_steps{1};

@@ -90,8 +90,6 @@ struct server_context {
     network_server_packet_signal packet_signal;
     std::vector<entity> destroyed;
     packet::server_settings settings_sent{};
-    bool actions_pending{false};
-    std::uint64_t actions_step{0};
 };
 
 server_context &get_server(registry &registry, const char *function) {
@@ -342,8 +340,7 @@ void update_playout_delay(registry &registry, server_context &ctx, entity client
 }
 
 // Applies the client's snapshots that are due, in time order.
-bool apply_due_snapshots(registry &registry, server_client_state &state, double now) {
-    auto applied_actions = false;
+void apply_due_snapshots(registry &registry, server_client_state &state, double now) {
     auto &types = registry.ctx().get<network_registry>();
     auto due = std::size_t{0};
     // Times within half a step of now are this step's (client times fall on steps, give or take
@@ -354,12 +351,9 @@ bool apply_due_snapshots(registry &registry, server_client_state &state, double 
     for (std::size_t i = 0; i < due; ++i) {
         auto &snapshot = state.jitter_buffer[i];
         apply_pools(registry, types, snapshot.pools, snapshot.entities, {});
-        for (auto &pool : snapshot.pools)
-            applied_actions |= types.types[pool->component_index].action;
         if (snapshot.inputs) state.last_applied = snapshot.timestamp;
     }
     state.jitter_buffer.erase(state.jitter_buffer.begin(), state.jitter_buffer.begin() + std::ptrdiff_t(due));
-    return applied_actions;
 }
 
 // The state of an asset's entities, for a client that loaded the asset: the components each
@@ -588,13 +582,6 @@ void update_network_server(registry &registry) {
     auto now = get_simulation_time(registry);
     types.now = now;
 
-    // Actions delivered last time were consumed by the steps run since.
-    if (ctx.actions_pending && get_step_count(registry) > ctx.actions_step) {
-        for (auto &t : types.types)
-            if (t.clear_actions) t.clear_actions(registry, false);
-        ctx.actions_pending = false;
-    }
-
     auto settings = current_settings(registry);
     auto settings_changed = !same_settings(settings, ctx.settings_sent);
     ctx.settings_sent = settings;
@@ -616,10 +603,8 @@ void update_network_server(registry &registry) {
                 if (state.known.erase(e)) packet.entities.push_back(e);
             if (!packet.entities.empty()) send(registry, ctx, client, {std::move(packet)});
         }
-        if (apply_due_snapshots(registry, state, now)) {
-            ctx.actions_pending = true;
-            ctx.actions_step = get_step_count(registry);
-        }
+        // Actions among them go into the entities' action_lists, for the next step.
+        apply_due_snapshots(registry, state, now);
         update_playout_delay(registry, ctx, client, rc, state);
         if (now >= state.next_snapshot_time) {
             state.next_snapshot_time = now + 1 / std::max(rc.snapshot_rate, 1e-3) - 1e-9;

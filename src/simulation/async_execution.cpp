@@ -304,6 +304,8 @@ bool async_execution::pending_after(entity e, std::uint64_t ops_applied) const n
 }
 
 void async_execution::send_batch(registry &registry, worker_op last, std::optional<double> time) {
+    // The actions made since the last batch go with it, to the worker's next step.
+    detail::consume_actions(registry);
     push(settings_op(registry));
     if (last) push(std::move(last));
     last_batch = worker->send(ops, time);

@@ -1,4 +1,5 @@
 #include "edyn/simulation/step.hpp"
+#include "edyn/simulation/action_list.hpp"
 #include "edyn/simulation/body_motion_estimate.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/narrowphase.hpp"
@@ -42,6 +43,8 @@ void run_step(registry &registry) {
     registry.ctx().emplace<contact_events>().deliver(registry);
 
     if (settings.post_step_callback) settings.post_step_callback(registry);
+    // The step's callbacks have seen the actions: each is seen by one step only.
+    detail::consume_actions(registry);
 }
 
 } // namespace edyn

@@ -13,6 +13,7 @@
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/dynamics/worker_calls.hpp"
+#include "edyn/simulation/action_list.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/interpolation.hpp"
 #include "edyn/simulation/registry_listeners.hpp"
@@ -162,6 +163,7 @@ void detach(registry &registry) {
     registry.ctx().erase<settings>();
     registry.ctx().erase<contact_events>();
     registry.ctx().erase<material_mix_table>();
+    registry.ctx().erase<detail::action_types>();
     reset_should_collide(registry);
 }
 

@@ -1,32 +1,11 @@
 #ifndef EDYN_NETWORKING_ACTION_LIST_HPP
 #define EDYN_NETWORKING_ACTION_LIST_HPP
 
-#include "edyn/ecs/registry.hpp"
+#include "edyn/simulation/action_list.hpp"
 #include <limits>
 #include <vector>
 
 namespace edyn {
-
-/// One-shot events of a client's (a jump, a shot) on an entity it owns.
-///
-/// Actions are not components: they are collected in this list, which is. To add one, get the
-/// entity's list (`get_or_emplace`) and push the action into `actions`. A step callback consumes
-/// them, and they are cleared after the step that saw them. Each client snapshot carries the
-/// actions of the last second with the time they were made (action_history), so that a lost
-/// packet loses none, and the server applies each once, at that time.
-///
-/// Register the action type with `register_external_components<action_list<A>>` and
-/// `register_networked_components<...>(registry, std::tuple<A>{})`; an action type that is not
-/// empty needs a `serialize` function.
-///
-/// @tparam Action The program's action type.
-template<typename Action>
-struct action_list {
-    /// Actions added since the last step consumed them, oldest first. Written by the program
-    /// (client side) or by the engine (server side, from the client's snapshots); empty by
-    /// default.
-    std::vector<Action> actions;
-};
 
 /// Writes or reads an action_list: its actions, each with the action type's own serializer.
 /// @param archive A memory_output_archive or memory_input_archive.
@@ -38,8 +17,11 @@ void serialize(Archive &archive, action_list<Action> &list) {
 
 /// The actions of the last second on a client's entity, with the (server) time each was made.
 ///
-/// Kept by the client's engine and sent in every snapshot; the program does not write it. The
-/// server adds each entry to the entity's action_list once, the first time it sees it.
+/// Kept by the client's engine: after each step (in asynchronous mode, when an update sends its
+/// batch), before the lists are emptied, their actions are added to it with the client's
+/// estimate of the server time. Sent in every snapshot; the program does not write it. The
+/// server adds each entry to the entity's action_list once, the first time it sees it, and its
+/// next step sees them.
 ///
 /// @tparam Action The program's action type.
 template<typename Action>
@@ -54,13 +36,10 @@ struct action_history {
     /// Not sent. On the receiving side: the time (seconds) of the newest entry applied; minus
     /// infinity before the first.
     double last_applied{-std::numeric_limits<double>::infinity()};
-    /// Not sent. On the sending side: how many of the action_list's actions are in `entries`
-    /// already (0 by default).
-    std::size_t recorded{0};
 };
 
 /// Writes or reads an action_history: its entries (time and actions), not the local-only
-/// `last_applied` and `recorded`. Reading never allocates more entries than there are bytes
+/// `last_applied`. Reading never allocates more entries than there are bytes
 /// left in the archive.
 /// @param archive A memory_output_archive or memory_input_archive.
 /// @param history The history to write from or read into.

@@ -8,6 +8,8 @@
 #include "edyn/networking/networked_tag.hpp"
 #include "edyn/serialization/memory_archive.hpp"
 #include "edyn/serialization/std_types.hpp"
+#include "edyn/simulation/replication.hpp"
+#include "edyn/simulation/world.hpp"
 #include <algorithm>
 #include <cstdint>
 #include <functional>
@@ -46,13 +48,10 @@ struct networked_type {
     // Reads values until the end of the pool's bytes; null when they are malformed or name a
     // position past `entity_count`.
     std::unique_ptr<decoded_pool> (*read)(const std::vector<std::uint8_t> &data, std::size_t entity_count){};
-    // Actions only: copies the actions added to every entity's action_list since the last call
-    // into its action_history, stamped `time`, and drops entries older than `time - keep` (the
-    // client's side; the list itself is left for the step callbacks).
+    // Actions only: copies every entity's action_list into its action_history, stamped `time`,
+    // and drops entries older than `time - keep` (the client's side, just before the lists are
+    // emptied: simulation/action_list.hpp).
     void (*record_actions)(registry &, double time, double keep){};
-    // Actions only: empties every action_list after a step consumed them; with `recorded_only`,
-    // only the actions record_actions copied (those added since were not seen by a step yet).
-    void (*clear_actions)(registry &, bool recorded_only){};
 };
 
 template<typename Component>
@@ -113,29 +112,14 @@ void on_networked_change(registry &registry, entity e) {
 template<typename Action>
 void record_actions(registry &registry, double time, double keep) {
     for (auto [e, list] : registry.view<action_list<Action>>().each()) {
-        auto &history = registry.get_or_emplace<action_history<Action>>(e);
-        if (list.actions.size() <= history.recorded) continue;
-        history.entries.push_back(
-            {time, std::vector<Action>(list.actions.begin() + std::ptrdiff_t(history.recorded),
-                                       list.actions.end())});
-        history.recorded = list.actions.size();
+        if (list.actions.empty()) continue;
+        registry.get_or_emplace<action_history<Action>>(e).entries.push_back({time, list.actions});
     }
     for (auto [e, history] : registry.view<action_history<Action>>().each()) {
         auto &entries = history.entries;
         auto old = std::find_if(entries.begin(), entries.end(),
                                 [&](auto &entry) { return entry.timestamp >= time - keep; });
         entries.erase(entries.begin(), old);
-    }
-}
-
-template<typename Action>
-void clear_actions(registry &registry, bool recorded_only) {
-    for (auto [e, list] : registry.view<action_list<Action>>().each()) {
-        auto *history = registry.try_get<action_history<Action>>(e);
-        auto count = recorded_only ? (history ? std::min(history->recorded, list.actions.size()) : 0)
-                                   : list.actions.size();
-        list.actions.erase(list.actions.begin(), list.actions.begin() + std::ptrdiff_t(count));
-        if (history) history->recorded = 0;
     }
 }
 
@@ -187,7 +171,8 @@ void register_networked_types(registry &registry, std::vector<networked_type> ty
 ///
 /// Their values travel between server and clients, on networked entities, whenever they change
 /// (and with the entity when it is created on a client). Components derived from network_input
-/// are the clients' inputs. Actions (action_list.hpp) are listed in the tuple. Server and clients
+/// are the clients' inputs. Actions (simulation/action_list.hpp) are listed in the tuple, as they
+/// are in register_external_components. Server and clients
 /// must register the same types in the same order, after register_external_components; a
 /// component that is not empty needs a free `serialize(Archive &, T &)`, found by
 /// argument-dependent lookup. A type registered already keeps its place; nothing throws.
@@ -206,8 +191,12 @@ void register_networked_components(registry &registry, std::tuple<Actions...> = 
             t.action = true;
             t.connect = [](edyn::registry &) {};
             t.record_actions = &detail::record_actions<Actions>;
-            t.clear_actions = &detail::clear_actions<Actions>;
             types.push_back(t);
+            // Emptied after each step even where the program left them out of
+            // register_external_components.
+            if (is_attached(registry))
+                detail::register_action_type(registry, "register_networked_components",
+                                             detail::make_action_type<Actions>());
         }(),
         ...);
     detail::register_networked_types(registry, std::move(types));

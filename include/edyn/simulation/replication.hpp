@@ -3,8 +3,10 @@
 
 #include "edyn/ecs/entity_members.hpp"
 #include "edyn/ecs/registry.hpp"
+#include "edyn/simulation/action_list.hpp"
 #include <functional>
 #include <memory>
+#include <tuple>
 #include <type_traits>
 
 namespace edyn {
@@ -90,6 +92,9 @@ void send_removal(registry &registry, entity e) {
 
 template<typename Component, bool EdynComponent>
 replicated_type make_replicated_type() {
+    static_assert(!is_action_list_v<Component>,
+                  "an action type is registered in the tuple: register_external_components<...>(registry, "
+                  "std::tuple<Action>{})");
     static const char id = 0;
     return {&id,
             [](registry &r) {
@@ -107,23 +112,61 @@ replicated_type make_replicated_type() {
             }};
 }
 
+template<typename Action>
+action_type make_action_type() {
+    static const char id = 0;
+    return {&id,
+            [](registry &r) {
+                for (auto [e, list] : r.view<action_list<Action>>().each())
+                    list.actions.clear();
+            },
+            [](registry &r, replication_sink &sink) {
+                for (auto [e, list] : r.view<action_list<Action>>().each()) {
+                    if (list.actions.empty() || !sink.accepts(r, e, false)) continue;
+                    sink.send(e, [actions = list.actions](registry &worker, entity local,
+                                                          const std::function<entity(entity)> &to_worker) {
+                        auto &target = worker.get_or_emplace<action_list<Action>>(local).actions;
+                        for (auto action : actions) {
+                            map_entity_members(action, to_worker);
+                            target.push_back(std::move(action));
+                        }
+                    });
+                }
+            }};
+}
+
 } // namespace detail
 
-/// Makes the program's own components travel to the simulation worker in asynchronous mode.
-/// On the entities the worker has (rigid bodies, constraints, external entities), their
-/// emplace, replace, patch and removal are applied in the worker's registry at the start of its
-/// next step, in the order they were made, and step callbacks see them there. Values the
-/// entities have already are sent too. Entities the components hold are translated into the
-/// worker's: declare them with edyn::entity_members (ecs/entity_members.hpp). Registering a
-/// type twice does nothing more; in the other modes nothing needs to travel and this does
-/// nothing. Changes only travel from the main registry to the worker, not back.
-/// @tparam Components The component types to replicate; each must be copyable.
+/// Makes the program's own components, and its actions, travel to the simulation worker in
+/// asynchronous mode.
+/// On the entities the worker has (rigid bodies, constraints, external entities), the
+/// components' emplace, replace, patch and removal are applied in the worker's registry at the
+/// start of its next step, in the order they were made, and step callbacks see them there.
+/// Values the entities have already are sent too. Entities the components hold are translated
+/// into the worker's: declare them with edyn::entity_members (ecs/entity_members.hpp).
+/// Changes only travel from the main registry to the worker, not back.
+///
+/// Action types (simulation/action_list.hpp) are listed in the tuple, in every mode: each
+/// entity's action_list<A> is then seen by exactly one step and emptied after it. In
+/// asynchronous mode each update sends the lists' actions to the worker (appended to the
+/// worker's lists) and empties them in the main registry.
+///
+/// Registering a type twice does nothing more.
+/// @code
+/// edyn::register_external_components<steering, health>(registry, std::tuple<jump>{});
+/// @endcode
+/// @tparam Components The component types to replicate; each must be copyable, and none an
+/// action_list.
+/// @tparam Actions The action types; each must be copyable.
 /// @param registry The main registry, attached.
 /// @throws std::invalid_argument Naming the function, when the registry is not attached.
-template<typename... Components>
-void register_external_components(registry &registry) {
+template<typename... Components, typename... Actions>
+void register_external_components(registry &registry, std::tuple<Actions...> = {}) {
     (detail::register_replicated(registry, "register_external_components",
                                  detail::make_replicated_type<Components, false>()),
+     ...);
+    (detail::register_action_type(registry, "register_external_components",
+                                  detail::make_action_type<Actions>()),
      ...);
 }
 

@@ -45,6 +45,10 @@ struct net_harness {
     // and step callbacks.
     std::function<void(registry &)> setup;
 
+    // Called for each client between its network update and update(), as a program that adds
+    // its inputs and actions there would.
+    std::function<void(net_client &)> before_client_update;
+
     // The execution mode of every end. In asynchronous mode each update() is followed by
     // wait_for_simulation, so that frames faster than real time still see their steps.
     execution_mode mode;
@@ -124,6 +128,7 @@ struct net_harness {
             }
             update_network_client(c->reg);
             wait_for_network_client(c->reg);
+            if (before_client_update) before_client_update(*c);
             update(c->reg, time);
             if (mode == execution_mode::asynchronous) wait_for_simulation(c->reg);
         }

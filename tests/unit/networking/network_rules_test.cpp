@@ -5,6 +5,7 @@
 #include <edyn/networking/networked_components.hpp>
 #include <edyn/networking/remote_client.hpp>
 #include <gtest/gtest.h>
+#include <mutex>
 
 namespace {
 
@@ -37,17 +38,29 @@ void serialize(Archive &archive, jump &j) {
     archive(j.id);
 }
 
-// Every jump the server's steps consumed, by id.
-std::vector<int> jumps_seen;
+// Every jump the steps consumed, by id: on the server, and on the client. Written by the
+// stepping thread (a worker in asynchronous mode), read after wait_for_simulation.
+struct jump_log {
+    std::mutex mutex;
+    std::vector<int> ids;
+    std::vector<int> taken() {
+        std::lock_guard lock(mutex);
+        return ids;
+    }
+};
+jump_log server_jumps, client_jumps;
 
-void consume_jumps(registry &registry) {
+void log_jumps(registry &registry, jump_log &log) {
+    std::lock_guard lock(log.mutex);
     for (auto [e, list] : registry.view<action_list<jump>>().each())
         for (auto &j : list.actions)
-            jumps_seen.push_back(j.id);
+            log.ids.push_back(j.id);
 }
+void consume_server_jumps(registry &registry) { log_jumps(registry, server_jumps); }
+void consume_client_jumps(registry &registry) { log_jumps(registry, client_jumps); }
 
 void rules_setup(registry &registry) {
-    register_external_components<steering, health, action_list<jump>>(registry);
+    register_external_components<steering, health>(registry, std::tuple<jump>{});
     register_networked_components<steering, health>(registry, std::tuple<jump>{});
 }
 
@@ -61,32 +74,58 @@ entity rules_box(registry &registry, const vector3 &pos) {
     return e;
 }
 
-TEST(network_rules, actions_reach_the_server_once_each_under_loss) {
-    net_harness h(&rules_setup);
-    set_pre_step_callback(h.server, &consume_jumps);
-    jumps_seen.clear();
+// Jumps made on the client, a few per second, some two at once, each added either after
+// update() or between the network update and update(); the server's steps and the client's own
+// see each exactly once.
+void check_actions_once_each(execution_mode mode, double frame_dt) {
+    net_harness h(&rules_setup, mode);
+    h.frame_dt = frame_dt;
+    server_jumps.ids.clear();
+    client_jumps.ids.clear();
+    set_pre_step_callback(h.server, &consume_server_jumps);
     auto box = rules_box(h.server, {0, 0, 0});
     auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.25, .duplication = 0.1, .seed = 3});
+    set_pre_step_callback(c.reg, &consume_client_jumps);
     h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
     h.run(1);
     auto local = client_local_entity(c.reg, box);
     ASSERT_NE(local, entity{null});
-    auto next_id = 0;
-    h.run(3, [&] {
-        // A jump every fifth frame, two at once every so often.
-        if (int(h.time * 60) % 5 != 0) return;
+    auto next_id = 0, frame = 0;
+    auto add_jumps = [&] {
         auto &list = c.reg.get_or_emplace<action_list<jump>>(local);
         list.actions.push_back({next_id++});
         if (next_id % 7 == 0) list.actions.push_back({next_id++});
+    };
+    h.before_client_update = [&](net_client &) {
+        if (frame % 5 == 2) add_jumps();
+    };
+    h.run(3, [&] {
+        if (frame++ % 5 == 0) add_jumps();
     });
-    h.run(1);
+    h.before_client_update = {};
+    h.run(1.5);
     auto expected = std::vector<int>(std::size_t(next_id));
     for (int i = 0; i < next_id; ++i)
         expected[std::size_t(i)] = i;
-    EXPECT_EQ(jumps_seen, expected) << jumps_seen.size() << " jumps seen by the server, " << next_id
-                                    << " made";
-    // The client's own lists are cleared after its steps too.
+    EXPECT_GT(next_id, 20);
+    EXPECT_EQ(server_jumps.taken(), expected)
+        << server_jumps.taken().size() << " jumps seen by the server, " << next_id << " made";
+    EXPECT_EQ(client_jumps.taken(), expected)
+        << client_jumps.taken().size() << " jumps seen by the client's steps, " << next_id << " made";
+    // The client's own lists are emptied by its steps too.
     EXPECT_TRUE(c.reg.get<action_list<jump>>(local).actions.empty());
+}
+
+TEST(network_rules, actions_reach_the_server_once_each_under_loss) {
+    check_actions_once_each(execution_mode::sequential, 1.0 / 60);
+}
+
+TEST(network_rules, actions_are_seen_once_when_an_update_runs_several_steps) {
+    check_actions_once_each(execution_mode::sequential, 1.0 / 20);
+}
+
+TEST(network_rules, actions_reach_the_servers_worker_once_each_in_asynchronous_mode) {
+    check_actions_once_each(execution_mode::asynchronous, 1.0 / 30);
 }
 
 TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
