@@ -1,9 +1,14 @@
 #include "edyn/networking/server.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/shape_index.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/networking/asset_ref.hpp"
+#include "edyn/shapes/plane_shape.hpp"
+#include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world.hpp"
 #include "entity_set.hpp"
@@ -90,6 +95,10 @@ struct server_context {
     network_server_packet_signal packet_signal;
     std::vector<entity> destroyed;
     packet::server_settings settings_sent{};
+    // The networked entities' boxes for the AABBs of interest, made once per update (when a
+    // client needs them) and kept to reuse their memory.
+    std::vector<std::pair<entity, AABB>> interest_boxes;
+    bool boxes_ready{false};
 };
 
 server_context &get_server(registry &registry, const char *function) {
@@ -140,11 +149,6 @@ bool owns(const remote_client &rc, entity e) {
     return std::find(rc.owned_entities.begin(), rc.owned_entities.end(), e) != rc.owned_entities.end();
 }
 
-bool inside(const AABB &aabb, const vector3 &p) {
-    return p.x >= aabb.min.x && p.y >= aabb.min.y && p.z >= aabb.min.z && p.x <= aabb.max.x &&
-           p.y <= aabb.max.y && p.z <= aabb.max.z;
-}
-
 void recentre_on_owned(registry &registry, remote_client &rc) {
     if (!rc.aabb_follows_owned) return;
     auto sum = vector3_zero;
@@ -182,13 +186,36 @@ void add_with_island(const registry &registry, entity e, entity_set &out) {
     }
 }
 
-// Networked entities the client should have: static bodies everywhere (they are few and never
-// move), and the islands of the others whose position is in its AABB of interest.
-void collect_interest(const registry &registry, const AABB &aabb, entity_set &out) {
-    for (auto e : registry.view<networked_tag, static_tag>())
-        out.insert(e);
-    for (auto [e, pos] : registry.view<networked_tag, position>(exclude<static_tag>).each()) {
-        if (inside(aabb, pos) && !out.contains(e)) add_with_island(registry, e, out);
+// Each networked entity with a position and the box the AABBs of interest are tested against:
+// a body's bounding box at its present transform (in asynchronous mode the main registry's AABB
+// component does not follow the worker's motion), all space for a plane, a point for an entity
+// without a shape.
+void gather_interest_boxes(const registry &registry, std::vector<std::pair<entity, AABB>> &out) {
+    out.clear();
+    for (auto [e, pos] : registry.view<networked_tag, position>().each()) {
+        auto box = AABB{pos, pos};
+        if (registry.all_of<plane_shape>(e)) {
+            // Unbounded, and few: every client has the planes.
+            box = AABB{vector3_one * -plane_aabb_half_size, vector3_one * plane_aabb_half_size};
+        } else if (registry.all_of<shape_index, orientation>(e)) {
+            auto &orn = registry.get<orientation>(e);
+            auto origin = get_rigidbody_origin(registry, e);
+            box = visit_shape(registry, e, [&](const auto &shape) { return shape_aabb(shape, origin, orn); });
+        }
+        out.emplace_back(e, box);
+    }
+}
+
+// Networked entities the client should have: those whose box overlaps its AABB of interest (a
+// plane's box is unbounded), each moving body with its island.
+void collect_interest(const registry &registry, const std::vector<std::pair<entity, AABB>> &boxes,
+                      const AABB &aabb, entity_set &out) {
+    for (auto &[e, box] : boxes) {
+        if (!intersect(aabb, box) || out.contains(e)) continue;
+        if (registry.all_of<static_tag>(e))
+            out.insert(e);
+        else
+            add_with_island(registry, e, out);
     }
 }
 
@@ -237,8 +264,13 @@ void send_create(registry &registry, server_context &ctx, const network_registry
 void update_interest(registry &registry, server_context &ctx, const network_registry &types, entity client,
                      remote_client &rc, server_client_state &state) {
     recentre_on_owned(registry, rc);
+    // Made by the first client whose interest is updated in this update_network_server.
+    if (!ctx.boxes_ready) {
+        gather_interest_boxes(registry, ctx.interest_boxes);
+        ctx.boxes_ready = true;
+    }
     auto interest = entity_set{};
-    collect_interest(registry, rc.aabb_of_interest, interest);
+    collect_interest(registry, ctx.interest_boxes, rc.aabb_of_interest, interest);
     // Owned entities are always the client's, wherever they are.
     for (auto e : rc.owned_entities)
         if (registry.valid(e) && registry.all_of<networked_tag>(e)) add_with_island(registry, e, interest);
@@ -586,6 +618,7 @@ void update_network_server(registry &registry) {
     auto settings_changed = !same_settings(settings, ctx.settings_sent);
     ctx.settings_sent = settings;
 
+    ctx.boxes_ready = false;
     auto destroyed = std::move(ctx.destroyed);
     ctx.destroyed.clear();
 

@@ -42,8 +42,10 @@ struct remote_client {
     /// bad value written here directly.
     double snapshot_rate{30};
     /// The region of the world the client is sent, in world space (m; default a 100 m cube
-    /// centred at the origin): islands with a body inside it are created in the client, those
-    /// leaving it destroyed. Finite, with min <= max on every axis: update_network_server
+    /// centred at the origin): islands with a body whose bounding box overlaps it are created in
+    /// the client, those leaving it destroyed; static bodies are sent where their boxes overlap
+    /// it (a plane everywhere), and networked entities without a shape where their position is
+    /// inside it. Finite, with min <= max on every axis: update_network_server
     /// refuses another box.
     AABB aabb_of_interest{{-50, -50, -50}, {50, 50, 50}};
     /// When set (the default) and the client owns bodies, aabb_of_interest is recentred on them

@@ -253,6 +253,62 @@ TEST(network_rules, islands_enter_and_leave_the_aabb_of_interest) {
     EXPECT_EQ(bodies, 1);
 }
 
+// Bodies are in where their bounding boxes overlap the AABB of interest, not their centres;
+// static bodies likewise (a plane everywhere), in both the sequential and asynchronous modes.
+void check_boxes_of_interest(execution_mode mode) {
+    net_harness h(&rules_setup, mode);
+    auto ground = [&](shapes_variant_t shape, const vector3 &pos) {
+        auto def = rigidbody_def{};
+        def.kind = rigidbody_kind::rb_static;
+        def.shape = shape;
+        def.position = pos;
+        auto e = make_rigidbody(h.server, def);
+        h.server.emplace<networked_tag>(e);
+        return e;
+    };
+    auto plane = ground(plane_shape{vector3_y, -20}, vector3_zero);
+    auto far_wall = ground(box_shape{{1, 5, 1}}, {200, 0, 0});
+    auto edge_wall = ground(box_shape{{5, 1, 1}}, {14, 0, 0}); // centre outside, box reaching in
+    // A long plank whose centre lies outside the box but whose ends reach into it.
+    auto plank_def = rigidbody_def{};
+    plank_def.shape = box_shape{{6, 0.2, 0.2}};
+    plank_def.position = {0, 0, 15};
+    plank_def.orientation = quaternion_axis_angle(vector3_y, to_radians(90));
+    plank_def.gravity = vector3_zero;
+    auto plank = make_rigidbody(h.server, plank_def);
+    h.server.emplace<networked_tag>(plank);
+    auto &c = h.add_client({.latency = 0.02});
+    h.server.get<remote_client>(c.server_entity).aabb_of_interest = {{-10, -10, -10}, {10, 10, 10}};
+    h.run(0.5);
+    EXPECT_NE(client_local_entity(c.reg, plane), entity{null}) << "a plane is everyone's";
+    EXPECT_NE(client_local_entity(c.reg, edge_wall), entity{null}) << "a wall reaching into the box";
+    EXPECT_NE(client_local_entity(c.reg, plank), entity{null}) << "a plank reaching into the box";
+    EXPECT_EQ(client_local_entity(c.reg, far_wall), entity{null}) << "a static body far outside was sent";
+
+    // The plank moves away: it leaves when its box no longer overlaps, not before.
+    h.server.replace<linvel>(plank, vector3{0, 0, 4});
+    wake_up_entity(h.server, plank);
+    h.run(0.1); // near end near 9.4: still in
+    EXPECT_NE(client_local_entity(c.reg, plank), entity{null});
+    h.run(1.5); // near end near 15.4: out
+    EXPECT_EQ(client_local_entity(c.reg, plank), entity{null}) << "a plank that left was not destroyed";
+
+    // The box of interest moves to the far wall: it comes in, the edge wall leaves.
+    h.server.get<remote_client>(c.server_entity).aabb_of_interest = {{190, -10, -10}, {210, 10, 10}};
+    h.run(0.5);
+    EXPECT_NE(client_local_entity(c.reg, far_wall), entity{null});
+    EXPECT_EQ(client_local_entity(c.reg, edge_wall), entity{null});
+    EXPECT_NE(client_local_entity(c.reg, plane), entity{null});
+}
+
+TEST(network_rules, bodies_and_static_bodies_are_in_where_their_boxes_overlap_the_aabb_of_interest) {
+    check_boxes_of_interest(execution_mode::sequential);
+}
+
+TEST(network_rules, boxes_of_interest_follow_the_workers_motion_in_asynchronous_mode) {
+    check_boxes_of_interest(execution_mode::asynchronous);
+}
+
 TEST(network_rules, destroyed_entities_are_destroyed_in_the_client) {
     net_harness h(&rules_setup);
     auto a = rules_box(h.server, {0, 0, 0});
