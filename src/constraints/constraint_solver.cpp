@@ -4,6 +4,8 @@
 #include "edyn/parallel/stage_queue.hpp"
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -22,6 +24,13 @@ void gather_batch(const registry &registry, constraint_batch<Solver> &batch, bod
     std::uint32_t num_colours = 0;
     for (auto e : view) {
         auto &con = view.template get<component>(e);
+        // The program may have written the constraint's fields since make_constraint checked them.
+        try {
+            validate_constraint(con);
+        } catch (const std::invalid_argument &error) {
+            throw detail::entity_refusal(e, "step: constraint entity ",
+                                         std::string(", changed after it was made: ") + error.what());
+        }
         constraint_body_indices indices{body_index_of(body_index, con.body[0]),
                                         body_index_of(body_index, con.body[1])};
         // Neither body moves this step (both static, or asleep): nothing to solve.

@@ -1,9 +1,13 @@
 #include "simulation_worker.hpp"
 #include "clock.hpp"
+#include "edyn/constraints/constraint_base.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/simulation/step.hpp"
 #include "edyn/simulation/world.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include <exception>
+#include <stdexcept>
+#include <string>
 
 namespace edyn {
 
@@ -138,6 +142,12 @@ void worker_context::step_once() {
 void worker_context::step(bool motion, bool contacts) {
     try {
         run_step(reg);
+    } catch (const detail::entity_refusal &refusal) {
+        // A refusal names the main registry's entity, as the sequential modes would.
+        auto main = main_of(refusal.subject);
+        auto named = main == null ? refusal.subject : main;
+        message.errors.push_back(std::make_exception_ptr(
+            std::invalid_argument(refusal.before + std::to_string(to_index(named)) + refusal.after)));
     } catch (...) {
         // A step callback threw: the main thread rethrows it from update(). The step stops
         // where it threw; the worker goes on with the next.

@@ -186,3 +186,30 @@ TEST(hinge_validation, rejects_inverted_limits_and_skewed_frames) {
     EXPECT_EQ(reg.alive(), alive);
     detach(reg);
 }
+
+TEST_F(hinge_joint, values_written_after_make_constraint_are_checked_by_the_step) {
+    // A restitution of 5 would make every limit hit five times faster: the step refuses it,
+    // naming the field and the entity, and keeps refusing until it is put right.
+    make_hinged(bar_def(), [](hinge_constraint &h) {
+        h.angle_min = -scalar(0.5);
+        h.angle_max = scalar(0.5);
+    });
+    edyn::test::step(reg);
+    reg.patch<hinge_constraint>(joint, [](hinge_constraint &h) { h.limit_restitution = 5; });
+    auto expected = "constraint entity " + std::to_string(to_index(joint));
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        try {
+            edyn::test::step(reg);
+            ADD_FAILURE() << "a limit restitution of 5 was accepted";
+        } catch (const std::invalid_argument &error) {
+            std::string what = error.what();
+            EXPECT_NE(what.find("limit_restitution"), std::string::npos) << what;
+            EXPECT_NE(what.find(expected), std::string::npos) << what;
+        }
+    }
+    reg.patch<hinge_constraint>(joint, [](hinge_constraint &h) { h.limit_restitution = scalar(0.5); });
+    EXPECT_NO_THROW(edyn::test::step(reg));
+    // An empty range written later is refused too.
+    reg.patch<hinge_constraint>(joint, [](hinge_constraint &h) { h.angle_min = 1; });
+    EXPECT_THROW(edyn::test::step(reg), std::invalid_argument);
+}

@@ -4,7 +4,9 @@
 #include "edyn/constraints/constraint_row.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/math/matrix3x3.hpp"
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace edyn {
 
@@ -14,6 +16,22 @@ namespace edyn {
 /// @tparam T The constraint component.
 template<typename T>
 inline constexpr const char *constraint_type_name = "constraint";
+
+namespace detail {
+
+// A refusal that names an entity by its index: thrown in the asynchronous worker, it is given
+// to the main thread naming the main registry's entity instead of the worker's.
+struct entity_refusal : std::invalid_argument {
+    entity subject;
+    std::string before, after; // the message is before + index + after
+    entity_refusal(entity e, std::string before_, std::string after_)
+        : std::invalid_argument(before_ + std::to_string(to_index(e)) + after_)
+        , subject(e)
+        , before(std::move(before_))
+        , after(std::move(after_)) {}
+};
+
+} // namespace detail
 
 /// Throws std::invalid_argument with the message "make_constraint<type>: field what".
 /// The validate functions of every constraint report a bad field through it, so that all their
