@@ -224,6 +224,25 @@ void broadphase::destroy_separated(registry &registry, task_scheduler *scheduler
     }
 }
 
+void broadphase::refilter_all(registry &registry, should_collide_func_t filter) {
+    // The pairs the new filter refuses, destroyed in the order of their keys.
+    std::vector<std::uint64_t> keys;
+    for (auto &rec : records)
+        if (!filter(registry, rec.body[0], rec.body[1])) keys.push_back(pair_key(rec.body[0], rec.body[1]));
+    std::sort(keys.begin(), keys.end());
+    for (auto key : keys) {
+        if (auto *index = record_of_pair.find(key)) destroy_record(registry, *index);
+    }
+    // Overlapping pairs the old filter refused have no record: every proxy searches again.
+    for (auto *proxies : {&dynamic_proxies, &static_proxies}) {
+        for (auto &p : *proxies) {
+            if (p.queued) continue;
+            p.queued = true;
+            queue.push_back(p.body);
+        }
+    }
+}
+
 void broadphase::search_pairs(const pair_search &search, std::vector<new_pair> &out) const {
     auto fat = tree_of(search.is_static).get_fat_aabb(search.node);
     for (int t = 0; t < (search.is_static ? 1 : 2); ++t) {
@@ -347,6 +366,10 @@ void broadphase::move_proxies(registry &registry, task_scheduler *scheduler, mot
 void broadphase::update(registry &registry, task_scheduler *scheduler, motion_estimator estimate) {
     EDYN_ASSERT(!updating, "broadphase::update: called recursively");
     update_guard guard(updating);
+    if (auto filter = get_should_collide(registry); filter != filtered_with) {
+        if (filtered_with != nullptr) refilter_all(registry, filter);
+        filtered_with = filter;
+    }
     move_proxies(registry, scheduler, estimate);
 
     reinserted.resize(trees[0].capacity());

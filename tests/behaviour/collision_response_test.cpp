@@ -197,6 +197,31 @@ TEST_F(filtering, changing_the_filter_of_a_resting_body_at_run_time_drops_it_thr
         << "ball at " << pos(ball).y << ", expected free fall";
 }
 
+TEST_F(filtering, a_new_should_collide_applies_to_resting_pairs_and_the_default_comes_back) {
+    auto ball = drop_ball(0);
+    auto control = drop_ball(2);
+    run_for(2);
+    ASSERT_TRUE(landed(ball)) << "ball at " << pos(ball).y;
+    ASSERT_EQ(manifold_count(ball), 1u);
+
+    reg.emplace<ghost>(ball);
+    register_external_components<ghost>(reg);
+    set_should_collide(reg, &no_ghosts);
+    wake_up_entity(reg, ball);
+    run_for(scalar(0.25));
+    EXPECT_EQ(manifold_count(ball), 0u) << "the resting pair kept its contact under the new function";
+    auto sunk = pos(ball).y;
+    EXPECT_LT(sunk, r - scalar(0.2)) << "ball at " << sunk << ", expected it to fall";
+    EXPECT_TRUE(landed(control)) << "control ball at " << pos(control).y;
+
+    // Back to the default while the ball is still in the ground's box: the pair is found again
+    // and the ground pushes the ball back out.
+    reset_should_collide(reg);
+    run_for(2);
+    EXPECT_EQ(manifold_count(ball), 1u);
+    EXPECT_GT(pos(ball).y, sunk + scalar(0.2)) << "ball at " << pos(ball).y << ", from " << sunk;
+}
+
 TEST_F(filtering, excluding_a_resting_pair_at_run_time_drops_it_through) {
     auto ball = drop_ball(0);
     run_for(2);

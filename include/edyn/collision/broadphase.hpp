@@ -194,6 +194,7 @@ private:
     void destroy_record(registry &registry, std::size_t index);
     void move_proxies(registry &registry, task_scheduler *scheduler, motion_estimator estimate);
     void destroy_separated(registry &registry, task_scheduler *scheduler);
+    void refilter_all(registry &registry, should_collide_func_t filter);
     void destroy_pairs_of(registry &registry, entity e, bool is_static, AABB fat,
                           should_collide_func_t keep_if);
     void collect_new_pairs(task_scheduler *scheduler);
@@ -223,6 +224,9 @@ private:
     std::vector<pair_search> searches;
     std::vector<std::vector<new_pair>> found;
     bool updating{false};
+    // The filter the pairs were made with (null before the first update): when the registry's
+    // changes, every pair is asked again.
+    should_collide_func_t filtered_with{nullptr};
 };
 
 template<typename Fn>

@@ -38,7 +38,9 @@ void exclude_collision(registry &registry, entity first, entity second);
 /// Replaces the function the broadphase asks whether two bodies may collide.
 ///
 /// The function is stored in the registry's context and asked once per pair, when the pair's AABBs
-/// start overlapping; pairs that already overlap are not asked again. In asynchronous mode it is
+/// start overlapping, and about every overlapping pair at the next step after the function
+/// changes (here or through reset_should_collide): pairs it refuses then lose their manifolds,
+/// overlapping pairs it accepts get one. In asynchronous mode it is
 /// copied to the simulation worker and called there, on the worker's thread, with the worker's
 /// registry (from the next update()).
 /// @param registry The registry whose filter is replaced.

@@ -241,6 +241,46 @@ TEST_F(broadphase_fixture, custom_should_collide_is_asked_once_per_new_pair) {
     EXPECT_EQ(custom_calls, 3);
 }
 
+bool never(const edyn::registry &, entity, entity) { return false; }
+
+TEST_F(broadphase_fixture, a_new_should_collide_is_asked_about_every_overlapping_pair) {
+    auto a = make_body(cube({0, 0, 0}));
+    auto b = make_body(cube({0.5f, 0, 0}));
+    auto c = make_body(cube({0, 0.5f, 0}));
+    auto ground = make_body(cube({0, -0.5f, 0}), true);
+    bp.update(registry);
+    ASSERT_EQ(bp.num_manifolds(), 6u);
+    auto ab = bp.get_manifold(a, b);
+
+    // Nothing moves. The new function keeps a-b (the same manifold) and drops the rest.
+    registry.emplace<body_tag>(a);
+    registry.emplace<body_tag>(b);
+    edyn::set_should_collide(registry, &only_tagged);
+    custom_calls = 0;
+    bp.update(registry);
+    EXPECT_EQ(bp.num_manifolds(), 1u);
+    EXPECT_EQ(manifold_components(), 1u);
+    EXPECT_EQ(bp.get_manifold(a, b), ab);
+    EXPECT_EQ(bp.get_manifold(c, ground), entity{edyn::null});
+    EXPECT_GE(custom_calls, 6);
+    // The same function again asks nobody.
+    edyn::set_should_collide(registry, &only_tagged);
+    custom_calls = 0;
+    bp.update(registry);
+    EXPECT_EQ(custom_calls, 0);
+
+    edyn::set_should_collide(registry, &never);
+    bp.update(registry);
+    EXPECT_EQ(bp.num_manifolds(), 0u);
+
+    // Back to the default: the pairs both functions refused are found again, static ones too.
+    edyn::reset_should_collide(registry);
+    bp.update(registry);
+    EXPECT_EQ(bp.num_manifolds(), 6u);
+    EXPECT_EQ(manifold_components(), 6u);
+    EXPECT_TRUE(registry.valid(bp.get_manifold(c, ground)));
+}
+
 TEST_F(broadphase_fixture, refilter_applies_filter_changes) {
     auto a = make_body(cube({0, 0, 0}));
     auto b = make_body(cube({0.5f, 0, 0}));
