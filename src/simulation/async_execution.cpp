@@ -30,21 +30,21 @@ namespace {
 struct replicated_tag {};
 
 template<typename... Components>
-struct component_list {};
+struct main_component_list {};
 
 // edyn's components that travel to the worker, in an order in which a body's parts arrive
 // before the tag that makes it a body and before its AABB, and bodies before constraints (so
 // that bodies made before attach() are sent in an order the worker's listeners accept).
 using replicated_components =
-    component_list<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
-                   compound_shape, mesh_shape, paged_mesh_shape, shape_index, position, orientation, linvel,
-                   angvel, gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
-                   rigidbody_dynamic_mass, material, collision_filter, collision_exclusion, sensor_tag,
-                   sleeping_disabled_tag, dynamic_tag, static_tag, kinematic_tag, rigidbody_tag, AABB,
-                   external_tag>;
+    main_component_list<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
+                        compound_shape, mesh_shape, paged_mesh_shape, shape_index, position, orientation,
+                        linvel, angvel, gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv,
+                        center_of_mass, rigidbody_dynamic_mass, material, collision_filter,
+                        collision_exclusion, sensor_tag, sleeping_disabled_tag, dynamic_tag, static_tag,
+                        kinematic_tag, rigidbody_tag, AABB, external_tag>;
 
 template<typename... Components, typename... Constraints>
-std::vector<detail::replicated_type> edyn_types(component_list<Components...>,
+std::vector<detail::replicated_type> edyn_types(main_component_list<Components...>,
                                                 constraint_type_list<Constraints...>) {
     return {detail::make_replicated_type<Components, true>()...,
             detail::make_replicated_type<Constraints, true>()...};
@@ -76,8 +76,8 @@ void on_destroy_body(registry &registry, entity e) {
     registry.remove<previous_transform>(e);
 }
 
-void on_construct_static(registry &registry, entity e) { registry.remove<previous_transform>(e); }
-void on_destroy_static(registry &registry, entity e) {
+void main_on_construct_static(registry &registry, entity e) { registry.remove<previous_transform>(e); }
+void main_on_destroy_static(registry &registry, entity e) {
     // An entity being destroyed may have lost its transform already (pools go newest first).
     if (!registry.destroying(e) && registry.all_of<rigidbody_tag, position, orientation>(e)) {
         registry.emplace_or_replace<previous_transform>(e, registry.get<position>(e),
@@ -87,35 +87,36 @@ void on_destroy_static(registry &registry, entity e) {
 
 // A body the program changes wakes (with its island, in the worker): it is shown awake here
 // at once.
-void on_update_wake(registry &registry, entity e) { registry.remove<sleeping_tag>(e); }
+void main_on_update_wake(registry &registry, entity e) { registry.remove<sleeping_tag>(e); }
 
 // A teleport is not interpolated.
-void on_update_transform(registry &registry, entity e) {
+void main_on_update_transform(registry &registry, entity e) {
     if (auto *prev = registry.try_get<previous_transform>(e))
         *prev = {registry.get<position>(e), registry.get<orientation>(e)};
-    on_update_wake(registry, e);
+    main_on_update_wake(registry, e);
 }
 
 // The components whose change wakes a body in the worker (registry_listeners.cpp).
-using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
-                                         plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
-                                         polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
+using waking_components =
+    main_component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape,
+                        sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
+                        compound_shape, mesh_shape, paged_mesh_shape>;
 
 template<typename... Components>
-void connect_wake(registry &registry, component_list<Components...>, bool connect) {
+void connect_wake(registry &registry, main_component_list<Components...>, bool connect) {
     if (connect)
-        (registry.on_update<Components>().template connect<&on_update_wake>(), ...);
+        (registry.on_update<Components>().template connect<&main_on_update_wake>(), ...);
     else
-        (registry.on_update<Components>().template disconnect<&on_update_wake>(), ...);
+        (registry.on_update<Components>().template disconnect<&main_on_update_wake>(), ...);
 }
 
 template<typename T>
-void on_construct_constraint(registry &registry, entity e) {
+void main_on_construct_constraint(registry &registry, entity e) {
     auto &con = registry.get<T>(e);
     link_constraint(registry, e, con.body[0], con.body[1]);
 }
 
-void on_destroy_constraint(registry &registry, entity e) { release_constraint(registry, e); }
+void main_on_destroy_constraint(registry &registry, entity e) { release_constraint(registry, e); }
 void on_destroy_links(registry &registry, entity e) { unlink_constraint(registry, e); }
 
 void on_destroy_replicated(registry &registry, entity e) {
@@ -129,12 +130,13 @@ void connect_main_listeners(registry &registry, constraint_type_list<Constraints
     if (connect) {
         registry.on_construct<rigidbody_tag>().connect<&on_construct_body>();
         registry.on_destroy<rigidbody_tag>().connect<&on_destroy_body>();
-        registry.on_construct<static_tag>().connect<&on_construct_static>();
-        registry.on_destroy<static_tag>().connect<&on_destroy_static>();
-        registry.on_update<position>().connect<&on_update_transform>();
-        registry.on_update<orientation>().connect<&on_update_transform>();
-        (registry.on_construct<Constraints>().template connect<&on_construct_constraint<Constraints>>(), ...);
-        (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint>(), ...);
+        registry.on_construct<static_tag>().connect<&main_on_construct_static>();
+        registry.on_destroy<static_tag>().connect<&main_on_destroy_static>();
+        registry.on_update<position>().connect<&main_on_update_transform>();
+        registry.on_update<orientation>().connect<&main_on_update_transform>();
+        (registry.on_construct<Constraints>().template connect<&main_on_construct_constraint<Constraints>>(),
+         ...);
+        (registry.on_destroy<Constraints>().template connect<&main_on_destroy_constraint>(), ...);
         registry.on_destroy<constraint_links>().connect<&on_destroy_links>();
         registry.on_destroy<constraint_list>().connect<&destroy_constraints_of>();
         registry.on_destroy<external_tag>().connect<&destroy_constraints_of>();
@@ -144,13 +146,14 @@ void connect_main_listeners(registry &registry, constraint_type_list<Constraints
         connect_wake(registry, waking_components{}, false);
         registry.on_construct<rigidbody_tag>().disconnect<&on_construct_body>();
         registry.on_destroy<rigidbody_tag>().disconnect<&on_destroy_body>();
-        registry.on_construct<static_tag>().disconnect<&on_construct_static>();
-        registry.on_destroy<static_tag>().disconnect<&on_destroy_static>();
-        registry.on_update<position>().disconnect<&on_update_transform>();
-        registry.on_update<orientation>().disconnect<&on_update_transform>();
-        (registry.on_construct<Constraints>().template disconnect<&on_construct_constraint<Constraints>>(),
+        registry.on_construct<static_tag>().disconnect<&main_on_construct_static>();
+        registry.on_destroy<static_tag>().disconnect<&main_on_destroy_static>();
+        registry.on_update<position>().disconnect<&main_on_update_transform>();
+        registry.on_update<orientation>().disconnect<&main_on_update_transform>();
+        (registry.on_construct<Constraints>()
+             .template disconnect<&main_on_construct_constraint<Constraints>>(),
          ...);
-        (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint>(), ...);
+        (registry.on_destroy<Constraints>().template disconnect<&main_on_destroy_constraint>(), ...);
         registry.on_destroy<constraint_links>().disconnect<&on_destroy_links>();
         registry.on_destroy<constraint_list>().disconnect<&destroy_constraints_of>();
         registry.on_destroy<external_tag>().disconnect<&destroy_constraints_of>();
@@ -172,7 +175,7 @@ void adopt_main_side(registry &registry, constraint_type_list<Constraints...>) {
         for (auto e : registry.view<constraint>())
             entities.push_back(e);
         for (auto e : entities)
-            on_construct_constraint<constraint>(registry, e);
+            main_on_construct_constraint<constraint>(registry, e);
     };
     (link_all(static_cast<Constraints *>(nullptr)), ...);
 }
