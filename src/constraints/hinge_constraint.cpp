@@ -21,11 +21,12 @@ void validate_constraint(const hinge_constraint &c) {
     check_constraint_finite(type, "pivot[1]", c.pivot[1]);
     check_constraint_orthonormal(type, "frame[0]", c.frame[0]);
     check_constraint_orthonormal(type, "frame[1]", c.frame[1]);
-    // Infinite limits are allowed (no limit); NaN and an empty range are not.
-    if (std::isnan(c.angle_min) || std::isnan(c.angle_max) || c.angle_min > c.angle_max) {
+    // Infinite limits are allowed (no limit); NaN, an empty range and a single angle are not
+    // (a hinge that must not turn is a generic constraint with its angular axes locked).
+    if (!(c.angle_min < c.angle_max)) {
         throw_constraint_error(type, "angle_min",
-                               "must not exceed angle_max, got " + std::to_string(c.angle_min) + " > " +
-                                   std::to_string(c.angle_max));
+                               "must be smaller than angle_max, got " + std::to_string(c.angle_min) +
+                                   " and " + std::to_string(c.angle_max));
     }
     check_constraint_unit_interval(type, "limit_restitution", c.limit_restitution);
     check_constraint_non_negative(type, "friction_torque", c.friction_torque);

@@ -183,6 +183,10 @@ TEST(hinge_validation, rejects_inverted_limits_and_skewed_frames) {
                  std::invalid_argument);
     EXPECT_THROW(make_constraint<hinge_constraint>(reg, a, b, [](hinge_constraint &h) { h.stiffness = -1; }),
                  std::invalid_argument);
+    // The manual's rule: angle_min smaller than angle_max, so equal limits are refused too.
+    EXPECT_THROW(make_constraint<hinge_constraint>(
+                     reg, a, b, [](hinge_constraint &h) { h.angle_min = h.angle_max = 0.3f; }),
+                 std::invalid_argument);
     EXPECT_EQ(reg.alive(), alive);
     detach(reg);
 }

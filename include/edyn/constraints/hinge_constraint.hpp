@@ -24,10 +24,10 @@ struct hinge_constraint {
     /// the second measures the hinge angle (the third completes the basis). Default: identity,
     /// so the hinge axis is each body's x axis.
     matrix3x3 frame[2]{matrix3x3_identity, matrix3x3_identity};
-    /// Lower limit of the hinge angle (radians); infinite for a free hinge. angle_min <= angle_max.
+    /// Lower limit of the hinge angle (radians); infinite for a free hinge. angle_min < angle_max.
     /// Default: minus infinity (no lower limit).
     scalar angle_min{-std::numeric_limits<scalar>::infinity()};
-    /// Upper limit of the hinge angle (radians), not below `angle_min`; default: infinity (no
+    /// Upper limit of the hinge angle (radians), above `angle_min`; default: infinity (no
     /// upper limit).
     scalar angle_max{std::numeric_limits<scalar>::infinity()};
     /// Restitution of a limit in [0, 1]: the share of the approach speed a limit hit faster than
@@ -83,10 +83,10 @@ template<>
 inline constexpr const char *constraint_type_name<hinge_constraint> = "hinge_constraint";
 
 /// Checks the fields a user sets; make_constraint() calls it before creating the constraint.
-/// Equal limits are accepted, and infinite ones mean no limit.
+/// Infinite limits mean no limit; angle_min must be smaller than angle_max.
 /// @param c The constraint to check.
 /// @throws std::invalid_argument When a pivot is not finite; a frame is not orthonormal; a limit
-/// is NaN or `angle_min > angle_max`; `limit_restitution` is outside [0, 1]; `friction_torque`,
+/// is NaN or `angle_min >= angle_max`; `limit_restitution` is outside [0, 1]; `friction_torque`,
 /// `damping`, `bump_stop_angle`, `bump_stop_stiffness` or `stiffness` is negative or not
 /// finite; or `rest_angle` is not finite.
 void validate_constraint(const hinge_constraint &c);
