@@ -181,6 +181,7 @@ struct run_figures {
 
 void add_stats(edyn::simulated_link_stats &sum, const edyn::simulated_link_stats &s) {
     sum.packets_sent += s.packets_sent;
+    sum.bytes_sent += s.bytes_sent;
     sum.packets_lost += s.packets_lost;
     sum.packets_duplicated += s.packets_duplicated;
     sum.packets_reordered += s.packets_reordered;
@@ -435,6 +436,7 @@ void run_convergence(const options &opt, results &out) {
         {"driven steps whose applied input differs from the clean link's", "%", "", 0, {}},
         {"input snapshots that reached the server after their time", "packets", "", 0, {}},
         {"client view error over the clean link, max", "cm", "", 0, {}},
+        {"server → client, per client", "kbit/s", "", 0, {}},
     };
     auto compared = std::size_t{0};
     for (unsigned run = 0; run < opt.repeat; ++run) {
@@ -445,6 +447,7 @@ void run_convergence(const options &opt, results &out) {
         auto clean = run_once(opt, run, false);
         if (lossy.all_errors.empty()) throw std::runtime_error("edyn-netbench: no client ever saw a body");
         auto paths = compare_paths(lossy, clean);
+        auto kbits_per_client = double(lossy.down.bytes_sent) * 8 / 1000 / opt.seconds / opt.clients;
         auto values = std::vector<double>{max_of(lossy.all_errors) * 100,
                                           percentile(lossy.all_errors, 0.99) * 100,
                                           median(lossy.all_errors) * 100,
@@ -458,7 +461,8 @@ void run_convergence(const options &opt, results &out) {
                                           paths.first_apart,
                                           paths.inputs_differ * 100,
                                           double(lossy.late_inputs),
-                                          max_of(clean.all_errors) * 100};
+                                          max_of(clean.all_errors) * 100,
+                                          kbits_per_client};
         for (std::size_t i = 0; i < figures.size(); ++i)
             figures[i].runs.push_back(values[i]);
         compared = lossy.all_errors.size();

@@ -87,11 +87,30 @@ void request_unknown(registry &registry, client_context &ctx, const std::vector<
     if (!request.entities.empty()) ctx.packet_signal.publish({std::move(request)});
 }
 
+// Whether every forwarded entry decodes to inputs only, at a time within the longest playout
+// delay of the snapshot's (the server forwards what waits in its jitter buffers: inputs due
+// within a playout delay, and late ones it has yet to apply).
+enum class forwarded_check { ok, malformed, out_of_range };
+forwarded_check check_forwarded(const network_registry &types, const packet::registry_snapshot &snapshot) {
+    for (auto &entry : snapshot.inputs) {
+        auto pools = decode_pools(types, entry.pools, entry.entities.size());
+        if (!pools || !std::isfinite(entry.timestamp)) return forwarded_check::malformed;
+        for (auto &pool : *pools)
+            if (!types.types[pool->component_index].input) return forwarded_check::malformed;
+        if (!(entry.timestamp >= snapshot.timestamp - max_playout_delay &&
+              entry.timestamp <= snapshot.timestamp + max_playout_delay))
+            return forwarded_check::out_of_range;
+    }
+    return forwarded_check::ok;
+}
+
 void receive_snapshot(registry &registry, client_context &ctx, const packet::registry_snapshot &snapshot) {
     auto &types = registry.ctx().get<network_registry>();
     auto pools = decode_pools(types, snapshot.pools, snapshot.entities.size());
     if (!pools || !std::isfinite(snapshot.timestamp)) return;
-    if (!plausible_server_time(snapshot.timestamp) ||
+    auto forwarded = check_forwarded(types, snapshot);
+    if (forwarded == forwarded_check::malformed) return;
+    if (forwarded == forwarded_check::out_of_range || !plausible_server_time(snapshot.timestamp) ||
         (ctx.synchronised && snapshot.timestamp > client_time(registry, ctx) + max_snapshot_lead)) {
         rejections(registry).out_of_range += 1;
         return;
@@ -125,6 +144,12 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
             if (cached.local == e && cached.time >= snapshot.timestamp) continue;
             cached = {e, snapshot.timestamp, values.values[i]};
         }
+    }
+    // The newest snapshot's forwarded inputs go with the motion the extrapolation starts from.
+    if (snapshot.timestamp >= ctx.pending_time) {
+        ctx.forwarded.clear();
+        for (auto &entry : snapshot.inputs)
+            ctx.forwarded.push_back({entry.timestamp, entry.entities, entry.pools, 0});
     }
     if (snapshot.timestamp > ctx.pending_time) {
         ctx.pending_time = snapshot.timestamp;
@@ -223,7 +248,7 @@ void send_inputs(client_context &ctx) {
     for (auto &entry : ctx.inputs) {
         if (entry.sends_left <= 0) continue;
         --entry.sends_left;
-        ctx.packet_signal.publish({packet::registry_snapshot{entry.time, entry.entities, entry.pools}});
+        ctx.packet_signal.publish({packet::registry_snapshot{entry.time, entry.entities, entry.pools, {}}});
     }
 }
 

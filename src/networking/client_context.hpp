@@ -109,6 +109,9 @@ struct client_context {
     };
     std::vector<recorded_input> inputs;
     double last_input_record{-std::numeric_limits<double>::infinity()};
+    // Other clients' inputs the newest snapshot forwarded (packet::registry_snapshot::inputs),
+    // oldest first: the extrapolation applies them at their times.
+    std::vector<recorded_input> forwarded;
 
     std::uint64_t decay_step{0};
 

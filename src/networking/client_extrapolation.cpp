@@ -71,6 +71,16 @@ void start_extrapolation(registry &registry, client_context &ctx, network_regist
     input->remote_to_local = ctx.remote_to_local;
     for (auto &entry : ctx.inputs)
         input->inputs.push_back(decode_local(types, to_local(ctx, entry.entities), entry.pools, entry.time));
+    // Other clients' inputs, which the server forwarded with the snapshot: the client's own
+    // entities are left out of them (the recorded inputs are the client's word on those).
+    for (auto &entry : ctx.forwarded) {
+        auto entities = to_local(ctx, entry.entities);
+        for (auto &e : entities)
+            if (ctx.authored.contains(e)) e = null;
+        input->inputs.push_back(decode_local(types, std::move(entities), entry.pools, entry.time));
+    }
+    std::stable_sort(input->inputs.begin(), input->inputs.end(),
+                     [](const decoded_packet &a, const decoded_packet &b) { return a.time < b.time; });
     input->start_time = input->snapshot.time;
     // The client steps while the job runs: it aims at the time the client will be at when it
     // merges the result.

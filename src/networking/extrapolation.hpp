@@ -3,7 +3,8 @@
 
 // A client's extrapolation: the server's state of some bodies, which is in the past when it
 // arrives, simulated forward to the client's present in a registry of its own, with the
-// client's world around them and its recorded inputs re-applied at the times they were made.
+// client's world around them, its recorded inputs re-applied at the times they were made and
+// the other clients' inputs the server forwarded applied at the times the server applies them.
 // Everything it reads is copied in, so that it can run on another thread.
 
 #include "edyn/ecs/entity_map.hpp"
@@ -33,8 +34,8 @@ struct extrapolation_input {
     // remote_to_local).
     decoded_packet snapshot;
     entity_map remote_to_local;
-    // The client's inputs, oldest first: those up to start_time set the state it starts from
-    // (entities of members: the server's).
+    // The client's inputs and the other clients' forwarded ones, oldest first: the client's up
+    // to start_time set the state it starts from (entities of members: the server's).
     std::vector<decoded_packet> inputs;
     double start_time{};
     double end_time{};

@@ -30,6 +30,9 @@ constexpr std::uint8_t rest_refresh = 4;
 // A client's jitter buffer holds at most this many snapshots; a client sending faster than the
 // server applies loses its oldest ones.
 constexpr std::size_t max_buffered_snapshots = 128;
+// Most inputs of other clients one snapshot forwards (a client's jitter buffer holds a playout
+// delay's worth of its inputs, one per step at most).
+constexpr std::size_t max_forwarded_inputs = 256;
 // Most entities one entity_request may ask for.
 constexpr std::size_t max_requested_entities = 1024;
 // Lost packets in a row that an input survives: its copies go a frame apart, and the playout
@@ -52,9 +55,11 @@ struct buffered_snapshot {
     double timestamp;
     std::vector<entity> entities;
     std::vector<std::unique_ptr<detail::decoded_pool>> pools;
+    // Its input pools as they came, forwarded to the other clients until it is applied.
+    std::vector<packet::pool_snapshot> input_pools;
     // Whether it carries inputs (state, applied in time order) or only actions (each entry
     // applied once whenever it comes) and nothing else.
-    bool inputs;
+    bool has_inputs() const noexcept { return !input_pools.empty(); }
 };
 
 // The server's record of a client, on its entity next to remote_client.
@@ -333,6 +338,25 @@ bool motion_is_news(server_client_state &state, entity e, const std::vector<std:
     return true;
 }
 
+// The other clients' inputs that wait in their jitter buffers, for the client's extrapolation:
+// they are known here a playout delay before they apply, while the snapshot's values of them are
+// those at its time. Only inputs whose entities the client has all go; they are dropped from the
+// buffers as they are applied, so none is older than the snapshot by more than a late packet.
+void forward_inputs(const registry &registry, entity client, const server_client_state &state,
+                    packet::registry_snapshot &snapshot) {
+    for (auto [other, other_state] : registry.view<server_client_state>().each()) {
+        if (other == client) continue;
+        for (auto &buffered : other_state.jitter_buffer) {
+            if (buffered.input_pools.empty()) continue;
+            if (snapshot.inputs.size() >= max_forwarded_inputs) return;
+            auto known = std::all_of(buffered.entities.begin(), buffered.entities.end(),
+                                     [&](entity e) { return state.known.contains(e); });
+            if (known)
+                snapshot.inputs.push_back({buffered.timestamp, buffered.entities, buffered.input_pools});
+        }
+    }
+}
+
 void send_snapshot(registry &registry, server_context &ctx, const network_registry &types, entity client,
                    const remote_client &rc, server_client_state &state) {
     auto now = get_simulation_time(registry);
@@ -357,6 +381,7 @@ void send_snapshot(registry &registry, server_context &ctx, const network_regist
     auto snapshot = packet::registry_snapshot{};
     snapshot.timestamp = now;
     writer.finish(snapshot.entities, snapshot.pools);
+    forward_inputs(registry, client, state, snapshot);
     send(registry, ctx, client, {std::move(snapshot)});
 }
 
@@ -383,7 +408,7 @@ void apply_due_snapshots(registry &registry, server_client_state &state, double 
     for (std::size_t i = 0; i < due; ++i) {
         auto &snapshot = state.jitter_buffer[i];
         apply_pools(registry, types, snapshot.pools, snapshot.entities, {});
-        if (snapshot.inputs) state.last_applied = snapshot.timestamp;
+        if (snapshot.has_inputs()) state.last_applied = snapshot.timestamp;
     }
     state.jitter_buffer.erase(state.jitter_buffer.begin(), state.jitter_buffer.begin() + std::ptrdiff_t(due));
 }
@@ -426,7 +451,8 @@ void send_asset_state(registry &registry, server_context &ctx, entity client, re
 
 void receive_snapshot(registry &registry, entity client, remote_client &rc, server_client_state &state,
                       const packet::registry_snapshot &snapshot) {
-    if (!std::isfinite(snapshot.timestamp)) {
+    // Forwarded inputs are the server's to send.
+    if (!std::isfinite(snapshot.timestamp) || !snapshot.inputs.empty()) {
         rc.rejected.malformed += 1;
         return;
     }
@@ -455,18 +481,18 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
             }
         }
     }
-    auto inputs = false;
-    for (auto &pool : *pools)
-        inputs |= types.types[pool->component_index].input;
+    auto input_pools = std::vector<packet::pool_snapshot>{};
+    for (std::size_t i = 0; i < pools->size(); ++i)
+        if (types.types[(*pools)[i]->component_index].input) input_pools.push_back(snapshot.pools[i]);
     auto &buffer = state.jitter_buffer;
     auto at = std::upper_bound(buffer.begin(), buffer.end(), snapshot.timestamp,
                                [](double t, const buffered_snapshot &s) { return t < s.timestamp; });
-    if (inputs) {
+    if (!input_pools.empty()) {
         // A copy of inputs applied (clients repeat their inputs), or inputs older than some
         // applied, which must not undo them.
         if (snapshot.timestamp <= state.last_applied) return;
         for (auto it = buffer.begin(); it != buffer.end(); ++it)
-            if (it->inputs && it->timestamp == snapshot.timestamp) return; // a copy
+            if (it->has_inputs() && it->timestamp == snapshot.timestamp) return; // a copy
     }
     // Client times fall on the server's steps: a snapshot is late when its step has run (a copy
     // of inputs already applied was dropped above). How early the newest snapshots arrive keeps
@@ -499,7 +525,8 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
             state.playout_margin = std::max(state.playout_margin, needed);
         }
     }
-    buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools), inputs});
+    buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools),
+                                        std::move(input_pools)});
     if (buffer.size() > max_buffered_snapshots) buffer.erase(buffer.begin());
     (void)client;
 }

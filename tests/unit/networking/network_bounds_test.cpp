@@ -209,6 +209,72 @@ TEST(network_bounds, snapshots_from_far_in_the_past_or_future_are_refused) {
     EXPECT_TRUE(std::isfinite(get_network_client_time(c.reg)));
 }
 
+// Another client's input, as a server forwards it: a push along x, applied by a step callback.
+struct push : network_input {
+    vector3 force{vector3_zero};
+};
+template<typename Archive>
+void serialize(Archive &archive, push &p) {
+    archive(p.force);
+}
+void apply_push(registry &registry) {
+    for (auto [e, p, v, m] : registry.view<push, linvel, mass>().each())
+        v += p.force * (get_fixed_dt(registry) / m.s);
+}
+
+// Forwarded inputs must decode to inputs, at times within a playout delay of the snapshot;
+// otherwise the whole snapshot is dropped (a time out of range is counted). Accepted ones act
+// in the extrapolation only: the client's own copy of the body never gets the input.
+TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
+    lone_client c;
+    register_external_components<push>(c.reg);
+    register_networked_components<push>(c.reg);
+    set_pre_step_callback(c.reg, &apply_push);
+    set_gravity(c.reg, vector3_zero);
+    auto remote = remote_entities(1);
+    auto body_index = network_index_of<rigidbody_def>(c.reg);
+    auto push_index = network_index_of<push>(c.reg);
+    c.receive(
+        {packet::create_entity{0, remote, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    ASSERT_TRUE(is_body(c, remote[0]));
+    c.frame();
+    c.receive({packet::time_response{1, get_simulation_time(c.reg)}});
+    c.frame();
+    auto local = client_local_entity(c.reg, remote[0]);
+    auto at_rest = network_motion{{0, 3, 0}, quaternion_identity, vector3_zero, vector3_zero};
+    auto snapshot_with = [&](packet::timed_inputs forwarded) {
+        auto snapshot = packet::registry_snapshot{};
+        snapshot.timestamp = get_network_client_time(c.reg) - 0.05;
+        snapshot.entities = remote;
+        snapshot.pools.push_back(make_pool<network_motion>(network_index::motion, {{0, at_rest}}));
+        snapshot.inputs.push_back(std::move(forwarded));
+        return snapshot;
+    };
+    auto run = [&] {
+        for (int i = 0; i < 10; ++i)
+            c.frame();
+    };
+    auto pushed = make_pool<push>(push_index, {{0, push{{}, {100, 0, 0}}}});
+
+    // A body instead of an input: dropped, so the body stays where it was made.
+    auto time = get_network_client_time(c.reg) - 0.04;
+    c.receive(
+        {snapshot_with({time, remote, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 5, 0})}})}})});
+    // Times an hour away, and not a time.
+    for (auto t : {time + 3600, time - 3600, std::numeric_limits<double>::quiet_NaN()})
+        c.receive({snapshot_with({t, remote, {pushed}})});
+    EXPECT_EQ(c.rejected().out_of_range, 2u);
+    run();
+    EXPECT_NEAR(c.reg.get<position>(local).y, 1, 1e-4) << "a dropped snapshot moved the body";
+
+    // Accepted: the extrapolation starts at the snapshot's motion and pushes from the input's time.
+    c.receive({snapshot_with({get_network_client_time(c.reg) - 0.04, remote, {pushed}})});
+    run();
+    EXPECT_NEAR(c.reg.get<position>(local).y, 3, 1e-3);
+    EXPECT_GT(c.reg.get<linvel>(local).x, scalar(1)) << "the forwarded push did not act";
+    EXPECT_FALSE(c.reg.all_of<push>(local)) << "a forwarded input was applied to the client's registry";
+}
+
 // The extrapolation's step count is capped before it is converted: a start far in the past is
 // max_extrapolation_steps, not whatever an overflowing conversion gives.
 TEST(network_bounds, an_extrapolation_from_far_in_the_past_runs_its_most_steps) {

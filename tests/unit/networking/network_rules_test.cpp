@@ -186,6 +186,12 @@ TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
     EXPECT_EQ(r.malformed, before.malformed + 1);
     r = send_raw(snapshot_of(mine, 9999, steering{{}, 1.0f}));
     EXPECT_EQ(r.malformed, before.malformed + 2);
+    // Inputs forwarded as the server forwards other clients' ones: the server's to send.
+    auto forwarding = snapshot_of(mine, steering_index, steering{{}, 1.0f});
+    auto &forwarded = std::get<packet::registry_snapshot>(forwarding.var);
+    forwarded.inputs.push_back({forwarded.timestamp, forwarded.entities, forwarded.pools});
+    r = send_raw(forwarding);
+    EXPECT_EQ(r.malformed, before.malformed + 3);
     // Packets only the server sends.
     r = send_raw({packet::create_entity{}});
     r = send_raw({packet::server_settings{}});

@@ -23,7 +23,10 @@ constexpr auto packet_kinds = std::variant_size_v<packet::edyn_packet_variant>;
 // round-trip test does not compile.
 auto fields(const packet::pool_snapshot &p) { return std::tie(p.component_index, p.data); }
 auto fields(const packet::entered_asset &p) { return std::tie(p.asset_entity, p.id, p.members); }
-auto fields(const packet::registry_snapshot &p) { return std::tie(p.timestamp, p.entities, p.pools); }
+auto fields(const packet::timed_inputs &p) { return std::tie(p.timestamp, p.entities, p.pools); }
+auto fields(const packet::registry_snapshot &p) {
+    return std::tie(p.timestamp, p.entities, p.pools, p.inputs);
+}
 auto fields(const packet::create_entity &p) { return std::tie(p.timestamp, p.entities, p.pools); }
 auto fields(const packet::destroy_entity &p) { return std::tie(p.timestamp, p.entities); }
 auto fields(const packet::entity_entered &p) { return std::tie(p.assets); }
@@ -157,6 +160,12 @@ TEST(packet_roundtrip, registry_snapshot_fields) {
     EXPECT_EQ(snapshot->pools[1].component_index, 513);
     EXPECT_EQ(snapshot->pools[0].data, (std::vector<std::uint8_t>{1, 2, 3, 200}));
     EXPECT_TRUE(snapshot->pools[2].data.empty());
+    ASSERT_EQ(snapshot->inputs.size(), 2u);
+    EXPECT_EQ(snapshot->inputs[0].timestamp, 12.75);
+    EXPECT_EQ(snapshot->inputs[0].entities, (std::vector<entity>{make_entity(9, 3)}));
+    ASSERT_EQ(snapshot->inputs[0].pools.size(), 1u);
+    EXPECT_EQ(snapshot->inputs[0].pools[0].component_index, 4);
+    EXPECT_EQ(snapshot->inputs[1].pools.size(), 3u);
 }
 
 TEST(packet_roundtrip, settings_and_assets_fields) {

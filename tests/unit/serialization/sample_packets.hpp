@@ -29,6 +29,7 @@ inline void fill(packet::registry_snapshot &p) {
     p.timestamp = 12.5;
     p.entities = sample_entities();
     p.pools = sample_pools();
+    p.inputs = {{12.75, {make_entity(9, 3)}, {{4, {0, 17, 250}}}}, {13.5, sample_entities(), sample_pools()}};
 }
 
 inline void fill(packet::create_entity &p) {

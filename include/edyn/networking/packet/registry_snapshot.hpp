@@ -7,6 +7,21 @@
 
 namespace edyn::packet {
 
+/// Inputs of one client as it sent them, with the server time at which the server applies them.
+struct timed_inputs {
+    double timestamp{};               ///< Server simulation time at which they apply.
+    std::vector<entity> entities;     ///< The entities the pools refer to, by position (the server's).
+    std::vector<pool_snapshot> pools; ///< The input values, one pool per component type.
+};
+
+/// Writes or reads a timed_inputs.
+/// @param archive A memory_output_archive or memory_input_archive.
+/// @param inputs The inputs to write from or read into.
+template<typename Archive>
+void serialize(Archive &archive, timed_inputs &inputs) {
+    archive(inputs.timestamp, inputs.entities, inputs.pools);
+}
+
 /// Both ways: entities and the networked components of theirs that changed recently, as they
 /// were at `timestamp`. Sent many times per second through an unreliable channel.
 struct registry_snapshot {
@@ -15,6 +30,11 @@ struct registry_snapshot {
     double timestamp{};
     std::vector<entity> entities;     ///< The entities the pools refer to, by position (the server's).
     std::vector<pool_snapshot> pools; ///< The changed values, one pool per component type.
+    /// Server to client only: inputs of other clients that the server holds in its jitter buffer,
+    /// to apply at steps after `timestamp`, oldest first. The client's extrapolation applies them
+    /// at their times instead of holding those clients' inputs at their values at `timestamp`.
+    /// A client must leave it empty.
+    std::vector<timed_inputs> inputs;
 };
 
 /// Writes or reads a registry_snapshot.
@@ -22,7 +42,7 @@ struct registry_snapshot {
 /// @param snapshot The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, registry_snapshot &snapshot) {
-    archive(snapshot.timestamp, snapshot.entities, snapshot.pools);
+    archive(snapshot.timestamp, snapshot.entities, snapshot.pools, snapshot.inputs);
 }
 
 } // namespace edyn::packet
