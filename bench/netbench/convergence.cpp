@@ -315,8 +315,10 @@ path_comparison compare_paths(const run_figures &a, const run_figures &b) {
 // ran on. A client with exact snapshots and every input can extrapolate no better: contact
 // points, their impulses, ages and order, and sleep timers are not carried. With `contacts` the
 // rebuilt world also starts with the original's contact points as they were (what no snapshot
-// carries): what is then left is the rounding's share. Rebuilt every third step after the first
-// second; metres, one value per body and rebuild.
+// carries): what is then left is the rounding's share. With `driven` the boxes are driven by the
+// clients' scripts in both worlds, every input known at its step: what is left is what the
+// scene's collisions make of the rebuild alone. Rebuilt every third step after the first second;
+// metres, one value per body and rebuild.
 struct motion_record {
     edyn::vector3 position, linvel, angvel;
     edyn::quaternion orientation;
@@ -337,7 +339,17 @@ void seed_contacts(edyn::registry &rebuilt, const std::vector<edyn::contact_mani
     }
 }
 
-std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool quantised, bool contacts) {
+// Sets each driven box's drive to its script's force at `time`, as the server applies the
+// inputs stamped with it, waking the box as an input does.
+void drive_by_script(edyn::registry &registry, const std::vector<edyn::entity> &driven, double time) {
+    for (unsigned i = 0; i < driven.size(); ++i) {
+        registry.emplace_or_replace<drive>(driven[i], drive{{}, scripted_force(i, time)});
+        if (registry.all_of<edyn::sleeping_tag>(driven[i])) edyn::wake_up_entity(registry, driven[i]);
+    }
+}
+
+std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool quantised, bool contacts,
+                                   bool driven) {
     auto make_world = [&](edyn::registry &registry) {
         edyn::attach(registry, edyn::init_config{edyn::execution_mode::sequential});
         setup_registry(registry);
@@ -361,9 +373,15 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
     auto first = std::size_t(std::llround(settle_time / dt));
     auto rebuilt_at = [&](std::size_t k) { return k >= first && (k - first) % 3 == 0; };
     auto history = std::vector<std::vector<motion_record>>{record(original, bodies)};
+    // The driven boxes are the last of the bodies.
+    auto boxes_of = [&](const std::vector<edyn::entity> &all) {
+        return std::vector<edyn::entity>(all.end() - std::ptrdiff_t(opt.clients), all.end());
+    };
+    auto boxes = boxes_of(bodies);
     // The manifolds with points at each step a world is rebuilt at.
     auto touching = std::vector<std::vector<edyn::contact_manifold>>(steps + 1);
     for (std::size_t k = 1; k <= steps; ++k) {
+        if (driven) drive_by_script(original, boxes, double(k - 1) * dt);
         edyn::step_simulation(original);
         history.push_back(record(original, bodies));
         if (!contacts || !rebuilt_at(k)) continue;
@@ -398,8 +416,11 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
             rebuilt.replace<edyn::angvel>(copies[i], m.angvel);
         }
         if (contacts) seed_contacts(rebuilt, touching[k]);
-        for (unsigned h = 0; h < horizon; ++h)
+        auto copied_boxes = boxes_of(copies);
+        for (unsigned h = 0; h < horizon; ++h) {
+            if (driven) drive_by_script(rebuilt, copied_boxes, double(k + h) * dt);
             edyn::step_simulation(rebuilt);
+        }
         for (std::size_t i = 0; i < copies.size(); ++i)
             errors.push_back(double(
                 edyn::length(rebuilt.get<edyn::position>(copies[i]) - history[k + horizon][i].position)));
@@ -495,12 +516,16 @@ void run_convergence(const options &opt, results &out) {
         unsigned horizon;
         bool quantised;
         bool contacts;
+        bool driven;
     };
-    for (auto c : {floor_case{6, false, false}, floor_case{12, false, false}, floor_case{12, true, false},
-                   floor_case{12, false, true}, floor_case{12, true, true}}) {
-        auto errors = rebuild_errors(opt, c.horizon, c.quantised, c.contacts);
+    for (auto c : {floor_case{6, false, false, false}, floor_case{12, false, false, false},
+                   floor_case{12, true, false, false}, floor_case{12, false, true, false},
+                   floor_case{12, true, true, false}, floor_case{12, false, false, true},
+                   floor_case{12, true, false, true}, floor_case{12, false, true, true}}) {
+        auto errors = rebuild_errors(opt, c.horizon, c.quantised, c.contacts, c.driven);
         if (errors.empty()) continue;
-        auto name = std::string("world rebuilt from ") + (c.quantised ? "quantised" : "exact") + " motion" +
+        auto name = std::string(c.driven ? "driven " : "") + "world rebuilt from " +
+                    (c.quantised ? "quantised" : "exact") + " motion" +
                     (c.contacts ? " and the original's contact points" : "") + " vs the original, " +
                     std::to_string(c.horizon) + " steps on, ";
         figures.push_back({name + "max", "cm", "", 0, {max_of(errors) * 100}});
