@@ -182,17 +182,22 @@ TEST(network_bounds, playout_delays_and_times_out_of_range_are_refused) {
     EXPECT_NEAR(get_network_client_time(c.reg) - get_simulation_time(c.reg), 0.1, 1.0 / 60 + 1e-9);
 }
 
+// Gives the client one box at (0, 1, 0), made for `remote`, and the server's clock, which is
+// the client's own.
+void give_box_and_clock(lone_client &c, entity remote) {
+    auto body_index = network_index_of<rigidbody_def>(c.reg);
+    c.receive({packet::create_entity{
+        0, {remote}, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    ASSERT_TRUE(is_body(c, remote));
+    c.frame();
+    c.receive({packet::time_response{1, get_simulation_time(c.reg)}});
+    c.frame();
+}
+
 TEST(network_bounds, snapshots_from_far_in_the_past_or_future_are_refused) {
     lone_client c;
     auto remote = remote_entities(1);
-    auto body_index = network_index_of<rigidbody_def>(c.reg);
-    c.receive(
-        {packet::create_entity{0, remote, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
-    ASSERT_TRUE(is_body(c, remote[0]));
-    c.frame();
-    // Synchronised: the server's clock is the client's.
-    c.receive({packet::time_response{1, get_simulation_time(c.reg)}});
-    c.frame();
+    give_box_and_clock(c, remote[0]);
     auto motion = network_motion{{0, 2, 0}, quaternion_identity, vector3_zero, vector3_zero};
     for (double t : {-1e300, 1e300, -1e12, 1e12, get_network_client_time(c.reg) + 3600}) {
         auto snapshot = packet::registry_snapshot{};
@@ -234,12 +239,7 @@ TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
     auto remote = remote_entities(1);
     auto body_index = network_index_of<rigidbody_def>(c.reg);
     auto push_index = network_index_of<push>(c.reg);
-    c.receive(
-        {packet::create_entity{0, remote, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
-    ASSERT_TRUE(is_body(c, remote[0]));
-    c.frame();
-    c.receive({packet::time_response{1, get_simulation_time(c.reg)}});
-    c.frame();
+    give_box_and_clock(c, remote[0]);
     auto local = client_local_entity(c.reg, remote[0]);
     auto at_rest = network_motion{{0, 3, 0}, quaternion_identity, vector3_zero, vector3_zero};
     auto snapshot_with = [&](packet::timed_inputs forwarded) {

@@ -74,6 +74,21 @@ struct server_history {
         auto p = it->second.find(e);
         return p == it->second.end() ? nullptr : &p->second;
     }
+    // The largest distance between a client's positions of `e` (at the client's times) and the
+    // server's at the same times, and how many had a server position to compare with (the
+    // client's time runs ahead of the record).
+    std::pair<scalar, int> worst_distance(const std::vector<std::pair<double, vector3>> &samples,
+                                          entity e) const {
+        auto worst = scalar(0);
+        auto compared = 0;
+        for (auto &[time, pos] : samples) {
+            auto *server_pos = at(time, e);
+            if (!server_pos) continue;
+            worst = std::max(worst, length(pos - *server_pos));
+            ++compared;
+        }
+        return {worst, compared};
+    }
 };
 
 TEST(network_session, entities_reach_the_client_with_their_shapes) {
@@ -166,6 +181,18 @@ TEST(network_session, inputs_reach_the_server_in_asynchronous_mode) {
     check_inputs(execution_mode::asynchronous);
 }
 
+// Runs the session for `seconds`, recording the server's positions and, each frame, the client's
+// time and its position of `local`.
+std::vector<std::pair<double, vector3>> run_and_sample(net_harness &h, server_history &history,
+                                                       registry &client, entity local, double seconds) {
+    auto samples = std::vector<std::pair<double, vector3>>{};
+    h.run(seconds, [&] {
+        history.record(h.server);
+        samples.emplace_back(get_network_client_time(client), client.get<position>(local));
+    });
+    return samples;
+}
+
 // A client extrapolates the server's state from the newest snapshot, which is older than the
 // moment the client set its input: the input must act from its own time on in the
 // extrapolation, as on the server, not from the snapshot's. (When the extrapolation took the
@@ -182,19 +209,8 @@ TEST(network_session, an_input_acts_from_its_own_time_in_the_client_s_extrapolat
     auto local = client_local_entity(c.reg, box);
     ASSERT_NE(local, entity{null});
     c.reg.emplace<thrust>(local, thrust{{}, {200, 0, 0}});
-    auto samples = std::vector<std::pair<double, vector3>>{};
-    h.run(1.5, [&] {
-        history.record(h.server);
-        samples.emplace_back(get_network_client_time(c.reg), c.reg.get<position>(local));
-    });
-    auto worst = scalar(0);
-    auto compared = 0;
-    for (auto &[time, pos] : samples) {
-        auto *server_pos = history.at(time, box);
-        if (!server_pos) continue; // the client's time runs ahead of the server's record
-        worst = std::max(worst, length(pos - *server_pos));
-        ++compared;
-    }
+    auto samples = run_and_sample(h, history, c.reg, local, 1.5);
+    auto [worst, compared] = history.worst_distance(samples, box);
     EXPECT_GT(compared, 60);
     EXPECT_GT(h.server.get<position>(box).x, scalar(2)) << "the server's box did not move";
     EXPECT_LT(worst, scalar(0.01))
@@ -225,19 +241,8 @@ void check_forwarded_input(execution_mode mode) {
     ASSERT_NE(driven, entity{null});
     ASSERT_NE(watched, entity{null});
     driver.reg.emplace<thrust>(driven, thrust{{}, {200, 0, 0}});
-    auto samples = std::vector<std::pair<double, vector3>>{};
-    h.run(1, [&] {
-        history.record(h.server);
-        samples.emplace_back(get_network_client_time(viewer.reg), viewer.reg.get<position>(watched));
-    });
-    auto worst = scalar(0);
-    auto compared = 0;
-    for (auto &[time, pos] : samples) {
-        auto *server_pos = history.at(time, theirs);
-        if (!server_pos) continue;
-        worst = std::max(worst, length(pos - *server_pos));
-        ++compared;
-    }
+    auto samples = run_and_sample(h, history, viewer.reg, watched, 1);
+    auto [worst, compared] = history.worst_distance(samples, theirs);
     EXPECT_GT(compared, 40);
     EXPECT_GT(h.server.get<position>(theirs).x, scalar(2)) << "the server's box did not move";
     EXPECT_LT(worst, scalar(0.04))
