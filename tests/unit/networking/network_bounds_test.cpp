@@ -227,9 +227,10 @@ void apply_push(registry &registry) {
         v += p.force * (get_fixed_dt(registry) / m.s);
 }
 
-// Forwarded inputs must decode to inputs, at times within a playout delay of the snapshot;
-// otherwise the whole snapshot is dropped (a time out of range is counted). Accepted ones act
-// in the extrapolation only: the client's own copy of the body never gets the input.
+// Forwarded inputs must decode to inputs, at times within the longest playout delay the client
+// accepts of the snapshot's; otherwise the whole snapshot is dropped (a time out of range is
+// counted). Accepted ones act in the extrapolation only: the client's own copy of the body never
+// gets the input.
 TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
     lone_client c;
     register_external_components<push>(c.reg);
