@@ -1,5 +1,6 @@
 #include "async_execution.hpp"
 #include "clock.hpp"
+#include "component_list.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/should_collide.hpp"
 #include "edyn/constraints/constraint_links.hpp"
@@ -29,22 +30,19 @@ namespace {
 // clears it with the listeners gone), so its removal means the entity is going away.
 struct replicated_tag {};
 
-template<typename... Components>
-struct main_component_list {};
-
 // edyn's components that travel to the worker, in an order in which a body's parts arrive
 // before the tag that makes it a body and before its AABB, and bodies before constraints (so
 // that bodies made before attach() are sent in an order the worker's listeners accept).
 using replicated_components =
-    main_component_list<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
-                        compound_shape, mesh_shape, paged_mesh_shape, shape_index, position, orientation,
-                        linvel, angvel, gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv,
-                        center_of_mass, rigidbody_dynamic_mass, material, collision_filter,
-                        collision_exclusion, sensor_tag, sleeping_disabled_tag, dynamic_tag, static_tag,
-                        kinematic_tag, rigidbody_tag, AABB, external_tag>;
+    component_list<plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
+                   compound_shape, mesh_shape, paged_mesh_shape, shape_index, position, orientation, linvel,
+                   angvel, gravity, mass, mass_inv, inertia, inertia_inv, inertia_world_inv, center_of_mass,
+                   rigidbody_dynamic_mass, material, collision_filter, collision_exclusion, sensor_tag,
+                   sleeping_disabled_tag, dynamic_tag, static_tag, kinematic_tag, rigidbody_tag, AABB,
+                   external_tag>;
 
 template<typename... Components, typename... Constraints>
-std::vector<detail::replicated_type> edyn_types(main_component_list<Components...>,
+std::vector<detail::replicated_type> edyn_types(component_list<Components...>,
                                                 constraint_type_list<Constraints...>) {
     return {detail::make_replicated_type<Components, true>()...,
             detail::make_replicated_type<Constraints, true>()...};
@@ -96,14 +94,8 @@ void main_on_update_transform(registry &registry, entity e) {
     main_on_update_wake(registry, e);
 }
 
-// The components whose change wakes a body in the worker (registry_listeners.cpp).
-using waking_components =
-    main_component_list<linvel, angvel, gravity, mass, inertia, material, shape_index, plane_shape,
-                        sphere_shape, cylinder_shape, capsule_shape, box_shape, polyhedron_shape,
-                        compound_shape, mesh_shape, paged_mesh_shape>;
-
 template<typename... Components>
-void connect_wake(registry &registry, main_component_list<Components...>, bool connect) {
+void connect_wake(registry &registry, component_list<Components...>, bool connect) {
     if (connect)
         (registry.on_update<Components>().template connect<&main_on_update_wake>(), ...);
     else

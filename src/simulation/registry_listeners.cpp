@@ -1,4 +1,5 @@
 #include "edyn/simulation/registry_listeners.hpp"
+#include "component_list.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/shape_epoch.hpp"
@@ -178,9 +179,6 @@ void on_change_filter(registry &registry, entity e) {
     }
 }
 
-template<typename... Components>
-struct component_list {};
-
 // Every component edyn puts on the program's entities.
 using edyn_components =
     component_list<rigidbody_tag, dynamic_tag, static_tag, kinematic_tag, sleeping_tag, sleeping_disabled_tag,
@@ -237,11 +235,6 @@ template<auto Fn, typename... Components>
 void disconnect_update(registry &registry, component_list<Components...>) {
     (registry.on_update<Components>().template disconnect<Fn>(), ...);
 }
-
-// Changes that must wake a sleeping body (besides its transform).
-using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
-                                         plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
-                                         polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
 
 // Changes after which contact points computed with the old geometry must not be reused.
 using shape_components =
