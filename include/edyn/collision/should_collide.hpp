@@ -40,9 +40,9 @@ void exclude_collision(registry &registry, entity first, entity second);
 /// The function is stored in the registry's context and asked once per pair, when the pair's AABBs
 /// start overlapping, and about every overlapping pair at the next step after the function
 /// changes (here or through reset_should_collide): pairs it refuses then lose their manifolds,
-/// overlapping pairs it accepts get one. In asynchronous mode it is
-/// copied to the simulation worker and called there, on the worker's thread, with the worker's
-/// registry (from the next update()).
+/// overlapping pairs it accepts get one. In asynchronous mode it is copied to the simulation
+/// worker and called there, on the worker's thread, with the worker's registry (from the next
+/// update()).
 /// @param registry The registry whose filter is replaced.
 /// @param func The new filter; see should_collide_func_t.
 /// @throws std::invalid_argument When `func` is null.
