@@ -104,6 +104,28 @@ forwarded_check check_forwarded(const network_registry &types, const packet::reg
     return forwarded_check::ok;
 }
 
+// The server forwards each of the other clients' inputs in a few snapshots: the client keeps one
+// copy of each, in time order, until a newer snapshot's motion holds its effect (it was applied
+// before the step that snapshot follows). An input of the snapshot's own step may have been applied
+// after the snapshot was made, so it stays for the extrapolation to apply at its start.
+void keep_forwarded(registry &registry, client_context &ctx, const packet::registry_snapshot &snapshot) {
+    using input = client_context::recorded_input;
+    auto &kept = ctx.forwarded;
+    for (auto &entry : snapshot.inputs) {
+        auto same = [&](const input &k) { return k.time == entry.timestamp && k.entities == entry.entities; };
+        if (std::any_of(kept.begin(), kept.end(), same)) continue;
+        auto before = [](double t, const input &k) { return t < k.time; };
+        auto at = std::upper_bound(kept.begin(), kept.end(), entry.timestamp, before);
+        kept.insert(at, {entry.timestamp, entry.entities, entry.pools, 0});
+    }
+    auto applied_before = std::max(ctx.pending_time, snapshot.timestamp) - double(get_fixed_dt(registry)) / 2;
+    auto applied = [&](const input &k) { return k.time < applied_before; };
+    kept.erase(kept.begin(), std::partition_point(kept.begin(), kept.end(), applied));
+    // Bounded against a server that forwards inputs far ahead of its snapshots: the oldest go.
+    if (kept.size() > max_kept_forwarded)
+        kept.erase(kept.begin(), kept.end() - std::ptrdiff_t(max_kept_forwarded));
+}
+
 void receive_snapshot(registry &registry, client_context &ctx, const packet::registry_snapshot &snapshot) {
     auto &types = registry.ctx().get<network_registry>();
     auto pools = decode_pools(types, snapshot.pools, snapshot.entities.size());
@@ -145,12 +167,7 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
             cached = {e, snapshot.timestamp, values.values[i]};
         }
     }
-    // The newest snapshot's forwarded inputs go with the motion the extrapolation starts from.
-    if (snapshot.timestamp >= ctx.pending_time) {
-        ctx.forwarded.clear();
-        for (auto &entry : snapshot.inputs)
-            ctx.forwarded.push_back({entry.timestamp, entry.entities, entry.pools, 0});
-    }
+    keep_forwarded(registry, ctx, snapshot);
     if (snapshot.timestamp > ctx.pending_time) {
         ctx.pending_time = snapshot.timestamp;
         ctx.has_pending = true;

@@ -45,6 +45,8 @@ inline constexpr long long max_carried_steps = 2;
 inline constexpr double max_server_time = 1e9;
 inline constexpr double max_snapshot_lead = 2;
 inline constexpr double max_playout_delay = 10;
+// Most forwarded inputs of other clients kept at once: twice the most a snapshot carries.
+inline constexpr std::size_t max_kept_forwarded = 512;
 
 struct client_context {
     network_client_packet_signal packet_signal;
@@ -109,8 +111,9 @@ struct client_context {
     };
     std::vector<recorded_input> inputs;
     double last_input_record{-std::numeric_limits<double>::infinity()};
-    // Other clients' inputs the newest snapshot forwarded (packet::registry_snapshot::inputs),
-    // oldest first: the extrapolation applies them at their times.
+    // Other clients' inputs the server forwarded (packet::registry_snapshot::inputs) and has not
+    // applied before the newest snapshot's step, oldest first: the extrapolation applies them at
+    // their times.
     std::vector<recorded_input> forwarded;
 
     std::uint64_t decay_step{0};

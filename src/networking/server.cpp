@@ -14,6 +14,7 @@
 #include "entity_set.hpp"
 #include "network_registry.hpp"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -33,6 +34,10 @@ constexpr std::size_t max_buffered_snapshots = 128;
 // Most inputs of other clients one snapshot forwards (a client's jitter buffer holds a playout
 // delay's worth of its inputs, one per step at most).
 constexpr std::size_t max_forwarded_inputs = 256;
+// A client's input goes to each other client in the first this many snapshots sent to it after
+// the input arrived (rather than in every one while it waits), so that one lost packet loses
+// none of them: the clients keep the inputs they were forwarded until the server applies them.
+constexpr std::size_t forward_repeats = 2;
 // Most entities one entity_request may ask for.
 constexpr std::size_t max_requested_entities = 1024;
 // Lost packets in a row that an input survives: its copies go a frame apart, and the playout
@@ -55,8 +60,10 @@ struct buffered_snapshot {
     double timestamp;
     std::vector<entity> entities;
     std::vector<std::unique_ptr<detail::decoded_pool>> pools;
-    // Its input pools as they came, forwarded to the other clients until it is applied.
+    // Its input pools as they came, forwarded to the other clients.
     std::vector<packet::pool_snapshot> input_pools;
+    // server_context::sequence when it arrived.
+    std::uint64_t arrival{0};
     // Whether it carries inputs (state, applied in time order) or only actions (each entry
     // applied once whenever it comes) and nothing else.
     bool has_inputs() const noexcept { return !input_pools.empty(); }
@@ -91,6 +98,9 @@ struct server_client_state {
         std::uint8_t skipped{0};
     };
     std::vector<sent_motion> sent;
+    // server_context::sequence at the last forward_repeats snapshots sent to the client, oldest
+    // first: an input that arrived after the oldest of them has not been forwarded that often.
+    std::array<std::uint64_t, forward_repeats> recent_sends{};
     // Whether the client was told who it is and the settings (at the first update after
     // server_make_client, so that the program knows the client's entity when its packets go).
     bool greeted{false};
@@ -104,6 +114,8 @@ struct server_context {
     // client needs them) and kept to reuse their memory.
     std::vector<std::pair<entity, AABB>> interest_boxes;
     bool boxes_ready{false};
+    // Counts the clients' inputs received and the snapshots sent, in the order they happen.
+    std::uint64_t sequence{0};
 };
 
 server_context &get_server(registry &registry, const char *function) {
@@ -340,14 +352,15 @@ bool motion_is_news(server_client_state &state, entity e, const std::vector<std:
 
 // The other clients' inputs that wait in their jitter buffers, for the client's extrapolation:
 // they are known here a playout delay before they apply, while the snapshot's values of them are
-// those at its time. Only inputs whose entities the client has all go; they are dropped from the
-// buffers as they are applied, so none is older than the snapshot by more than a late packet.
+// those at its time. Each goes in the first forward_repeats snapshots after it arrived, and only
+// if the client has all its entities; they are dropped from the buffers as they are applied, so
+// none is older than the snapshot by more than a late packet.
 void forward_inputs(const registry &registry, entity client, const server_client_state &state,
                     packet::registry_snapshot &snapshot) {
     for (auto [other, other_state] : registry.view<server_client_state>().each()) {
         if (other == client) continue;
         for (auto &buffered : other_state.jitter_buffer) {
-            if (buffered.input_pools.empty()) continue;
+            if (buffered.input_pools.empty() || buffered.arrival < state.recent_sends.front()) continue;
             if (snapshot.inputs.size() >= max_forwarded_inputs) return;
             auto known = std::all_of(buffered.entities.begin(), buffered.entities.end(),
                                      [&](entity e) { return state.known.contains(e); });
@@ -382,6 +395,8 @@ void send_snapshot(registry &registry, server_context &ctx, const network_regist
     snapshot.timestamp = now;
     writer.finish(snapshot.entities, snapshot.pools);
     forward_inputs(registry, client, state, snapshot);
+    std::shift_left(state.recent_sends.begin(), state.recent_sends.end(), 1);
+    state.recent_sends.back() = ++ctx.sequence;
     send(registry, ctx, client, {std::move(snapshot)});
 }
 
@@ -525,8 +540,9 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
             state.playout_margin = std::max(state.playout_margin, needed);
         }
     }
+    auto arrival = ++registry.ctx().get<server_context>().sequence;
     buffer.insert(at, buffered_snapshot{snapshot.timestamp, snapshot.entities, std::move(*pools),
-                                        std::move(input_pools)});
+                                        std::move(input_pools), arrival});
     if (buffer.size() > max_buffered_snapshots) buffer.erase(buffer.begin());
     (void)client;
 }

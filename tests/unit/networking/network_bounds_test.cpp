@@ -276,6 +276,49 @@ TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
     EXPECT_FALSE(c.reg.all_of<push>(local)) << "a forwarded input was applied to the client's registry";
 }
 
+// The server forwards each input in two snapshots: the client keeps it, so that it still acts in
+// extrapolations from later snapshots that do not carry it, until a snapshot from after its time
+// shows the server applied it.
+TEST(network_bounds, forwarded_inputs_are_kept_until_a_snapshot_from_after_their_time) {
+    lone_client c;
+    register_external_components<push>(c.reg);
+    register_networked_components<push>(c.reg);
+    set_pre_step_callback(c.reg, &apply_push);
+    set_gravity(c.reg, vector3_zero);
+    auto remote = remote_entities(1);
+    auto push_index = network_index_of<push>(c.reg);
+    give_box_and_clock(c, remote[0]);
+    auto local = client_local_entity(c.reg, remote[0]);
+    auto at_rest = network_motion{{0, 3, 0}, quaternion_identity, vector3_zero, vector3_zero};
+    auto snapshot_at = [&](double time) {
+        auto snapshot = packet::registry_snapshot{};
+        snapshot.timestamp = time;
+        snapshot.entities = remote;
+        snapshot.pools.push_back(make_pool<network_motion>(network_index::motion, {{0, at_rest}}));
+        return snapshot;
+    };
+    auto run = [&] {
+        for (int i = 0; i < 10; ++i)
+            c.frame();
+    };
+    auto now = get_network_client_time(c.reg);
+    auto forwarding = snapshot_at(now - 0.1);
+    auto input_time = now - 0.02;
+    forwarding.inputs.push_back(
+        {input_time, remote, {make_pool<push>(push_index, {{0, push{{}, {100, 0, 0}}}})}});
+    c.receive({forwarding});
+    c.receive({snapshot_at(now - 0.08)});
+    run();
+    EXPECT_GT(c.reg.get<linvel>(local).x, scalar(1)) << "the input an earlier snapshot forwarded did not act";
+
+    // After the input's time, the server's state holds it (here: no push at all), and the client
+    // no longer applies it.
+    c.receive({snapshot_at(input_time + 0.05)});
+    run();
+    EXPECT_NEAR(c.reg.get<linvel>(local).x, 0, 1e-4) << "an input older than the newest snapshot acted again";
+    EXPECT_NEAR(c.reg.get<position>(local).x, 0, 1e-3);
+}
+
 // The extrapolation's step count is capped before it is converted: a start far in the past is
 // max_extrapolation_steps, not whatever an overflowing conversion gives.
 TEST(network_bounds, an_extrapolation_from_far_in_the_past_runs_its_most_steps) {

@@ -5,6 +5,7 @@
 #include <edyn/networking/networked_components.hpp>
 #include <edyn/networking/remote_client.hpp>
 #include <gtest/gtest.h>
+#include <map>
 #include <mutex>
 
 namespace {
@@ -201,6 +202,48 @@ TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
     EXPECT_FLOAT_EQ(h.server.get<steering>(mine).angle, 0.25f) << "a refused packet changed the server";
     EXPECT_FALSE(h.server.all_of<steering>(theirs));
     EXPECT_EQ(h.server.get<health>(mine).value, 100);
+}
+
+// The snapshots sent to one client that forward each input of the others, by the input's time.
+struct forwarded_count {
+    entity client{null};
+    std::map<double, int> snapshots;
+    static void on_packet(forwarded_count &f, entity client, const packet::edyn_packet &packet) {
+        if (client != f.client) return;
+        if (auto *snapshot = std::get_if<packet::registry_snapshot>(&packet.var))
+            for (auto &entry : snapshot->inputs)
+                f.snapshots[entry.timestamp] += 1;
+    }
+};
+
+// A client's input waits in the server's jitter buffer for the playout delay less its way there,
+// several snapshot periods here, but goes to each other client in two snapshots only: one lost
+// packet loses none, and the clients keep what they were forwarded.
+TEST(network_rules, each_input_is_forwarded_to_the_other_clients_in_two_snapshots) {
+    net_harness h(&rules_setup);
+    auto theirs = rules_box(h.server, {0, 0, 0});
+    auto &viewer = h.add_client({.latency = 0.05});
+    auto &driver = h.add_client({.latency = 0.05});
+    h.server.get<remote_client>(driver.server_entity).owned_entities.push_back(theirs);
+    h.server.get<remote_client>(viewer.server_entity).snapshot_rate = 60;
+    h.run(1);
+    auto driven = client_local_entity(driver.reg, theirs);
+    ASSERT_NE(driven, entity{null});
+    auto count = forwarded_count{viewer.server_entity, {}};
+    network_server_packet_sink(h.server).connect<&forwarded_count::on_packet>(count);
+    driver.reg.emplace<steering>(driven);
+    auto frame = 0;
+    h.run(1, [&] {
+        if (++frame % 6 == 0) driver.reg.replace<steering>(driven, steering{{}, scalar(frame)});
+    });
+    h.run(0.5);
+    network_server_packet_sink(h.server).disconnect<&forwarded_count::on_packet>(count);
+    auto period = 1 / h.server.get<remote_client>(viewer.server_entity).snapshot_rate;
+    ASSERT_GT(h.server.get<remote_client>(driver.server_entity).playout_delay - 0.05, 3 * period)
+        << "the inputs wait for fewer snapshots than the test needs";
+    EXPECT_GE(count.snapshots.size(), 10u);
+    for (auto [time, snapshots] : count.snapshots)
+        EXPECT_EQ(snapshots, 2) << "the input of time " << time;
 }
 
 TEST(network_rules, random_bytes_never_crash_the_server) {

@@ -30,9 +30,10 @@ struct registry_snapshot {
     double timestamp{};
     std::vector<entity> entities;     ///< The entities the pools refer to, by position (the server's).
     std::vector<pool_snapshot> pools; ///< The changed values, one pool per component type.
-    /// Server to client only: inputs of other clients that the server holds in its jitter buffer,
-    /// to apply at steps after `timestamp`, oldest first. The client's extrapolation applies them
-    /// at their times instead of holding those clients' inputs at their values at `timestamp`.
+    /// Server to client only: inputs of other clients that wait in the server's jitter buffer to
+    /// apply at steps after `timestamp`, each in the two snapshots after it arrived. The client
+    /// keeps them until a snapshot from after their time, and its extrapolation applies them at
+    /// their times instead of holding those clients' inputs at their values at `timestamp`.
     /// A client must leave it empty.
     std::vector<timed_inputs> inputs;
 };
