@@ -227,34 +227,47 @@ void apply_push(registry &registry) {
         v += p.force * (get_fixed_dt(registry) / m.s);
 }
 
+// A client whose world knows pushes and has no gravity, with one box made for `remote`.
+void give_pushable_box(lone_client &c, entity remote) {
+    register_external_components<push>(c.reg);
+    register_networked_components<push>(c.reg);
+    set_pre_step_callback(c.reg, &apply_push);
+    set_gravity(c.reg, vector3_zero);
+    give_box_and_clock(c, remote);
+}
+
+// A server snapshot at `time` with the box at rest at (0, 3, 0).
+packet::registry_snapshot box_at_rest(const std::vector<entity> &remote, double time) {
+    auto snapshot = packet::registry_snapshot{};
+    snapshot.timestamp = time;
+    snapshot.entities = remote;
+    auto at_rest = network_motion{{0, 3, 0}, quaternion_identity, vector3_zero, vector3_zero};
+    snapshot.pools.push_back(make_pool<network_motion>(network_index::motion, {{0, at_rest}}));
+    return snapshot;
+}
+
+void run_frames(lone_client &c, int frames) {
+    for (int i = 0; i < frames; ++i)
+        c.frame();
+}
+
 // Forwarded inputs must decode to inputs, at times within the longest playout delay the client
 // accepts of the snapshot's; otherwise the whole snapshot is dropped (a time out of range is
 // counted). Accepted ones act in the extrapolation only: the client's own copy of the body never
 // gets the input.
 TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
     lone_client c;
-    register_external_components<push>(c.reg);
-    register_networked_components<push>(c.reg);
-    set_pre_step_callback(c.reg, &apply_push);
-    set_gravity(c.reg, vector3_zero);
     auto remote = remote_entities(1);
+    give_pushable_box(c, remote[0]);
     auto body_index = network_index_of<rigidbody_def>(c.reg);
     auto push_index = network_index_of<push>(c.reg);
-    give_box_and_clock(c, remote[0]);
     auto local = client_local_entity(c.reg, remote[0]);
-    auto at_rest = network_motion{{0, 3, 0}, quaternion_identity, vector3_zero, vector3_zero};
     auto snapshot_with = [&](packet::timed_inputs forwarded) {
-        auto snapshot = packet::registry_snapshot{};
-        snapshot.timestamp = get_network_client_time(c.reg) - 0.05;
-        snapshot.entities = remote;
-        snapshot.pools.push_back(make_pool<network_motion>(network_index::motion, {{0, at_rest}}));
+        auto snapshot = box_at_rest(remote, get_network_client_time(c.reg) - 0.05);
         snapshot.inputs.push_back(std::move(forwarded));
         return snapshot;
     };
-    auto run = [&] {
-        for (int i = 0; i < 10; ++i)
-            c.frame();
-    };
+    auto run = [&] { run_frames(c, 10); };
     auto pushed = make_pool<push>(push_index, {{0, push{{}, {100, 0, 0}}}});
 
     // A body instead of an input: dropped, so the body stays where it was made.
@@ -281,26 +294,12 @@ TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
 // shows the server applied it.
 TEST(network_bounds, forwarded_inputs_are_kept_until_a_snapshot_from_after_their_time) {
     lone_client c;
-    register_external_components<push>(c.reg);
-    register_networked_components<push>(c.reg);
-    set_pre_step_callback(c.reg, &apply_push);
-    set_gravity(c.reg, vector3_zero);
     auto remote = remote_entities(1);
+    give_pushable_box(c, remote[0]);
     auto push_index = network_index_of<push>(c.reg);
-    give_box_and_clock(c, remote[0]);
     auto local = client_local_entity(c.reg, remote[0]);
-    auto at_rest = network_motion{{0, 3, 0}, quaternion_identity, vector3_zero, vector3_zero};
-    auto snapshot_at = [&](double time) {
-        auto snapshot = packet::registry_snapshot{};
-        snapshot.timestamp = time;
-        snapshot.entities = remote;
-        snapshot.pools.push_back(make_pool<network_motion>(network_index::motion, {{0, at_rest}}));
-        return snapshot;
-    };
-    auto run = [&] {
-        for (int i = 0; i < 10; ++i)
-            c.frame();
-    };
+    auto snapshot_at = [&](double time) { return box_at_rest(remote, time); };
+    auto run = [&] { run_frames(c, 10); };
     auto now = get_network_client_time(c.reg);
     auto forwarding = snapshot_at(now - 0.1);
     auto input_time = now - 0.02;
