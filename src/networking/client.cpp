@@ -104,7 +104,7 @@ forwarded_check check_forwarded(const network_registry &types, const packet::reg
     return forwarded_check::ok;
 }
 
-// The server forwards each of the other clients' inputs in a few snapshots: the client keeps one
+// The server forwards each of the other clients' inputs in two snapshots: the client keeps one
 // copy of each, in time order, until a newer snapshot's motion holds its effect (it was applied
 // before the step that snapshot follows). An input of the snapshot's own step may have been applied
 // after the snapshot was made, so it stays for the extrapolation to apply at its start.
