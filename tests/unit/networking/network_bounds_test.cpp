@@ -267,7 +267,6 @@ TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
         snapshot.inputs.push_back(std::move(forwarded));
         return snapshot;
     };
-    auto run = [&] { run_frames(c, 10); };
     auto pushed = make_pool<push>(push_index, {{0, push{{}, {100, 0, 0}}}});
 
     // A body instead of an input: dropped, so the body stays where it was made.
@@ -278,12 +277,12 @@ TEST(network_bounds, forwarded_inputs_must_be_inputs_near_the_snapshot_s_time) {
     for (auto t : {time + 3600, time - 3600, std::numeric_limits<double>::quiet_NaN()})
         c.receive({snapshot_with({t, remote, {pushed}})});
     EXPECT_EQ(c.rejected().out_of_range, 2u);
-    run();
+    run_frames(c, 10);
     EXPECT_NEAR(c.reg.get<position>(local).y, 1, 1e-4) << "a dropped snapshot moved the body";
 
     // Accepted: the extrapolation starts at the snapshot's motion and pushes from the input's time.
     c.receive({snapshot_with({get_network_client_time(c.reg) - 0.04, remote, {pushed}})});
-    run();
+    run_frames(c, 10);
     EXPECT_NEAR(c.reg.get<position>(local).y, 3, 1e-3);
     EXPECT_GT(c.reg.get<linvel>(local).x, scalar(1)) << "the forwarded push did not act";
     EXPECT_FALSE(c.reg.all_of<push>(local)) << "a forwarded input was applied to the client's registry";
@@ -298,22 +297,20 @@ TEST(network_bounds, forwarded_inputs_are_kept_until_a_snapshot_from_after_their
     give_pushable_box(c, remote[0]);
     auto push_index = network_index_of<push>(c.reg);
     auto local = client_local_entity(c.reg, remote[0]);
-    auto snapshot_at = [&](double time) { return box_at_rest(remote, time); };
-    auto run = [&] { run_frames(c, 10); };
     auto now = get_network_client_time(c.reg);
-    auto forwarding = snapshot_at(now - 0.1);
+    auto forwarding = box_at_rest(remote, now - 0.1);
     auto input_time = now - 0.02;
     forwarding.inputs.push_back(
         {input_time, remote, {make_pool<push>(push_index, {{0, push{{}, {100, 0, 0}}}})}});
     c.receive({forwarding});
-    c.receive({snapshot_at(now - 0.08)});
-    run();
+    c.receive({box_at_rest(remote, now - 0.08)});
+    run_frames(c, 10);
     EXPECT_GT(c.reg.get<linvel>(local).x, scalar(1)) << "the input an earlier snapshot forwarded did not act";
 
     // After the input's time, the server's state holds it (here: no push at all), and the client
     // no longer applies it.
-    c.receive({snapshot_at(input_time + 0.05)});
-    run();
+    c.receive({box_at_rest(remote, input_time + 0.05)});
+    run_frames(c, 10);
     EXPECT_NEAR(c.reg.get<linvel>(local).x, 0, 1e-4) << "an input older than the newest snapshot acted again";
     EXPECT_NEAR(c.reg.get<position>(local).x, 0, 1e-3);
 }
