@@ -59,22 +59,11 @@ void triangle_mesh::append_coefficients(const std::vector<scalar> &values, std::
 
 namespace {
 
-// One triangle's edge, keyed by its vertices in increasing order.
-struct edge_use {
-    std::uint32_t lo, hi;
-    std::uint32_t triangle;
-    std::uint8_t edge;
-    bool forward; // The triangle runs the edge from lo to hi.
-};
+constexpr const char *initialize_name = "triangle_mesh::initialize";
 
-} // namespace
-
-void triangle_mesh::initialize() { initialize_with(nullptr); }
-
-void triangle_mesh::initialize(std::span<const std::uint8_t> active_edges) { initialize_with(&active_edges); }
-
-void triangle_mesh::initialize_with(const std::span<const std::uint8_t> *given_flags) {
-    const char *fn = "triangle_mesh::initialize";
+void check_mesh(const std::vector<vector3> &vertices, const std::vector<std::uint32_t> &indices,
+                const std::vector<scalar> &friction, const std::vector<scalar> &restitution) {
+    auto fn = initialize_name;
     if (vertices.empty()) throw_invalid_argument(fn, ": the mesh has no vertices");
     if (indices.empty()) throw_invalid_argument(fn, ": the mesh has no indices");
     if (indices.size() % 3 != 0) {
@@ -94,106 +83,148 @@ void triangle_mesh::initialize_with(const std::span<const std::uint8_t> *given_f
         throw_invalid_argument(fn, ": there must be one restitution coefficient per vertex (",
                                vertices.size(), "), got ", restitution.size());
     }
+}
 
-    // Drop triangles of no area, relative to the mesh's size.
+// The triangles of some area, relative to the mesh's size, and their normals.
+struct kept_triangles {
+    std::vector<std::uint32_t> indices;
+    std::vector<vector3> normals;
+    std::size_t dropped{0};
+};
+
+kept_triangles drop_degenerate_triangles(const std::vector<vector3> &vertices,
+                                         const std::vector<std::uint32_t> &indices) {
     AABB bounds{vertices[0], vertices[0]};
     for (const auto &v : vertices)
         bounds = {min(bounds.min, v), max(bounds.max, v)};
     auto size = length(bounds.max - bounds.min);
     auto min_double_area = scalar(1e-12) * size * size;
-    std::vector<std::uint32_t> kept;
-    std::vector<vector3> new_normals;
-    kept.reserve(indices.size());
-    new_normals.reserve(indices.size() / 3);
-    std::size_t dropped = 0;
+    kept_triangles kept;
+    kept.indices.reserve(indices.size());
+    kept.normals.reserve(indices.size() / 3);
     for (std::size_t t = 0; t < indices.size() / 3; ++t) {
         auto i0 = indices[t * 3], i1 = indices[t * 3 + 1], i2 = indices[t * 3 + 2];
         auto n = cross(vertices[i1] - vertices[i0], vertices[i2] - vertices[i0]);
         auto len = length(n);
         if (!(len > min_double_area) || i0 == i1 || i1 == i2 || i0 == i2) {
-            ++dropped;
+            ++kept.dropped;
             continue;
         }
-        kept.insert(kept.end(), {i0, i1, i2});
-        new_normals.push_back(n / len);
+        kept.indices.insert(kept.indices.end(), {i0, i1, i2});
+        kept.normals.push_back(n / len);
     }
-    if (kept.empty()) {
-        throw_invalid_argument(fn, ": all ", indices.size() / 3, " triangles have zero area");
+    if (kept.indices.empty()) {
+        throw_invalid_argument(initialize_name, ": all ", indices.size() / 3, " triangles have zero area");
     }
+    return kept;
+}
 
-    // Edge adjacency: sort every triangle's edges by their vertex pair.
-    auto num_tri = kept.size() / 3;
+// One triangle's edge, keyed by its vertices in increasing order.
+struct edge_use {
+    std::uint32_t lo, hi;
+    std::uint32_t triangle;
+    std::uint8_t edge;
+    bool forward; // The triangle runs the edge from lo to hi.
+};
+
+// Each triangle's neighbour across each of its edges, and which of its edges are active.
+struct edge_topology {
+    std::vector<std::uint32_t> adjacency;
+    std::vector<std::uint8_t> flags;
+};
+
+edge_topology find_edge_topology(const std::vector<vector3> &vertices, const kept_triangles &kept,
+                                 std::uint32_t no_triangle, scalar active_edge_cosine) {
+    // Every triangle's edges, sorted by their vertex pair.
+    auto num_tri = kept.indices.size() / 3;
     std::vector<edge_use> uses;
-    uses.reserve(kept.size());
+    uses.reserve(kept.indices.size());
     for (std::uint32_t t = 0; t < num_tri; ++t) {
         for (std::uint8_t e = 0; e < 3; ++e) {
-            auto a = kept[t * 3 + e], b = kept[t * 3 + (e + 1) % 3];
+            auto a = kept.indices[t * 3 + e], b = kept.indices[t * 3 + (e + 1) % 3];
             uses.push_back({std::min(a, b), std::max(a, b), t, e, a < b});
         }
     }
     std::sort(uses.begin(), uses.end(), [](const edge_use &x, const edge_use &y) {
         return std::tie(x.lo, x.hi, x.triangle, x.edge) < std::tie(y.lo, y.hi, y.triangle, y.edge);
     });
-    std::vector<std::uint32_t> new_adjacency(kept.size(), no_triangle);
-    std::vector<std::uint8_t> new_flags(num_tri, 0);
+    edge_topology topology{std::vector<std::uint32_t>(kept.indices.size(), no_triangle),
+                           std::vector<std::uint8_t>(num_tri, 0)};
+    auto &adjacency = topology.adjacency;
+    auto &flags = topology.flags;
     for (std::size_t i = 0; i < uses.size();) {
         auto j = i;
         while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi)
             ++j;
         if (j - i == 2) {
             const auto &u = uses[i], &v = uses[i + 1];
-            new_adjacency[u.triangle * 3 + u.edge] = v.triangle;
-            new_adjacency[v.triangle * 3 + v.edge] = u.triangle;
+            adjacency[u.triangle * 3 + u.edge] = v.triangle;
+            adjacency[v.triangle * 3 + v.edge] = u.triangle;
             // Consistently wound neighbours run the shared edge in opposite senses; otherwise the
             // fronts disagree and the edge stays active.
             bool active = u.forward == v.forward;
             if (!active) {
-                const auto &n_u = new_normals[u.triangle];
-                const auto &n_v = new_normals[v.triangle];
+                const auto &n_u = kept.normals[u.triangle];
+                const auto &n_v = kept.normals[v.triangle];
                 // The vertex of v off the edge lies behind u's plane when the edge is convex.
-                auto w = kept[v.triangle * 3 + (v.edge + 2) % 3];
+                auto w = kept.indices[v.triangle * 3 + (v.edge + 2) % 3];
                 auto d = dot(vertices[w] - vertices[u.lo], n_u);
                 bool convex = d < 0;
                 active = convex && dot(n_u, n_v) < active_edge_cosine;
             }
             if (active) {
-                new_flags[u.triangle] |= std::uint8_t(1u << u.edge);
-                new_flags[v.triangle] |= std::uint8_t(1u << v.edge);
+                flags[u.triangle] |= std::uint8_t(1u << u.edge);
+                flags[v.triangle] |= std::uint8_t(1u << v.edge);
             }
         } else {
             // Boundary (one triangle) or non-manifold (three or more): active.
             for (auto k = i; k < j; ++k)
-                new_flags[uses[k].triangle] |= std::uint8_t(1u << uses[k].edge);
+                flags[uses[k].triangle] |= std::uint8_t(1u << uses[k].edge);
         }
         i = j;
     }
+    return topology;
+}
+
+} // namespace
+
+void triangle_mesh::initialize() { initialize_with(nullptr); }
+
+void triangle_mesh::initialize(std::span<const std::uint8_t> active_edges) { initialize_with(&active_edges); }
+
+void triangle_mesh::initialize_with(const std::span<const std::uint8_t> *given_flags) {
+    check_mesh(vertices, indices, friction, restitution);
+    auto kept = drop_degenerate_triangles(vertices, indices);
+    auto topology = find_edge_topology(vertices, kept, no_triangle, active_edge_cosine);
+    auto num_tri = kept.normals.size();
 
     std::vector<AABB> aabbs(num_tri);
     for (std::size_t t = 0; t < num_tri; ++t) {
-        const auto &a = vertices[kept[t * 3]], &b = vertices[kept[t * 3 + 1]], &c = vertices[kept[t * 3 + 2]];
+        const auto &a = vertices[kept.indices[t * 3]], &b = vertices[kept.indices[t * 3 + 1]],
+                   &c = vertices[kept.indices[t * 3 + 2]];
         aabbs[t] = {min(min(a, b), c), max(max(a, b), c)};
     }
     tree.build(aabbs);
 
     if (given_flags) {
-        if (dropped > 0) {
-            throw_invalid_argument(fn, ": ", dropped,
+        if (kept.dropped > 0) {
+            throw_invalid_argument(initialize_name, ": ", kept.dropped,
                                    " triangles have zero area, which a page with given edge flags "
                                    "cannot drop");
         }
         if (given_flags->size() != num_tri) {
-            throw_invalid_argument(fn, ": there must be one set of edge flags per triangle (", num_tri,
-                                   "), got ", given_flags->size());
+            throw_invalid_argument(initialize_name, ": there must be one set of edge flags per triangle (",
+                                   num_tri, "), got ", given_flags->size());
         }
-        new_flags.assign(given_flags->begin(), given_flags->end());
+        topology.flags.assign(given_flags->begin(), given_flags->end());
     }
 
-    indices = std::move(kept);
-    normals = std::move(new_normals);
-    adjacency = std::move(new_adjacency);
-    edge_flags = std::move(new_flags);
+    indices = std::move(kept.indices);
+    normals = std::move(kept.normals);
+    adjacency = std::move(topology.adjacency);
+    edge_flags = std::move(topology.flags);
     triangle_aabbs = std::move(aabbs);
-    degenerate_count = dropped;
+    degenerate_count = kept.dropped;
     is_initialized = true;
 }
 

@@ -287,6 +287,124 @@ inline bool read_page(memory_input_archive &archive, triangle_mesh_page &page, s
     return true;
 }
 
+inline void write_paged_mesh(memory_output_archive &archive, const paged_mesh_shape &shape) {
+    using source = paged_mesh_source;
+    const auto *pages = shape.trimesh ? shape.trimesh->get_loader().memory_pages() : nullptr;
+    auto directory = shape.trimesh ? shape.trimesh->get_loader().page_directory() : std::string{};
+    auto kind = pages ? source::memory : !directory.empty() ? source::files : source::absent;
+    serialize_enum(archive, kind, source::files);
+    if (kind == source::absent) return;
+    const auto &mesh = *shape.trimesh;
+    auto lookahead = mesh.lookahead_time;
+    auto delay = mesh.unload_delay;
+    archive(lookahead, delay);
+    archive.write_size(mesh.num_pages());
+    for (std::size_t p = 0; p < mesh.num_pages(); ++p) {
+        auto aabb = mesh.get_page_aabb(p);
+        archive(aabb.min, aabb.max);
+        archive.write_size(mesh.num_page_triangles(p));
+    }
+    if (kind == source::files) {
+        archive(directory);
+        return;
+    }
+    for (const auto &page : *pages) {
+        write_array(archive, std::span<const vector3>(page.vertices));
+        write_array(archive, std::span<const std::uint32_t>(page.indices));
+        write_array(archive, std::span<const scalar>(page.friction));
+        write_array(archive, std::span<const scalar>(page.restitution));
+        write_array(archive, std::span<const std::uint8_t>(page.edge_flags));
+    }
+}
+
+// Each page's bounds and triangle count; false (and the archive failed) for bounds that are not
+// finite or not ordered.
+inline bool read_page_layout(memory_input_archive &archive, std::vector<AABB> &aabbs,
+                             std::vector<std::size_t> &counts) {
+    for (std::size_t p = 0; p < aabbs.size(); ++p) {
+        archive(aabbs[p].min, aabbs[p].max);
+        counts[p] = archive.read_size(max_serialized_page_triangles);
+        if (archive.failed()) return false;
+        const auto &lo = aabbs[p].min, &hi = aabbs[p].max;
+        if (!is_finite(lo) || !is_finite(hi) || lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) {
+            archive.fail();
+            return false;
+        }
+    }
+    return true;
+}
+
+// The loader of the pages as they travel (see paged_mesh_source); null (and the archive failed)
+// when they do not match `counts`.
+inline std::unique_ptr<triangle_mesh_page_loader> read_page_loader(memory_input_archive &archive,
+                                                                   paged_mesh_source kind,
+                                                                   const std::vector<std::size_t> &counts) {
+    if (kind == paged_mesh_source::files) {
+        auto size = archive.read_size(max_serialized_page_directory);
+        if (archive.failed()) return nullptr;
+        std::string directory(size, '\0');
+        archive.read_bytes(directory.data(), size);
+        if (archive.failed()) return nullptr;
+        if (directory.empty()) {
+            archive.fail();
+            return nullptr;
+        }
+        return open_file_page_loader(directory);
+    }
+    std::vector<triangle_mesh_page> pages(counts.size());
+    for (std::size_t p = 0; p < counts.size(); ++p) {
+        if (!read_page(archive, pages[p], counts[p])) return nullptr;
+    }
+    auto loader = make_memory_page_loader(std::move(pages));
+    // Every page once, as the peer's loads will build it: one the loader refuses would stay
+    // empty there, a hole in the terrain, so it fails the archive here.
+    for (std::size_t p = 0; p < counts.size(); ++p) {
+        auto page = loader->load(p);
+        if (!page || page->num_triangles() != counts[p]) {
+            archive.fail();
+            return nullptr;
+        }
+    }
+    return loader;
+}
+
+inline void read_paged_mesh(memory_input_archive &archive, paged_mesh_shape &shape) {
+    auto kind = paged_mesh_source::absent;
+    serialize_enum(archive, kind, paged_mesh_source::files);
+    if (archive.failed()) return;
+    if (kind == paged_mesh_source::absent) {
+        shape.trimesh.reset();
+        return;
+    }
+    scalar lookahead = 0;
+    std::uint32_t delay = 0;
+    archive(lookahead, delay);
+    // Each page takes at least two vectors and a count.
+    auto num_pages = archive.read_size(std::min(max_serialized_mesh_pages, archive.remaining() / 7));
+    if (archive.failed()) return;
+    if (!std::isfinite(lookahead) || lookahead < 0 || num_pages == 0) {
+        archive.fail();
+        return;
+    }
+    std::vector<AABB> aabbs(num_pages);
+    std::vector<std::size_t> counts(num_pages);
+    if (!read_page_layout(archive, aabbs, counts)) return;
+    auto loader = read_page_loader(archive, kind, counts);
+    if (!loader) {
+        archive.fail();
+        return;
+    }
+    try {
+        auto mesh =
+            std::make_shared<paged_triangle_mesh>(std::move(aabbs), std::move(counts), std::move(loader));
+        mesh->lookahead_time = lookahead;
+        mesh->unload_delay = delay;
+        shape.trimesh = std::move(mesh);
+    } catch (...) {
+        archive.fail();
+    }
+}
+
 } // namespace detail
 
 /// Writes or reads a paged mesh shape: its page layout (each page's bounds and triangle count,
@@ -310,102 +428,10 @@ inline bool read_page(memory_input_archive &archive, triangle_mesh_page &page, s
 /// @param shape The shape to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, paged_mesh_shape &shape) {
-    using source = detail::paged_mesh_source;
     if constexpr (Archive::is_output) {
-        const auto *pages = shape.trimesh ? shape.trimesh->get_loader().memory_pages() : nullptr;
-        auto directory = shape.trimesh ? shape.trimesh->get_loader().page_directory() : std::string{};
-        auto kind = pages ? source::memory : !directory.empty() ? source::files : source::absent;
-        serialize_enum(archive, kind, source::files);
-        if (kind == source::absent) return;
-        const auto &mesh = *shape.trimesh;
-        auto lookahead = mesh.lookahead_time;
-        auto delay = mesh.unload_delay;
-        archive(lookahead, delay);
-        archive.write_size(mesh.num_pages());
-        for (std::size_t p = 0; p < mesh.num_pages(); ++p) {
-            auto aabb = mesh.get_page_aabb(p);
-            archive(aabb.min, aabb.max);
-            archive.write_size(mesh.num_page_triangles(p));
-        }
-        if (kind == source::files) {
-            archive(directory);
-            return;
-        }
-        for (const auto &page : *pages) {
-            detail::write_array(archive, std::span<const vector3>(page.vertices));
-            detail::write_array(archive, std::span<const std::uint32_t>(page.indices));
-            detail::write_array(archive, std::span<const scalar>(page.friction));
-            detail::write_array(archive, std::span<const scalar>(page.restitution));
-            detail::write_array(archive, std::span<const std::uint8_t>(page.edge_flags));
-        }
+        detail::write_paged_mesh(archive, shape);
     } else {
-        auto kind = source::absent;
-        serialize_enum(archive, kind, source::files);
-        if (archive.failed()) return;
-        if (kind == source::absent) {
-            shape.trimesh.reset();
-            return;
-        }
-        scalar lookahead = 0;
-        std::uint32_t delay = 0;
-        archive(lookahead, delay);
-        // Each page takes at least two vectors and a count.
-        auto num_pages = archive.read_size(std::min(max_serialized_mesh_pages, archive.remaining() / 7));
-        if (archive.failed()) return;
-        if (!std::isfinite(lookahead) || lookahead < 0 || num_pages == 0) {
-            archive.fail();
-            return;
-        }
-        std::vector<AABB> aabbs(num_pages);
-        std::vector<std::size_t> counts(num_pages);
-        for (std::size_t p = 0; p < num_pages; ++p) {
-            archive(aabbs[p].min, aabbs[p].max);
-            counts[p] = archive.read_size(max_serialized_page_triangles);
-            if (archive.failed()) return;
-            const auto &lo = aabbs[p].min, &hi = aabbs[p].max;
-            if (!detail::is_finite(lo) || !detail::is_finite(hi) || lo.x > hi.x || lo.y > hi.y ||
-                lo.z > hi.z) {
-                archive.fail();
-                return;
-            }
-        }
-        std::unique_ptr<triangle_mesh_page_loader> loader;
-        if (kind == source::files) {
-            auto size = archive.read_size(max_serialized_page_directory);
-            if (archive.failed()) return;
-            std::string directory(size, '\0');
-            archive.read_bytes(directory.data(), size);
-            if (archive.failed()) return;
-            if (directory.empty()) {
-                archive.fail();
-                return;
-            }
-            loader = open_file_page_loader(directory);
-        } else {
-            std::vector<triangle_mesh_page> pages(num_pages);
-            for (std::size_t p = 0; p < num_pages; ++p) {
-                if (!detail::read_page(archive, pages[p], counts[p])) return;
-            }
-            loader = make_memory_page_loader(std::move(pages));
-            // Every page once, as the peer's loads will build it: one the loader refuses would
-            // stay empty there, a hole in the terrain, so it fails the archive here.
-            for (std::size_t p = 0; p < num_pages; ++p) {
-                auto page = loader->load(p);
-                if (!page || page->num_triangles() != counts[p]) {
-                    archive.fail();
-                    return;
-                }
-            }
-        }
-        try {
-            auto mesh =
-                std::make_shared<paged_triangle_mesh>(std::move(aabbs), std::move(counts), std::move(loader));
-            mesh->lookahead_time = lookahead;
-            mesh->unload_delay = delay;
-            shape.trimesh = std::move(mesh);
-        } catch (...) {
-            archive.fail();
-        }
+        detail::read_paged_mesh(archive, shape);
     }
 }
 
