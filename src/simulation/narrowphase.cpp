@@ -176,14 +176,9 @@ constexpr std::size_t bodies_per_task = 256;
 // itself twice as far ahead.
 constexpr std::size_t prefetch_distance = 8;
 
-} // namespace
-
-void run_narrowphase(registry &registry, world_state &world) {
-    auto &events = registry.ctx().emplace<contact_events>();
-    bool record = events.has_listeners();
-
-    // The manifolds of bodies awake, in the pool's order (oldest first where none was destroyed):
-    // the natural and reproducible order. With nothing asleep, that is the pool itself.
+// The manifolds of bodies awake, in the pool's order (oldest first where none was destroyed):
+// the natural and reproducible order. With nothing asleep, that is the pool itself.
+void list_awake_manifolds(registry &registry, world_state &world) {
     auto &manifold_pool = registry.storage<contact_manifold>();
     auto &sleeping = registry.storage<sleeping_tag>();
     const entity *pooled = manifold_pool.data();
@@ -223,8 +218,10 @@ void run_narrowphase(registry &registry, world_state &world) {
             ++next;
         }
     });
+}
 
-    // What the manifolds read of their bodies, body by body...
+// What the manifolds read of their bodies, body by body.
+void gather_collision_bodies(const registry &registry, world_state &world) {
     auto &proxies = world.broadphase;
     std::size_t index_bound = 0;
     for (std::size_t i = 0; i < proxies.num_proxies(); ++i)
@@ -241,9 +238,13 @@ void run_narrowphase(registry &registry, world_state &world) {
                      aabb = registry.get<AABB>(e);
                      world.collision_bodies[to_index(e)] = collision_body_of(registry, e, aabb);
                  });
+}
 
-    // ...then collision, each manifold on its own (in parallel when a scheduler is there), and
-    // the materials of its new points...
+// Collision, each manifold on its own (in parallel when a scheduler is there), and the materials
+// of its new points.
+void collide_manifolds(registry &registry, world_state &world) {
+    auto &manifold_pool = registry.storage<contact_manifold>();
+    auto num_manifolds = world.manifolds.size();
     auto dt = registry.ctx().get<settings>().fixed_dt;
     world.manifold_changes.resize(num_manifolds);
     world.manifold_live_slots.resize(num_manifolds);
@@ -280,12 +281,17 @@ void run_narrowphase(registry &registry, world_state &world) {
         world.manifold_live_slots[i] = live;
     };
     parallel_for(world.scheduler.get(), std::size_t(0), num_manifolds, manifolds_per_task, collide_one);
+}
 
-    // ...then, in the manifolds' order, the live slots for the next step's look-ahead and what
-    // the registry shares: events and islands. Only the manifolds whose points came or went
-    // have any of the latter, and a byte each says which those are: their changes, written on
-    // the other threads, are read for them alone.
-    for (std::size_t i = 0; i < num_manifolds; ++i) {
+// In the manifolds' order, the live slots for the next step's look-ahead and what the registry
+// shares: events and islands. Only the manifolds whose points came or went have any of the
+// latter, and a byte each says which those are: their changes, written on the other threads,
+// are read for them alone.
+void publish_changes(registry &registry, world_state &world) {
+    auto &events = registry.ctx().emplace<contact_events>();
+    bool record = events.has_listeners();
+    auto &manifold_pool = registry.storage<contact_manifold>();
+    for (std::size_t i = 0; i < world.manifolds.size(); ++i) {
         auto live = world.manifold_live_slots[i];
         world.pool_live_slots[world.manifold_slots[i]] = live & ~world_state::points_changed_bit;
         if (!(live & world_state::points_changed_bit)) continue;
@@ -300,6 +306,15 @@ void run_narrowphase(registry &registry, world_state &world) {
             world.islands.unlink_edge(registry, manifold_entity);
         }
     }
+}
+
+} // namespace
+
+void run_narrowphase(registry &registry, world_state &world) {
+    list_awake_manifolds(registry, world);
+    gather_collision_bodies(registry, world);
+    collide_manifolds(registry, world);
+    publish_changes(registry, world);
 }
 
 } // namespace edyn

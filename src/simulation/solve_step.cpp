@@ -222,13 +222,12 @@ void prefetch_gather_bodies(const registry &registry, const contact_manifold &ma
 
 } // namespace
 
-void gather_contacts(registry &registry, world_state &world) {
-    wake_bodies_on_moving_kinematics(registry, world);
-    auto *scheduler = world.scheduler.get();
+namespace {
 
-    // The manifolds are taken island by island, in the order of each island's edges. What each
-    // edge needs from the registry is looked up at once on the scheduler's threads, a manifold
-    // asked for a few edges ahead...
+// The manifolds are taken island by island, in the order of each island's edges. What each edge
+// needs from the registry is looked up at once on the scheduler's threads, a manifold asked for
+// a few edges ahead.
+void find_island_contacts(registry &registry, world_state &world) {
     world.island_edges.clear();
     for (auto island_entity : registry.view<island>(exclude<sleeping_tag>)) {
         auto &edges = registry.get<island>(island_entity).edges;
@@ -237,7 +236,7 @@ void gather_contacts(registry &registry, world_state &world) {
     auto num_edges = static_cast<std::uint32_t>(world.island_edges.size());
     world.edge_contacts.resize(num_edges);
     auto &manifold_pool = registry.storage<contact_manifold>();
-    parallel_for(scheduler, 0u, num_edges, gathered_manifolds_per_task, [&](std::uint32_t i) {
+    parallel_for(world.scheduler.get(), 0u, num_edges, gathered_manifolds_per_task, [&](std::uint32_t i) {
         if (i + gather_prefetch_distance < num_edges) {
             if (auto *ahead = manifold_pool.try_get(world.island_edges[i + gather_prefetch_distance])) {
                 prefetch(ahead);
@@ -245,13 +244,16 @@ void gather_contacts(registry &registry, world_state &world) {
         }
         world.edge_contacts[i] = contact_of_edge(registry, world, world.island_edges[i]);
     });
+}
 
-    // ...then the contacts to solve are put in the order they are solved in, outward from the
-    // bodies that do not move (contact_order.hpp), and each is given its colour in that order, on
-    // this thread: the colour after those of the earlier contacts it shares a moving body with.
+// The contacts to solve in the order they are solved in, outward from the bodies that do not
+// move (contact_order.hpp), each given its colour in that order, on this thread: the colour
+// after those of the earlier contacts it shares a moving body with. Then each manifold's place:
+// colours in order, in the order found within a colour.
+void place_contacts(world_state &world) {
     world.solved_edges.clear();
     world.ordering.reset(world.bodies);
-    for (std::uint32_t i = 0; i < num_edges; ++i) {
+    for (std::uint32_t i = 0; i < world.edge_contacts.size(); ++i) {
         auto &edge = world.edge_contacts[i];
         if (edge.num_points == 0) continue;
         world.solved_edges.push_back(i);
@@ -266,13 +268,11 @@ void gather_contacts(registry &registry, world_state &world) {
         world.contact_places.push_back({0, 0, edge.num_points, edge.slot});
     }
 
-    // Then each manifold's place: colours in order, in the order found within a colour.
     auto &contacts = world.contacts;
     world.colouring.colour_ranges(contacts.colour_begin);
     contacts.constraints.resize(contacts.colour_begin.back());
-    auto num_contacts = static_cast<std::uint32_t>(world.contact_places.size());
     std::uint32_t num_points = 0;
-    for (std::uint32_t k = 0; k < num_contacts; ++k) {
+    for (std::uint32_t k = 0; k < world.contact_places.size(); ++k) {
         auto &place = world.contact_places[k];
         auto found = world.colouring.next_place(world.contact_colours[k], place.num_points);
         place.constraint = found.constraint;
@@ -281,10 +281,20 @@ void gather_contacts(registry &registry, world_state &world) {
     }
     contacts.points.resize(num_points);
     contacts.totals.resize(num_points);
+}
+
+} // namespace
+
+void gather_contacts(registry &registry, world_state &world) {
+    wake_bodies_on_moving_kinematics(registry, world);
+    find_island_contacts(registry, world);
+    place_contacts(world);
 
     // Manifolds are gathered in island order, which is no order in memory: each is asked for
     // ahead, then its bodies.
-    parallel_for(scheduler, 0u, num_contacts, gathered_manifolds_per_task, [&](std::uint32_t k) {
+    auto &manifold_pool = registry.storage<contact_manifold>();
+    auto num_contacts = static_cast<std::uint32_t>(world.contact_places.size());
+    parallel_for(world.scheduler.get(), 0u, num_contacts, gathered_manifolds_per_task, [&](std::uint32_t k) {
         if (k + 2 * gather_prefetch_distance < num_contacts)
             prefetch_manifold_head(
                 manifold_pool.value_at(world.contact_places[k + 2 * gather_prefetch_distance].slot));
@@ -364,9 +374,11 @@ constexpr std::size_t write_backs_per_task = 256;
 
 } // namespace
 
-void write_back(registry &registry, world_state &world, scalar dt) {
-    // Each body and each contact writes only its own components: they go back in parallel. The
-    // pools are found once, here, rather than once per body and component.
+namespace {
+
+// Each body writes only its own components: they go back in parallel. The pools are found once,
+// here, rather than once per body and component.
+void write_back_bodies(registry &registry, world_state &world, scalar dt) {
     auto &positions = registry.storage<position>();
     auto &orientations = registry.storage<orientation>();
     auto &linvels = registry.storage<linvel>();
@@ -402,7 +414,10 @@ void write_back(registry &registry, world_state &world, scalar dt) {
                      }
                      world.body_index[to_index(e)] = 0;
                  });
+}
 
+// Each contact writes only its own manifold's points: they go back in parallel.
+void write_back_contacts(registry &registry, world_state &world) {
     auto &constraints = world.contacts.constraints;
     auto &manifold_pool = registry.storage<contact_manifold>();
     parallel_for(
@@ -436,6 +451,13 @@ void write_back(registry &registry, world_state &world, scalar dt) {
                 cp.roll_friction_impulse = {c.total_roll_impulse[0] * share, c.total_roll_impulse[1] * share};
             }
         });
+}
+
+} // namespace
+
+void write_back(registry &registry, world_state &world, scalar dt) {
+    write_back_bodies(registry, world, dt);
+    write_back_contacts(registry, world);
     store_constraint_impulses(registry, world.joints);
 }
 
