@@ -1,10 +1,12 @@
 #ifndef EDYN_SRC_CONSTRAINTS_CONTACT_BUNDLE_SOLVER_HPP
 #define EDYN_SRC_CONSTRAINTS_CONTACT_BUNDLE_SOLVER_HPP
 
-// The contact solver's passes over four constraints at once (see contact_bundle). Each lane
-// computes exactly what the one-at-a-time passes in contact_solver.cpp compute for its
-// constraint, operation for operation, so that bundling changes no result.
+// The contact solver's passes over four or eight constraints at once (see contact_bundle), and
+// the packing that makes the bundles (contact_bundle_packing.cpp). Each lane computes exactly
+// what the one-at-a-time passes in contact_solver.cpp compute for its constraint, operation for
+// operation, so that bundling changes no result.
 
+#include "../math/wide_scalar.hpp"
 #include "edyn/constraints/contact_solver.hpp"
 #include <cstdint>
 #include <span>
@@ -42,12 +44,17 @@ inline bool rows_made_in_bundle(const contact_solver_set &contacts, std::uint32_
            (key & bucket_key_mask) != unbundled_key && !(key & bouncy_key);
 }
 
-// Packs each colour's bundled constraints four to a bundle, contacts of one fixed side to a
-// bundle, most points first, and lists the
-// others in `singles`; copies the points' rows, masses and impulses into the bundles' slots.
-// Call once the points are prepared and every constraint's pack_keys entry is set.
+// Packs each colour's bundled constraints contact_bundle_lanes to a bundle, contacts of one
+// fixed side to a bundle, most points first, and lists the others in `singles`; fills the
+// bundles' slots from the points, making their rows and masses side by side. Call once the
+// points are prepared and every constraint's pack_keys entry is set.
 void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_body> bodies,
                           task_scheduler *scheduler);
+
+// The lanes of a bundle that have a point in its slot s.
+inline wide_mask slot_mask(const contact_bundle &bundle, std::uint32_t s) {
+    return wide_set(scalar(s)) < wide_from_counts(bundle.num_points);
+}
 
 // Asks for the cache line of each of the bundle's bodies that its passes read and write (the
 // first of solver_body's two), so that it is on its way while the bundle before is solved.
