@@ -153,7 +153,7 @@ void add_breakdown(const phase_figures &p, results &out) {
     row("snapshot: motion pool, each value's place in the entity list", m.values, "values",
         m.position_in_list);
     row("snapshot: motion pool, position (3 varints, 1/1024 m)", m.values, "values", m.position);
-    row("snapshot: motion pool, orientation (smallest three, 4 bytes)", m.values, "values", m.orientation);
+    row("snapshot: motion pool, orientation (smallest three, 6 bytes)", m.values, "values", m.orientation);
     row("snapshot: motion pool, linear velocity (3 varints, 1/512 m/s)", m.values, "values", m.linvel);
     row("snapshot: motion pool, angular velocity (3 varints, 1/512 rad/s)", m.values, "values", m.angvel);
     if (m.unparsed > 0) row("snapshot: motion pool, not in the expected layout", 0, "", m.unparsed);

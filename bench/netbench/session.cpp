@@ -1,6 +1,7 @@
 #include "session.hpp"
 #include <chrono>
 #include <edyn/serialization/memory_archive.hpp>
+#include <edyn/serialization/quantize.hpp>
 #include <stdexcept>
 
 namespace edyn_netbench {
@@ -25,7 +26,7 @@ std::uint64_t encoded_size(const T &value) {
 }
 
 // One value of the motion pool is its index into the entity list, then the position and the
-// two velocities as three zig-zag varints each and the orientation in four bytes.
+// two velocities as three zig-zag varints each and the orientation in six bytes.
 void count_motion(const std::vector<std::uint8_t> &data, std::size_t entity_count, motion_bytes &out) {
     auto archive = edyn::memory_input_archive(data.data(), data.size());
     auto varints = [&](int count) {
@@ -40,9 +41,10 @@ void count_motion(const std::vector<std::uint8_t> &data, std::size_t entity_coun
         archive.read_size(entity_count);
         parsed.position_in_list += archive.position() - start;
         parsed.position += varints(3);
-        std::uint32_t orientation{};
-        archive(orientation);
-        parsed.orientation += 4;
+        auto orientation_start = archive.position();
+        auto orientation = edyn::quaternion_identity;
+        edyn::serialize_quantized(archive, orientation);
+        parsed.orientation += archive.position() - orientation_start;
         parsed.linvel += varints(3);
         parsed.angvel += varints(3);
         parsed.values += 1;

@@ -8,7 +8,7 @@
 namespace edyn {
 
 // A body's transform (of its centre of mass) and velocities, as snapshots carry them: positions
-// in steps of position_quantum, velocities of velocity_quantum, the orientation in 32 bits
+// in steps of position_quantum, velocities of velocity_quantum, the orientation in 48 bits
 // (serialization/quantize.hpp).
 struct network_motion {
     vector3 position{vector3_zero};

@@ -15,9 +15,9 @@ using namespace edyn;
 
 namespace {
 
-// The bound quantize.hpp derives for smallest three on 10 bits, 4·√3·(√2 / 1023 / 2) ≈ 0.0048
-// to first order, with room for the second-order terms.
-constexpr double max_angle_error = 0.005;
+// The bound quantize.hpp derives for smallest three on 15 bits, 4·√3·(√2 / 32767 / 2) ≈ 0.00015
+// to first order, with room for the second-order terms and float rounding.
+constexpr double max_angle_error = 0.00016;
 
 std::vector<std::uint8_t> encode_quantized(vector3 v, quantum_step quantum) {
     std::vector<std::uint8_t> data;
@@ -226,7 +226,7 @@ TEST(quantize, each_component_can_be_the_largest) {
             q[largest] = sign * scalar(0.9);
             q = normalize(q);
             auto bits = pack_orientation(q);
-            EXPECT_EQ(int(bits >> 30), largest);
+            EXPECT_EQ(int(bits >> 45), largest);
             auto result = unpack_orientation(bits);
             EXPECT_GT(result[largest], 0) << "the dropped component decodes positive";
             EXPECT_LT(angle_between(q, result), max_angle_error)
@@ -244,7 +244,7 @@ TEST(quantize, q_and_minus_q_encode_alike) {
     EXPECT_EQ(pack_orientation(quaternion_identity), pack_orientation(-quaternion_identity));
     // Ties: equal magnitudes choose the first.
     auto tie = normalize(quaternion{1, -1, 1, -1});
-    EXPECT_EQ(pack_orientation(tie) >> 30, 0u);
+    EXPECT_EQ(pack_orientation(tie) >> 45, 0u);
     EXPECT_LT(angle_between(unpack_orientation(pack_orientation(tie)), tie), max_angle_error);
 }
 
@@ -273,20 +273,26 @@ TEST(quantize, degenerate_input_is_identity) {
 }
 
 TEST(quantize, any_bits_decode_to_a_unit_quaternion) {
-    std::vector<std::uint32_t> bits{0,          ~std::uint32_t{0}, 0x3fffffff, 0x40000000,
-                                    0x7fffffff, 0x80000000,        0xc0000000};
+    constexpr std::uint64_t all = (std::uint64_t{1} << 48) - 1;
+    std::vector<std::uint64_t> bits{0,
+                                    all,
+                                    all >> 1,
+                                    std::uint64_t{1} << 45,
+                                    std::uint64_t{1} << 47,
+                                    (std::uint64_t{1} << 45) - 1,
+                                    ~std::uint64_t{0}};
     // Every index with every component at either extreme or the middle.
-    for (std::uint32_t index = 0; index < 4; ++index) {
-        for (std::uint32_t a : {0u, 511u, 512u, 1023u}) {
-            for (std::uint32_t b : {0u, 511u, 512u, 1023u}) {
-                for (std::uint32_t c : {0u, 511u, 512u, 1023u})
-                    bits.push_back(index << 30 | a << 20 | b << 10 | c);
+    for (std::uint64_t index = 0; index < 4; ++index) {
+        for (std::uint64_t a : {0u, 16383u, 16384u, 32767u}) {
+            for (std::uint64_t b : {0u, 16383u, 16384u, 32767u}) {
+                for (std::uint64_t c : {0u, 16383u, 16384u, 32767u})
+                    bits.push_back(index << 45 | a << 30 | b << 15 | c);
             }
         }
     }
     // And about a million spread over the whole range (an odd stride).
-    for (std::uint64_t k = 0; k < (std::uint64_t{1} << 32); k += 4097)
-        bits.push_back(std::uint32_t(k));
+    for (std::uint64_t k = 0; k <= all; k += 281474977)
+        bits.push_back(k);
 
     double worst = 0;
     for (auto b : bits) {
@@ -300,12 +306,12 @@ TEST(quantize, any_bits_decode_to_a_unit_quaternion) {
     std::printf("%zu crafted bit patterns: largest |len - 1| %g\n", bits.size(), worst);
 }
 
-TEST(quantize, serialized_orientation_takes_four_bytes) {
+TEST(quantize, serialized_orientation_takes_six_bytes) {
     auto q = normalize(quaternion{scalar(0.1), scalar(0.7), scalar(-0.2), scalar(0.5)});
     std::vector<std::uint8_t> data;
     memory_output_archive output(data);
     serialize_quantized(output, q);
-    ASSERT_EQ(data.size(), 4u);
+    ASSERT_EQ(data.size(), 6u);
 
     memory_input_archive input(data.data(), data.size());
     auto result = quaternion_identity;
@@ -313,11 +319,13 @@ TEST(quantize, serialized_orientation_takes_four_bytes) {
     EXPECT_FALSE(input.failed());
     EXPECT_LT(angle_between(q, result), max_angle_error);
 
-    memory_input_archive truncated(data.data(), 3);
-    auto kept = quaternion_identity;
-    serialize_quantized(truncated, kept);
-    EXPECT_TRUE(truncated.failed());
-    EXPECT_EQ(kept, quaternion_identity);
+    for (std::size_t size : {3u, 5u}) {
+        memory_input_archive truncated(data.data(), size);
+        auto kept = quaternion_identity;
+        serialize_quantized(truncated, kept);
+        EXPECT_TRUE(truncated.failed()) << size << " bytes";
+        EXPECT_EQ(kept, quaternion_identity) << size << " bytes";
+    }
 }
 
 } // namespace
