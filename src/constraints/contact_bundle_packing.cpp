@@ -10,7 +10,7 @@ namespace edyn::detail {
 
 namespace {
 
-constexpr std::uint32_t lanes = contact_bundle_lanes;
+constexpr std::uint32_t bundle_lanes = contact_bundle_lanes;
 
 // Bundles per parallel range when filling their slots.
 constexpr std::size_t bundles_per_task = 16;
@@ -21,47 +21,49 @@ constexpr std::size_t bundles_per_task = 16;
 constexpr std::size_t point_scalars = sizeof(contact_solver_point) / sizeof(scalar);
 constexpr std::size_t carried_scalars = offsetof(contact_solver_point, normal_row) / sizeof(scalar);
 static_assert(sizeof(contact_solver_point) == point_scalars * sizeof(scalar) &&
-              sizeof(contact_bundle_slot) == point_scalars * lanes * sizeof(scalar));
+              sizeof(contact_bundle_slot) == point_scalars * bundle_lanes * sizeof(scalar));
 static_assert(
-    offsetof(contact_solver_point, tangent) == offsetof(contact_bundle_slot, tangent) / lanes &&
+    offsetof(contact_solver_point, tangent) == offsetof(contact_bundle_slot, tangent) / bundle_lanes &&
     offsetof(contact_solver_point, adjusted_separation) ==
-        offsetof(contact_bundle_slot, adjusted_separation) / lanes &&
-    offsetof(contact_solver_point, normal_mass) == offsetof(contact_bundle_slot, normal_mass) / lanes &&
-    offsetof(contact_solver_point, normal_impulse) == offsetof(contact_bundle_slot, normal_impulse) / lanes &&
-    offsetof(contact_solver_point, normal_row) == offsetof(contact_bundle_slot, normal_row) / lanes &&
-    offsetof(contact_solver_point, tangent_row) == offsetof(contact_bundle_slot, tangent_row) / lanes);
+        offsetof(contact_bundle_slot, adjusted_separation) / bundle_lanes &&
+    offsetof(contact_solver_point, normal_mass) ==
+        offsetof(contact_bundle_slot, normal_mass) / bundle_lanes &&
+    offsetof(contact_solver_point, normal_impulse) ==
+        offsetof(contact_bundle_slot, normal_impulse) / bundle_lanes &&
+    offsetof(contact_solver_point, normal_row) == offsetof(contact_bundle_slot, normal_row) / bundle_lanes &&
+    offsetof(contact_solver_point, tangent_row) == offsetof(contact_bundle_slot, tangent_row) / bundle_lanes);
 
-void fill_slot(contact_bundle_slot &slot, const contact_solver_point *(&points)[lanes]) {
-    const scalar *in[lanes];
-    for (std::uint32_t i = 0; i < lanes; ++i)
+void fill_slot(contact_bundle_slot &slot, const contact_solver_point *(&points)[bundle_lanes]) {
+    const scalar *in[bundle_lanes];
+    for (std::uint32_t i = 0; i < bundle_lanes; ++i)
         in[i] = reinterpret_cast<const scalar *>(points[i]);
     auto *out = reinterpret_cast<scalar *>(&slot);
     std::size_t k = 0;
 #if defined(EDYN_WIDE_AVX2)
-    for (; k + lanes <= carried_scalars; k += lanes) {
-        __m256 g[lanes];
-        for (std::uint32_t i = 0; i < lanes; ++i)
+    for (; k + bundle_lanes <= carried_scalars; k += bundle_lanes) {
+        __m256 g[bundle_lanes];
+        for (std::uint32_t i = 0; i < bundle_lanes; ++i)
             g[i] = _mm256_loadu_ps(in[i] + k);
         transpose(g);
-        for (std::uint32_t r = 0; r < lanes; ++r)
-            _mm256_storeu_ps(out + (k + r) * lanes, g[r]);
+        for (std::uint32_t r = 0; r < bundle_lanes; ++r)
+            _mm256_storeu_ps(out + (k + r) * bundle_lanes, g[r]);
     }
 #elif defined(EDYN_WIDE_SSE2)
-    for (; k + lanes <= carried_scalars; k += lanes) {
-        __m128 g[lanes];
-        for (std::uint32_t i = 0; i < lanes; ++i)
+    for (; k + bundle_lanes <= carried_scalars; k += bundle_lanes) {
+        __m128 g[bundle_lanes];
+        for (std::uint32_t i = 0; i < bundle_lanes; ++i)
             g[i] = _mm_loadu_ps(in[i] + k);
         _MM_TRANSPOSE4_PS(g[0], g[1], g[2], g[3]);
-        for (std::uint32_t r = 0; r < lanes; ++r)
-            _mm_storeu_ps(out + (k + r) * lanes, g[r]);
+        for (std::uint32_t r = 0; r < bundle_lanes; ++r)
+            _mm_storeu_ps(out + (k + r) * bundle_lanes, g[r]);
     }
 #endif
     for (; k < carried_scalars; ++k)
-        for (std::uint32_t i = 0; i < lanes; ++i)
-            out[k * lanes + i] = in[i][k];
+        for (std::uint32_t i = 0; i < bundle_lanes; ++i)
+            out[k * bundle_lanes + i] = in[i][k];
 }
 
-void wide3_store(scalar (&p)[3][lanes], const wide3 &v) {
+void wide3_store(scalar (&p)[3][bundle_lanes], const wide3 &v) {
     wide_store(p[0], v.x);
     wide_store(p[1], v.y);
     wide_store(p[2], v.z);
@@ -82,9 +84,9 @@ struct wide_inertia {
     wide_matrix inv_inertia;
 };
 
-wide_inertia gather_inertia(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
-    scalar m[10][lanes];
-    for (std::uint32_t i = 0; i < lanes; ++i) {
+wide_inertia gather_inertia(const solver_body *bodies, const solver_body_index (&index)[bundle_lanes]) {
+    scalar m[10][bundle_lanes];
+    for (std::uint32_t i = 0; i < bundle_lanes; ++i) {
         auto &body = bodies[index[i]];
         m[0][i] = body.inv_mass;
         for (int r = 0; r < 3; ++r) {
@@ -102,8 +104,8 @@ wide_inertia gather_inertia(const solver_body *bodies, const solver_body_index (
 
 // A row of the slot and its effective mass, as make_row() and row_mass() in contact_solver.cpp,
 // lane by lane; the mass is 0 in the lanes without a point.
-wide make_wide_row(scalar (&to)[4][3][lanes], wide_mask active, const wide_inertia &a, const wide_inertia &b,
-                   const wide3 &d, const wide3 &rA, const wide3 &rB) {
+wide make_wide_row(scalar (&to)[4][3][bundle_lanes], wide_mask active, const wide_inertia &a,
+                   const wide_inertia &b, const wide3 &d, const wide3 &rA, const wide3 &rB) {
     auto angularA = cross(rA, d);
     auto angularB = cross(rB, d);
     auto inv_angularA = a.inv_inertia * angularA;
@@ -151,7 +153,7 @@ void make_slot_rows(contact_bundle_slot &slot, wide_mask active, const wide_iner
 void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<const solver_body> bodies) {
     auto &bundle = contacts.bundles[index];
     bundle.moves_a = bundle.moves_b = 0;
-    for (std::uint32_t i = 0; i < lanes; ++i) {
+    for (std::uint32_t i = 0; i < bundle_lanes; ++i) {
         // A lane without points is empty: the static body on both sides.
         bundle.body[0][i] = bundle.body[1][i] = static_solver_body;
         bundle.friction[i] = 0;
@@ -170,8 +172,8 @@ void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<co
     auto inertia_b = gather_inertia(bodies.data(), bundle.body[1]);
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
         contacts.bundle_totals[bundle.first_slot + s] = {}; // every sub-step adds to them
-        const contact_solver_point *points[lanes];
-        for (std::uint32_t i = 0; i < lanes; ++i) {
+        const contact_solver_point *points[bundle_lanes];
+        for (std::uint32_t i = 0; i < bundle_lanes; ++i) {
             points[i] = &empty_point;
             if (s < bundle.num_points[i])
                 points[i] = &contacts.points[contacts.constraints[bundle.constraint[i]].first_point + s];
@@ -230,8 +232,9 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
     auto reserve = [](auto &array, std::size_t size) {
         if (size > array.capacity()) array.reserve(size + size / 4);
     };
-    reserve(contacts.bundles, contacts.constraints.size() / lanes + num_sides * num_colours);
-    reserve(contacts.bundle_slots, contacts.points.size() / lanes + num_sides * max_points * num_colours);
+    reserve(contacts.bundles, contacts.constraints.size() / bundle_lanes + num_sides * num_colours);
+    reserve(contacts.bundle_slots,
+            contacts.points.size() / bundle_lanes + num_sides * max_points * num_colours);
     reserve(contacts.bundle_totals, contacts.bundle_slots.capacity());
     reserve(contacts.singles, contacts.constraints.size());
     reserve(contacts.packing, contacts.constraints.size());
@@ -273,7 +276,7 @@ void pack_contact_bundles(contact_solver_set &contacts, std::span<const solver_b
             bundle.num_slots = 0;
             bundle.full_slots = contact_solver_constraint::max_points;
             std::uint32_t filled = 0;
-            for (std::uint32_t i = 0; i < lanes; ++i) {
+            for (std::uint32_t i = 0; i < bundle_lanes; ++i) {
                 bundle.constraint[i] = 0;
                 bundle.num_points[i] = 0;
                 if (first + i < contacts.packing.size()) {
