@@ -37,10 +37,12 @@ void insert_material_mixing(registry &registry, material_id_type id0, material_i
 }
 
 material_base get_mixed_material(const registry &registry, const material &a, const material &b) {
-    if (a.id != invalid_material_id && b.id != invalid_material_id) {
-        if (auto *table = registry.ctx().find<material_mix_table>()) {
-            if (auto *mixed = table->find(a.id, b.id)) return *mixed;
-        }
+    return get_mixed_material(registry.ctx().find<material_mix_table>(), a, b);
+}
+
+material_base get_mixed_material(const material_mix_table *table, const material &a, const material &b) {
+    if (table && a.id != invalid_material_id && b.id != invalid_material_id) {
+        if (auto *mixed = table->find(a.id, b.id)) return *mixed;
     }
     return mix_materials(a, b);
 }
@@ -76,13 +78,6 @@ mesh_triangle per_vertex_triangle(const registry &registry, entity e, std::int32
     return {};
 }
 
-bool may_have_coefficients(const registry &registry, entity e) {
-    if (auto *shape = registry.try_get<mesh_shape>(e); shape && shape->trimesh)
-        return has_coefficients(*shape->trimesh);
-    // A paged mesh's pages tell when they are loaded.
-    return registry.all_of<paged_mesh_shape>(e);
-}
-
 // The body's material with the mesh's coefficients at `pivot` (object space) on the triangle
 // its feature names, where it has them.
 material_base at_point(const registry &registry, entity e, const material &base,
@@ -104,14 +99,12 @@ material_base at_point(const registry &registry, entity e, const material &base,
 
 } // namespace
 
-bool has_per_vertex_material(const registry &registry, entity a, entity b) {
-    return may_have_coefficients(registry, a) || may_have_coefficients(registry, b);
+bool has_point_materials(const mesh_shape &shape) {
+    return shape.trimesh && has_coefficients(*shape.trimesh);
 }
 
-bool has_per_vertex_material(const registry &registry, const contact_manifold &manifold) {
-    if (manifold.point_materials.known) return manifold.point_materials.per_vertex;
-    return has_per_vertex_material(registry, manifold.body[0], manifold.body[1]);
-}
+// A paged mesh's pages tell when they are loaded.
+bool has_point_materials(const paged_mesh_shape &) { return true; }
 
 material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point) {
     const auto &mat_a = registry.get<material>(a);

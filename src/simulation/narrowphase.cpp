@@ -15,6 +15,7 @@
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 #include <algorithm>
+#include <type_traits>
 #include <utility>
 
 namespace edyn {
@@ -45,14 +46,14 @@ void set_material(contact_point &cp, const material_base &mixed) {
 
 // Mixed material values are stored on new points for the program to read; the solver mixes
 // again every step so that material changes apply at once.
-void fill_materials(const registry &registry, contact_manifold &manifold,
-                    const contact_point_changes &changes) {
+void fill_materials(const registry &registry, const world_state &world, const material_mix_table *mix_table,
+                    contact_manifold &manifold, const contact_point_changes &changes) {
+    auto &bodyA = world.collision_bodies[to_index(manifold.body[0])];
+    auto &bodyB = world.collision_bodies[to_index(manifold.body[1])];
     // Most manifolds have no new point and no per-vertex material: they look nothing up.
-    auto per_vertex = has_per_vertex_material(registry, manifold);
+    auto per_vertex = bodyA.point_materials || bodyB.point_materials;
     if (changes.num_created == 0 && !per_vertex) return;
-    auto *matA = registry.try_get<material>(manifold.body[0]);
-    auto *matB = registry.try_get<material>(manifold.body[1]);
-    if (!matA || !matB) return;
+    if (!bodyA.mat || !bodyB.mat) return;
     // Per-vertex materials of a mesh: every point, every step, as points move over the mesh.
     if (per_vertex) {
         for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
@@ -61,23 +62,46 @@ void fill_materials(const registry &registry, contact_manifold &manifold,
         }
         return;
     }
-    auto mixed = get_mixed_material(registry, *matA, *matB);
+    auto mixed = get_mixed_material(mix_table, *bodyA.mat, *bodyB.mat);
     for (std::uint32_t i = 0; i < changes.num_created; ++i)
         set_material(manifold.point[changes.created[i]], mixed);
 }
 
-// What collide_manifold reads of a body, from the registry and its AABB component.
-world_state::collision_body collision_body_of(const registry &registry, entity e, const AABB &aabb) {
+// How a shape resists rolling (world_state::rolling).
+template<typename Shape>
+world_state::rolling rolling_of(const Shape &shape) {
+    using rolling = world_state::rolling;
+    if constexpr (std::is_same_v<Shape, sphere_shape> || std::is_same_v<Shape, capsule_shape>) {
+        return rolling::both_tangents;
+    } else if constexpr (std::is_same_v<Shape, cylinder_shape>) {
+        return static_cast<rolling>(static_cast<int>(rolling::about_x) + static_cast<int>(shape.axis));
+    } else {
+        return rolling::none;
+    }
+}
+
+// What collide_manifold and the contacts' gathering read of a body, from the registry and its
+// AABB component; its position (centre of mass) goes to `centre_out`.
+world_state::collision_body collision_body_of(const registry &registry, entity e, const AABB &aabb,
+                                              vector3 &centre_out) {
     world_state::collision_body body;
     body.dynamic = registry.all_of<dynamic_tag>(e);
     body.resting = registry.any_of<static_tag, sleeping_tag>(e);
     body.has_shape = registry.all_of<shape_index>(e);
+    body.mat = registry.try_get<material>(e);
     if (auto *epoch = registry.try_get<shape_epoch>(e)) body.shape_epoch = epoch->value;
-    if (!body.has_shape) return body;
-    body.bounding_radius =
-        visit_shape(registry, e, [](const auto &shape) { return shape_bounding_radius(shape); });
+    if (!body.has_shape) {
+        if (auto *centre = registry.try_get<position>(e)) centre_out = *centre;
+        return body;
+    }
+    visit_shape(registry, e, [&](const auto &shape) {
+        body.bounding_radius = shape_bounding_radius(shape);
+        body.point_materials = has_point_materials(shape);
+        body.rolls = rolling_of(shape);
+    });
     body.orientation = registry.get<orientation>(e);
     auto &centre = registry.get<position>(e); // of mass
+    centre_out = centre;
     body.origin = rigidbody_origin(centre, body.orientation, registry.try_get<center_of_mass>(e));
     // An upper bound of how fast any of its points moves: its centre of mass's speed, and the
     // spin times the farthest a point of the shape lies from that centre.
@@ -125,15 +149,6 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
     auto approach = (length(bodyA.linvel - bodyB.linvel) + bodyA.spin_reach + bodyB.spin_reach) * dt;
     manifold.separation_threshold = contact_breaking_threshold + approach;
     shape_epoch_pair epochs{bodyA.shape_epoch, bodyB.shape_epoch};
-    // Worked out once, and again only when a shape changed: the bodies' shapes are not looked up
-    // for it every step. (A pair that skips the steps above has no moving body: its points, if
-    // any, stay as they are until one moves, which brings it here.)
-    auto &materials = manifold.point_materials;
-    if (!materials.known || materials.shape_epochs != epochs) {
-        materials.per_vertex = has_per_vertex_material(registry, a, b);
-        materials.shape_epochs = epochs;
-        materials.known = true;
-    }
     if (can_reuse_contacts(manifold, tf, approach, epochs)) {
         return refresh_contact_manifold(manifold, tf);
     }
@@ -229,6 +244,7 @@ void gather_collision_bodies(const registry &registry, world_state &world) {
     if (world.collision_bodies.size() < index_bound) {
         world.collision_bodies.resize(index_bound);
         world.collision_aabbs.resize(index_bound);
+        world.collision_centres.resize(index_bound);
     }
     parallel_for(world.scheduler.get(), std::size_t(0), proxies.num_proxies(), bodies_per_task,
                  [&](std::size_t i) {
@@ -236,7 +252,8 @@ void gather_collision_bodies(const registry &registry, world_state &world) {
                      // Every body with a proxy has an AABB component (the broadphase reads it).
                      auto &aabb = world.collision_aabbs[to_index(e)];
                      aabb = registry.get<AABB>(e);
-                     world.collision_bodies[to_index(e)] = collision_body_of(registry, e, aabb);
+                     world.collision_bodies[to_index(e)] =
+                         collision_body_of(registry, e, aabb, world.collision_centres[to_index(e)]);
                  });
 }
 
@@ -246,6 +263,7 @@ void collide_manifolds(registry &registry, world_state &world) {
     auto &manifold_pool = registry.storage<contact_manifold>();
     auto num_manifolds = world.manifolds.size();
     auto dt = registry.ctx().get<settings>().fixed_dt;
+    auto *mix_table = registry.ctx().find<material_mix_table>();
     world.manifold_changes.resize(num_manifolds);
     world.manifold_live_slots.resize(num_manifolds);
     world.pool_live_slots.resize(manifold_pool.size());
@@ -273,7 +291,7 @@ void collide_manifolds(registry &registry, world_state &world) {
         auto &manifold = manifold_pool.value_at(world.manifold_slots[i]);
         auto &changes = world.manifold_changes[i];
         changes = collide_manifold(registry, world, manifold, dt);
-        fill_materials(registry, manifold, changes);
+        fill_materials(registry, world, mix_table, manifold, changes);
         std::uint8_t live = 0;
         for (std::uint32_t k = 0; k < manifold.num_points; ++k)
             live |= static_cast<std::uint8_t>(1u << manifold.ids[k]);

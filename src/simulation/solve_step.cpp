@@ -23,23 +23,26 @@ namespace {
 
 // Axes about which a contact resists rolling: both tangents for spheres and capsules, only the
 // main axis for cylinders, none for shapes that do not roll.
-std::uint32_t roll_axes(const registry &registry, entity body, const vector3 &normal, vector3 (&axes)[2]) {
-    if (!registry.all_of<shape_index>(body)) return 0;
-    return visit_shape(registry, body, [&](const auto &shape) -> std::uint32_t {
-        using S = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<S, sphere_shape> || std::is_same_v<S, capsule_shape>) {
-            plane_space(normal, axes[0], axes[1]);
-            return 2;
-        } else if constexpr (std::is_same_v<S, cylinder_shape>) {
-            auto axis =
-                project_plane(coordinate_axis_vector(shape.axis, registry.get<orientation>(body)), normal);
-            if (!try_normalize(axis)) return 0;
-            axes[0] = axis;
-            return 1;
-        } else {
-            return 0;
-        }
-    });
+std::uint32_t roll_axes(const world_state::collision_body &body, const vector3 &normal, vector3 (&axes)[2]) {
+    using rolling = world_state::rolling;
+    switch (body.rolls) {
+    case rolling::both_tangents:
+        plane_space(normal, axes[0], axes[1]);
+        return 2;
+    case rolling::about_x:
+    case rolling::about_y:
+    case rolling::about_z: {
+        auto main =
+            static_cast<coordinate_axis>(static_cast<int>(body.rolls) - static_cast<int>(rolling::about_x));
+        auto axis = project_plane(coordinate_axis_vector(main, body.orientation), normal);
+        if (!try_normalize(axis)) return 0;
+        axes[0] = axis;
+        return 1;
+    }
+    case rolling::none:
+        break;
+    }
+    return 0;
 }
 
 // Bodies per parallel range in gather_bodies.
@@ -113,27 +116,31 @@ void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
 // The solver bodies and point count of the contact an island edge stands for; no points when
 // the edge is not a contact to solve (a joint, a manifold without points, a sensor's, or one
 // between two bodies that do not move).
-world_state::edge_contact contact_of_edge(const registry &registry, const world_state &world, entity edge) {
-    auto &manifold_pool = registry.storage<contact_manifold>();
+world_state::edge_contact contact_of_edge(const storage<contact_manifold> &manifold_pool,
+                                          const world_state &world, entity edge) {
     auto *manifold = manifold_pool.try_get(edge);
     if (!manifold || manifold->num_points == 0) return {};
     auto a = manifold->body[0], b = manifold->body[1];
-    if (!registry.all_of<material>(a) || !registry.all_of<material>(b)) return {}; // a sensor
+    if (!world.collision_bodies[to_index(a)].mat || !world.collision_bodies[to_index(b)].mat)
+        return {}; // a sensor
     auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
     if (ia == static_solver_body && ib == static_solver_body) return {};
     return {{ia, ib}, manifold->num_points, static_cast<std::uint32_t>(manifold_pool.index(edge))};
 }
 
 // Fills the constraint the manifold `source` was given a place for, and its points, from the
-// manifold, the mixed material and last step's impulses. Reads the registry and writes only the
-// constraint and its points: manifolds are gathered at once on the scheduler's threads.
-void gather_contact(const registry &registry, world_state &world, std::uint32_t source) {
+// manifold, the mixed material and last step's impulses. Reads what the narrowphase gathered of
+// the bodies (world_state::collision_body), not the registry, and writes only the constraint
+// and its points: manifolds are gathered at once on the scheduler's threads.
+void gather_contact(const storage<contact_manifold> &manifold_pool, const material_mix_table *mix_table,
+                    world_state &world, std::uint32_t source) {
     auto &place = world.contact_places[source];
-    auto &manifold = registry.storage<contact_manifold>().value_at(place.slot);
+    auto &manifold = manifold_pool.value_at(place.slot);
     auto a = manifold.body[0], b = manifold.body[1];
-    auto mixed = get_mixed_material(registry, registry.get<material>(a), registry.get<material>(b));
+    auto &bodyA = world.collision_bodies[to_index(a)], &bodyB = world.collision_bodies[to_index(b)];
+    auto mixed = get_mixed_material(mix_table, *bodyA.mat, *bodyB.mat);
     // The narrowphase left the pivots in world space; offsets are from the centres of mass.
-    auto &posA = registry.get<position>(a), &posB = registry.get<position>(b);
+    auto &posA = world.collision_centres[to_index(a)], &posB = world.collision_centres[to_index(b)];
 
     auto &c = world.contacts.constraints[place.constraint];
     c.first_point = place.first_point;
@@ -148,7 +155,7 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
     c.damping = mixed.damping;
     c.normal = manifold.point[manifold.ids[0]].normal;
     c.source = source;
-    if (has_per_vertex_material(registry, manifold)) {
+    if (bodyA.point_materials || bodyB.point_materials) {
         // The points' own values (the narrowphase interpolated them), averaged over the manifold
         // whose friction and restitution the solver shares between its points.
         scalar friction = 0, restitution = 0;
@@ -164,8 +171,9 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
     c.roll_impulse[0] = c.roll_impulse[1] = 0;
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &cp = manifold.point[manifold.ids[i]];
+        // Not cleared first: prepare_contacts() or the point's bundle makes every field not set
+        // here (a 244-byte clear per point was a tenth of this function's time).
         auto &p = world.contacts.points[c.first_point + i];
-        p = {};
         p.rA = cp.positionA - posA;
         p.rB = cp.positionB - posB;
         p.normal = cp.normal;
@@ -185,8 +193,8 @@ void gather_contact(const registry &registry, world_state &world, std::uint32_t 
     }
     c.num_roll_axes = 0;
     if (c.roll_friction > 0) {
-        c.num_roll_axes = roll_axes(registry, a, c.normal, c.roll_axis);
-        if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(registry, b, c.normal, c.roll_axis);
+        c.num_roll_axes = roll_axes(bodyA, c.normal, c.roll_axis);
+        if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(bodyB, c.normal, c.roll_axis);
     } else {
         c.roll_impulse[0] = c.roll_impulse[1] = 0;
     }
@@ -212,11 +220,17 @@ void prefetch_write_back_points(const contact_manifold &manifold) {
         prefetch(&manifold.point[manifold.ids[i]].lifetime, cache_line_size);
 }
 
-// What gather_contact reads of a manifold's bodies.
-void prefetch_gather_bodies(const registry &registry, const contact_manifold &manifold) {
+// What gather_contact reads of a manifold's bodies...
+void prefetch_gather_bodies(const world_state &world, const contact_manifold &manifold) {
     for (auto e : manifold.body) {
-        prefetch(&registry.get<position>(e), sizeof(position));
-        prefetch(&registry.get<material>(e), sizeof(material));
+        prefetch(&world.collision_bodies[to_index(e)], sizeof(world_state::collision_body));
+        prefetch(&world.collision_centres[to_index(e)], sizeof(vector3));
+    }
+}
+// ...and, once those have come, their materials.
+void prefetch_gather_materials(const world_state &world, const contact_manifold &manifold) {
+    for (auto e : manifold.body) {
+        if (auto *mat = world.collision_bodies[to_index(e)].mat) prefetch(mat, sizeof(material));
     }
 }
 
@@ -242,7 +256,7 @@ void find_island_contacts(registry &registry, world_state &world) {
                 prefetch(ahead);
             }
         }
-        world.edge_contacts[i] = contact_of_edge(registry, world, world.island_edges[i]);
+        world.edge_contacts[i] = contact_of_edge(manifold_pool, world, world.island_edges[i]);
     });
 }
 
@@ -291,19 +305,24 @@ void gather_contacts(registry &registry, world_state &world) {
     place_contacts(world);
 
     // Manifolds are gathered in island order, which is no order in memory: each is asked for
-    // ahead, then its bodies.
+    // ahead, then its points and bodies, then the bodies' materials.
     auto &manifold_pool = registry.storage<contact_manifold>();
+    auto *mix_table = registry.ctx().find<material_mix_table>();
     auto num_contacts = static_cast<std::uint32_t>(world.contact_places.size());
+    auto manifold_of = [&](std::uint32_t k) -> auto & {
+        return manifold_pool.value_at(world.contact_places[k].slot);
+    };
     parallel_for(world.scheduler.get(), 0u, num_contacts, gathered_manifolds_per_task, [&](std::uint32_t k) {
         if (k + 2 * gather_prefetch_distance < num_contacts)
-            prefetch_manifold_head(
-                manifold_pool.value_at(world.contact_places[k + 2 * gather_prefetch_distance].slot));
+            prefetch_manifold_head(manifold_of(k + 2 * gather_prefetch_distance));
         if (k + gather_prefetch_distance < num_contacts) {
-            auto &ahead = manifold_pool.value_at(world.contact_places[k + gather_prefetch_distance].slot);
+            auto &ahead = manifold_of(k + gather_prefetch_distance);
             prefetch_gather_points(ahead);
-            prefetch_gather_bodies(registry, ahead);
+            prefetch_gather_bodies(world, ahead);
         }
-        gather_contact(registry, world, k);
+        if (k + gather_prefetch_distance / 2 < num_contacts)
+            prefetch_gather_materials(world, manifold_of(k + gather_prefetch_distance / 2));
+        gather_contact(manifold_pool, mix_table, world, k);
     });
 }
 

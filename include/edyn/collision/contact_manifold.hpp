@@ -61,18 +61,6 @@ struct contact_manifold {
     /// Ids of the live points first (the first `num_points` entries), then the free ones.
     std::array<id_type, max_contacts> ids{0, 1, 2, 3};
 
-    /// Whether either body's shape may give each contact point a material of its own (a triangle
-    /// mesh with per-vertex friction or restitution, or a paged mesh: see
-    /// has_per_vertex_material), worked out by the narrowphase the first time it collides the
-    /// pair and again after either body's shape changed (its shape_epoch), so that the step does
-    /// not look both bodies' shapes up for every manifold. Written by the engine.
-    struct material_snapshot {
-        /// Shape epochs of A and B when `per_vertex` was worked out.
-        shape_epoch_pair shape_epochs{0, 0};
-        bool known{false};      ///< Whether `per_vertex` has been worked out yet.
-        bool per_vertex{false}; ///< Whether per-point materials may apply to the pair.
-    } point_materials;          ///< Whether the points have materials of their own.
-
     /// The bodies' origins, orientations and shape epochs when collide() last ran for this
     /// pair, for deciding whether the points can be reused (see contact_reuse_max_distance).
     /// Written by the engine.

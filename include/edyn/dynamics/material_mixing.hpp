@@ -1,7 +1,6 @@
 #ifndef EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 #define EDYN_DYNAMICS_MATERIAL_MIXING_HPP
 
-#include "edyn/collision/contact_manifold.hpp"
 #include "edyn/collision/contact_point.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/ecs/registry.hpp"
@@ -11,6 +10,9 @@
 #include <utility>
 
 namespace edyn {
+
+struct mesh_shape;
+struct paged_mesh_shape;
 
 /// Default mixing of two friction coefficients: their geometric mean.
 /// One slippery surface makes the contact slippery.
@@ -98,22 +100,29 @@ void insert_material_mixing(registry &registry, material_id_type id0, material_i
 /// @return The mixed material.
 material_base get_mixed_material(const registry &registry, const material &a, const material &b);
 
-/// Whether either body may have contact points each with their own material.
-/// True when a body is a triangle mesh with per-vertex friction or restitution, or a paged mesh
-/// (whose pages tell when loaded); its points then get their material from get_point_material.
-/// @param registry The registry the bodies live in.
-/// @param a First body.
-/// @param b Second body.
-/// @return Whether per-point materials may apply to this pair.
-bool has_per_vertex_material(const registry &registry, entity a, entity b);
+/// The same with the pair overrides given: for loops over many contacts, which find the table
+/// once (`registry.ctx().find<material_mix_table>()`).
+/// @param table The pair overrides; null when there are none.
+/// @param a First body's material.
+/// @param b Second body's material.
+/// @return The mixed material.
+material_base get_mixed_material(const material_mix_table *table, const material &a, const material &b);
 
-/// Whether the points of `manifold` may each have their own material: the manifold's
-/// `point_materials` once the narrowphase has worked it out, else has_per_vertex_material() of
-/// its bodies (a manifold the narrowphase has not collided yet).
-/// @param registry The registry the manifold's bodies live in.
-/// @param manifold The manifold.
-/// @return Whether per-point materials may apply to the manifold's points.
-bool has_per_vertex_material(const registry &registry, const contact_manifold &manifold);
+/// Whether contact points on a shape may each have a material of their own, which
+/// get_point_material then gives them: a triangle mesh with per-vertex friction or restitution,
+/// or a paged mesh (whose pages tell when loaded); no other shape.
+/// @param shape The shape.
+/// @return Whether per-point materials may apply to points on it.
+bool has_point_materials(const mesh_shape &shape);
+/// @copydoc has_point_materials(const mesh_shape &)
+bool has_point_materials(const paged_mesh_shape &shape);
+/// Every other shape: its points take the bodies' materials.
+/// @param shape The shape.
+/// @return False.
+template<typename Shape>
+bool has_point_materials([[maybe_unused]] const Shape &shape) {
+    return false;
+}
 
 /// The material at one contact point of bodies `a` and `b`.
 /// A pair override when one exists; otherwise each mesh body's friction and restitution

@@ -8,6 +8,7 @@
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/contact_order.hpp"
 #include "edyn/constraints/contact_solver.hpp"
+#include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/parallel/background_tasks.hpp"
 #include "edyn/parallel/stage_queue.hpp"
@@ -86,9 +87,14 @@ struct world_state {
     /// The joints (non-contact constraints) being solved.
     constraint_solver_state joints;
 
-    /// What the narrowphase reads of a body with a broadphase proxy, gathered once a step so
-    /// that its loop over the manifolds looks nothing up in the registry.
-    /// One cache line each: the narrowphase reads two per manifold, in no predictable order.
+    /// How a body's shape resists rolling in a contact (see contact_solver_constraint's roll
+    /// axes): not at all, about both tangents (a sphere, a capsule), or about its main axis only
+    /// (a cylinder along x, y or z).
+    enum class rolling : std::uint8_t { none, both_tangents, about_x, about_y, about_z };
+    /// What the narrowphase and the contacts' gathering read of a body with a broadphase proxy,
+    /// gathered once a step so that their loops over the manifolds look nothing up in the
+    /// registry. One cache line each (in single precision): the loops read two per manifold, in
+    /// no predictable order.
     struct alignas(64) collision_body {
         vector3 origin{vector3_zero};                ///< get_rigidbody_origin (m).
         quaternion orientation{quaternion_identity}; ///< The body's orientation.
@@ -96,12 +102,19 @@ struct world_state {
         scalar spin_reach{0};                        ///< |angvel| × its reach from its centre of mass (m/s).
         scalar bounding_radius{large_scalar};        ///< shape_bounding_radius of its shape (m).
         std::uint32_t shape_epoch{0};                ///< Its shape_epoch, 0 without one.
-        bool dynamic{false};                         ///< Whether it has a dynamic_tag.
-        bool resting{false};                         ///< Whether it is static or asleep.
-        bool has_shape{false};                       ///< Whether it has a shape_index.
+        bool dynamic : 1 {false};                    ///< Whether it has a dynamic_tag.
+        bool resting : 1 {false};                    ///< Whether it is static or asleep.
+        bool has_shape : 1 {false};                  ///< Whether it has a shape_index.
+        /// Whether its points may have materials of their own (has_point_materials).
+        bool point_materials : 1 {false};
+        rolling rolls{rolling::none}; ///< How its shape resists rolling.
+        const material *mat{nullptr}; ///< Its material; null without one (a sensor).
     };
     /// The collision_body of every body with a proxy, by entity index (others are stale).
     std::vector<collision_body> collision_bodies;
+    /// The position (centre of mass) of every body with a proxy, by entity index as
+    /// `collision_bodies`: apart from it because only the contacts' gathering reads it.
+    std::vector<vector3> collision_centres;
     /// The AABB component of every body with a proxy, by entity index as `collision_bodies`:
     /// apart from it because only pairs without points read it.
     std::vector<AABB> collision_aabbs;
