@@ -45,20 +45,24 @@ void run_extrapolation(const extrapolation_input &input, extrapolation_result &r
     auto remote_to_job =
         detail::entity_mapper([&](entity e) { return to_job.find(input.remote_to_local.find(e)); });
 
+    auto dt = double(input.settings.fixed_dt);
+    // An input belongs to the step whose time is within half a step of its own, as on the server
+    // (apply_due_snapshots): client and server times fall on steps only give or take rounding.
+    auto half_step = dt / 2;
+
     apply(job, input.types, input.world, to_job, local_to_job);
     auto next_input = std::size_t{0};
     while (next_input < input.inputs.size() && input.inputs[next_input].time <= input.start_time)
         apply(job, input.types, input.inputs[next_input++], to_job, remote_to_job);
     apply(job, input.types, input.snapshot, to_job, remote_to_job);
 
-    auto dt = double(input.settings.fixed_dt);
     // Capped in floating point before converting: times from the network may be far apart,
     // or not finite, and a double beyond the range of unsigned must never reach the conversion.
     auto due = std::round((input.end_time - input.start_time) / dt);
     auto steps = due > 0 ? unsigned(std::min(due, double(max_extrapolation_steps))) : 0u;
     for (unsigned k = 0; k < steps; ++k) {
         auto time = input.start_time + k * dt;
-        while (next_input < input.inputs.size() && input.inputs[next_input].time <= time)
+        while (next_input < input.inputs.size() && input.inputs[next_input].time <= time + half_step)
             apply(job, input.types, input.inputs[next_input++], to_job, remote_to_job);
         step_simulation(job);
     }
