@@ -61,9 +61,9 @@ int main() {
         edyn::scalar restitution;
         edyn::scalar peak{0};
         bool bounced{false};
-    } drops[] = {{"billiard ball (pair entry)", drop_ball(registry, 0, billiard), 0.5f},
-                 {"rubber ball (default mixing)", drop_ball(registry, 1, rubber), 0.8f},
-                 {"clay ball (default mixing)", drop_ball(registry, 2, clay), 0.2f}};
+    } drops[] = {{"billiard ball (pair entry)", drop_ball(registry, 0, billiard), edyn::scalar(0.5)},
+                 {"rubber ball (default mixing)", drop_ball(registry, 1, rubber), edyn::scalar(0.8)},
+                 {"clay ball (default mixing)", drop_ball(registry, 2, clay), edyn::scalar(0.2)}};
 
     // The mixed material the contacts will use.
     for (auto &d : drops) {

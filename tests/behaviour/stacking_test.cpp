@@ -135,6 +135,13 @@ TEST_F(stacking, tower_of_30_boxes_with_sleeping_off_leans_no_further_than_when_
 // tall stacks kept awake: it leans less. Measured when this bound was set: 1.9 cm at 10 s with
 // 12 sub-steps against 6.7 cm with the default 6; the bound is that and a fifth, and the lean
 // must stay under half the default's, run again here.
+// In double precision the tower leans 4.1 cm with 12 sub-steps against 5.5 cm with 6. The
+// difference is not the solver: integrate() leaves an orientation alone when a sub-step turns it
+// by less than epsilon (16 machine epsilons: 1.9e-6 rad in float), so in float a sub-step drops
+// angular velocities under 1.4e-3 rad/s (12 sub-steps) or 6.9e-4 rad/s (6), and with them much
+// of the tower's slow tilt; double integrates them. (The double build with float's threshold
+// leans 2.0 and 6.8 cm.) Both results are deterministic: a 1e-5 m or 1e-5 rad nudge to the
+// tower leaves them unchanged to 0.1 mm.
 TEST_F(stacking, tower_of_30_boxes_with_sleeping_off_leans_less_with_more_substeps) {
     scenes::make_ground(reg);
     auto by_default = run_awake(scenes::make_tower(reg, 30), 10);
@@ -145,10 +152,15 @@ TEST_F(stacking, tower_of_30_boxes_with_sleeping_off_leans_less_with_more_subste
     set_solver_substeps(reg, 12);
     scenes::make_ground(reg);
     auto stiffer = run_awake(scenes::make_tower(reg, 30), 10);
-    const scalar measured_when_set = scalar(0.019), bound = measured_when_set * scalar(1.2);
+#ifdef EDYN_DOUBLE_PRECISION
+    const scalar measured_when_set = scalar(0.0414), share_of_default = scalar(0.8);
+#else
+    const scalar measured_when_set = scalar(0.019), share_of_default = scalar(0.5);
+#endif
+    const scalar bound = measured_when_set * scalar(1.2);
     EXPECT_LT(stiffer.horizontal, bound)
         << "a box moved sideways by " << stiffer.horizontal << " m, bound " << bound << " m";
-    EXPECT_LT(stiffer.horizontal, by_default.horizontal / 2)
+    EXPECT_LT(stiffer.horizontal, by_default.horizontal * share_of_default)
         << "12 sub-steps: " << stiffer.horizontal << " m, 6: " << by_default.horizontal << " m";
 }
 
