@@ -172,7 +172,8 @@ void gather_contact(const storage<contact_manifold> &manifold_pool, const materi
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &cp = manifold.point[manifold.ids[i]];
         // Not cleared first: prepare_contacts() or the point's bundle makes every field not set
-        // here (a 244-byte clear per point was a tenth of this function's time).
+        // here (clearing each point, 244 bytes in single precision, took a third of this
+        // function's time in the 20-wide pyramid).
         auto &p = world.contacts.points[c.first_point + i];
         p.rA = cp.positionA - posA;
         p.rB = cp.positionB - posB;
