@@ -5,6 +5,7 @@
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/simulation/world.hpp"
 #include "network_registry.hpp"
+#include "step_time.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -46,13 +47,15 @@ void run_extrapolation(const extrapolation_input &input, extrapolation_result &r
         detail::entity_mapper([&](entity e) { return to_job.find(input.remote_to_local.find(e)); });
 
     auto dt = double(input.settings.fixed_dt);
-    // An input belongs to the step whose time is within half a step of its own, as on the server
-    // (apply_due_snapshots): client and server times fall on steps only give or take rounding.
-    auto half_step = dt / 2;
+    // An input is due by the step within half a step of its time, as on the server.
+    auto next_input = std::size_t{0};
+    auto due_by = [&](double step_time) {
+        return next_input < input.inputs.size() &&
+               detail::due_by_step(input.inputs[next_input].time, step_time, dt);
+    };
 
     apply(job, input.types, input.world, to_job, local_to_job);
-    auto next_input = std::size_t{0};
-    while (next_input < input.inputs.size() && input.inputs[next_input].time <= input.start_time)
+    while (due_by(input.start_time))
         apply(job, input.types, input.inputs[next_input++], to_job, remote_to_job);
     apply(job, input.types, input.snapshot, to_job, remote_to_job);
 
@@ -62,7 +65,7 @@ void run_extrapolation(const extrapolation_input &input, extrapolation_result &r
     auto steps = due > 0 ? unsigned(std::min(due, double(max_extrapolation_steps))) : 0u;
     for (unsigned k = 0; k < steps; ++k) {
         auto time = input.start_time + k * dt;
-        while (next_input < input.inputs.size() && input.inputs[next_input].time <= time + half_step)
+        while (due_by(time))
             apply(job, input.types, input.inputs[next_input++], to_job, remote_to_job);
         step_simulation(job);
     }

@@ -8,6 +8,7 @@
 #include "entity_set.hpp"
 #include "interest.hpp"
 #include "network_registry.hpp"
+#include "step_time.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -330,10 +331,9 @@ void update_playout_delay(registry &registry, server_context &ctx, entity client
 void apply_due_snapshots(registry &registry, server_client_state &state, double now) {
     auto &types = registry.ctx().get<network_registry>();
     auto due = std::size_t{0};
-    // Times within half a step of now are this step's (client times fall on steps, give or take
-    // rounding).
-    auto until = now + double(get_fixed_dt(registry)) / 2;
-    while (due < state.jitter_buffer.size() && state.jitter_buffer[due].timestamp <= until)
+    auto dt = double(get_fixed_dt(registry));
+    while (due < state.jitter_buffer.size() &&
+           detail::due_by_step(state.jitter_buffer[due].timestamp, now, dt))
         ++due;
     for (std::size_t i = 0; i < due; ++i) {
         auto &snapshot = state.jitter_buffer[i];
