@@ -1,4 +1,5 @@
 #include "edyn/dynamics/material_mixing.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/shapes/mesh_shape.hpp"
 #include "edyn/shapes/paged_mesh_shape.hpp"
 #include <algorithm>
@@ -60,31 +61,36 @@ struct mesh_triangle {
     std::size_t triangle{0};
 };
 
-mesh_triangle per_vertex_triangle(const registry &registry, entity e, std::int32_t part) {
-    if (part < 0) return {};
-    if (auto *shape = registry.try_get<mesh_shape>(e); shape && shape->trimesh) {
-        if (!has_coefficients(*shape->trimesh) || std::size_t(part) >= shape->trimesh->num_triangles())
-            return {};
-        return {shape->trimesh.get(), std::size_t(part)};
-    }
-    if (auto *shape = registry.try_get<paged_mesh_shape>(e); shape && shape->trimesh) {
-        const auto &paged = *shape->trimesh;
-        if (std::size_t(part) >= paged.num_triangles()) return {};
-        auto page = paged.page_of_triangle(std::size_t(part));
-        const auto *mesh = paged.get_page(page);
-        if (!mesh || !has_coefficients(*mesh)) return {};
-        return {mesh, std::size_t(part) - paged.first_triangle(page)};
-    }
+mesh_triangle per_vertex_triangle(const mesh_shape &shape, std::int32_t part) {
+    if (part < 0 || !shape.trimesh || !has_coefficients(*shape.trimesh) ||
+        std::size_t(part) >= shape.trimesh->num_triangles())
+        return {};
+    return {shape.trimesh.get(), std::size_t(part)};
+}
+
+mesh_triangle per_vertex_triangle(const paged_mesh_shape &shape, std::int32_t part) {
+    if (part < 0 || !shape.trimesh) return {};
+    const auto &paged = *shape.trimesh;
+    if (std::size_t(part) >= paged.num_triangles()) return {};
+    auto page = paged.page_of_triangle(std::size_t(part));
+    const auto *mesh = paged.get_page(page);
+    if (!mesh || !has_coefficients(*mesh)) return {};
+    return {mesh, std::size_t(part) - paged.first_triangle(page)};
+}
+
+// No other shape has per-vertex coefficients.
+template<typename Shape>
+mesh_triangle per_vertex_triangle(const Shape &, std::int32_t) {
     return {};
 }
 
 // The body's material with the mesh's coefficients at `pivot` (object space) on the triangle
 // its feature names, where it has them.
-material_base at_point(const registry &registry, entity e, const material &base,
-                       const std::optional<collision_feature> &feature, const vector3 &pivot) {
+material_base at_point(shape_ref shape, const material &base, const std::optional<collision_feature> &feature,
+                       const vector3 &pivot) {
     material_base m = base;
     if (!feature) return m;
-    auto [mesh, t] = per_vertex_triangle(registry, e, feature->part);
+    auto [mesh, t] = visit_shape(shape, [&](const auto &s) { return per_vertex_triangle(s, feature->part); });
     if (!mesh) return m;
     auto tri = mesh->get_triangle_vertices(t);
     auto w = barycentric_coordinates(pivot, tri[0], tri[1], tri[2]);
@@ -107,15 +113,18 @@ bool has_point_materials(const mesh_shape &shape) {
 bool has_point_materials(const paged_mesh_shape &) { return true; }
 
 material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point) {
-    const auto &mat_a = registry.get<material>(a);
-    const auto &mat_b = registry.get<material>(b);
-    if (mat_a.id != invalid_material_id && mat_b.id != invalid_material_id) {
-        if (auto *table = registry.ctx().find<material_mix_table>()) {
-            if (auto *mixed = table->find(mat_a.id, mat_b.id)) return *mixed;
-        }
+    return get_point_material(registry.ctx().find<material_mix_table>(), registry.get<material>(a),
+                              get_shape_ref(registry, a), registry.get<material>(b),
+                              get_shape_ref(registry, b), point);
+}
+
+material_base get_point_material(const material_mix_table *table, const material &mat_a, shape_ref shape_a,
+                                 const material &mat_b, shape_ref shape_b, const contact_point &point) {
+    if (table && mat_a.id != invalid_material_id && mat_b.id != invalid_material_id) {
+        if (auto *mixed = table->find(mat_a.id, mat_b.id)) return *mixed;
     }
-    auto ma = at_point(registry, a, mat_a, point.featureA, point.pivotA);
-    auto mb = at_point(registry, b, mat_b, point.featureB, point.pivotB);
+    auto ma = at_point(shape_a, mat_a, point.featureA, point.pivotA);
+    auto mb = at_point(shape_b, mat_b, point.featureB, point.pivotB);
     return mix_materials(ma, mb);
 }
 

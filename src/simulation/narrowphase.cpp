@@ -46,23 +46,25 @@ void set_material(contact_point &cp, const material_base &mixed) {
 
 // Mixed material values are stored on new points for the program to read; the solver mixes
 // again every step so that material changes apply at once.
-void fill_materials(const registry &registry, const world_state &world, const material_mix_table *mix_table,
-                    contact_manifold &manifold, const contact_point_changes &changes) {
+void fill_materials(const world_state &world, const material_mix_table *mix_table, contact_manifold &manifold,
+                    const contact_point_changes &changes) {
     auto &bodyA = world.collision_bodies[to_index(manifold.body[0])];
     auto &bodyB = world.collision_bodies[to_index(manifold.body[1])];
-    // Most manifolds have no new point and no per-vertex material: they look nothing up.
+    // Most manifolds have no new point and no per-vertex material: they read nothing more.
     auto per_vertex = bodyA.point_materials || bodyB.point_materials;
     if (changes.num_created == 0 && !per_vertex) return;
-    if (!bodyA.mat || !bodyB.mat) return;
+    auto *matA = world.contact_bodies[to_index(manifold.body[0])].mat;
+    auto *matB = world.contact_bodies[to_index(manifold.body[1])].mat;
+    if (!matA || !matB) return;
     // Per-vertex materials of a mesh: every point, every step, as points move over the mesh.
     if (per_vertex) {
         for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
             auto &cp = manifold.point[manifold.ids[i]];
-            set_material(cp, get_point_material(registry, manifold.body[0], manifold.body[1], cp));
+            set_material(cp, get_point_material(mix_table, *matA, bodyA.shape(), *matB, bodyB.shape(), cp));
         }
         return;
     }
-    auto mixed = get_mixed_material(mix_table, *bodyA.mat, *bodyB.mat);
+    auto mixed = get_mixed_material(mix_table, *matA, *matB);
     for (std::uint32_t i = 0; i < changes.num_created; ++i)
         set_material(manifold.point[changes.created[i]], mixed);
 }
@@ -81,27 +83,30 @@ world_state::rolling rolling_of(const Shape &shape) {
 }
 
 // What collide_manifold and the contacts' gathering read of a body, from the registry and its
-// AABB component; its position (centre of mass) goes to `centre_out`.
+// AABB component: its collision_body, and its contact_body into `contact`.
 world_state::collision_body collision_body_of(const registry &registry, entity e, const AABB &aabb,
-                                              vector3 &centre_out) {
+                                              world_state::contact_body &contact) {
     world_state::collision_body body;
     body.dynamic = registry.all_of<dynamic_tag>(e);
     body.resting = registry.any_of<static_tag, sleeping_tag>(e);
-    body.has_shape = registry.all_of<shape_index>(e);
-    body.mat = registry.try_get<material>(e);
+    contact = {};
+    contact.mat = registry.try_get<material>(e);
     if (auto *epoch = registry.try_get<shape_epoch>(e)) body.shape_epoch = epoch->value;
-    if (!body.has_shape) {
-        if (auto *centre = registry.try_get<position>(e)) centre_out = *centre;
+    if (!registry.all_of<shape_index>(e)) {
+        if (auto *centre = registry.try_get<position>(e)) contact.centre = *centre;
         return body;
     }
-    visit_shape(registry, e, [&](const auto &shape) {
-        body.bounding_radius = shape_bounding_radius(shape);
-        body.point_materials = has_point_materials(shape);
-        body.rolls = rolling_of(shape);
+    auto shape = get_shape_ref(registry, e);
+    body.shape_component = shape.shape;
+    body.shape_kind = static_cast<std::uint8_t>(shape.index);
+    visit_shape(shape, [&](const auto &s) {
+        body.bounding_radius = shape_bounding_radius(s);
+        body.point_materials = has_point_materials(s);
+        contact.rolls = rolling_of(s);
     });
     body.orientation = registry.get<orientation>(e);
     auto &centre = registry.get<position>(e); // of mass
-    centre_out = centre;
+    contact.centre = centre;
     body.origin = rigidbody_origin(centre, body.orientation, registry.try_get<center_of_mass>(e));
     // An upper bound of how fast any of its points moves: its centre of mass's speed, and the
     // spin times the farthest a point of the shape lies from that centre.
@@ -129,10 +134,10 @@ bool shapes_apart(const world_state &world, entity a, entity b, const manifold_t
     return !intersect(inset(aabbA, vector3_one * threshold), aabbB);
 }
 
-// Closest points of one manifold's pair, the manifold updated in place. Reads the registry and
-// writes only the manifold, so that manifolds can be processed at once on several threads.
-contact_point_changes collide_manifold(const registry &registry, const world_state &world,
-                                       contact_manifold &manifold, scalar dt) {
+// Closest points of one manifold's pair, the manifold updated in place. Reads what was gathered
+// of the bodies and writes only the manifold, so that manifolds can be processed at once on
+// several threads.
+contact_point_changes collide_manifold(const world_state &world, contact_manifold &manifold, scalar dt) {
     auto a = manifold.body[0], b = manifold.body[1];
     // Every manifold is the broadphase's, between two bodies with proxies.
     EDYN_ASSERT(std::max(to_index(a), to_index(b)) < world.collision_bodies.size());
@@ -141,7 +146,7 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
     // Only pairs with a dynamic body interact, and two resting bodies stay as they are.
     if (!bodyA.dynamic && !bodyB.dynamic) return {};
     if (bodyA.resting && bodyB.resting) return {};
-    if (!bodyA.has_shape || !bodyB.has_shape) return {};
+    if (!bodyA.shape_component || !bodyB.shape_component) return {};
 
     manifold_transforms tf{bodyA.origin, bodyA.orientation, bodyB.origin, bodyB.orientation};
     // Points are looked for as far as the bodies can travel towards each other in a step,
@@ -164,8 +169,8 @@ contact_point_changes collide_manifold(const registry &registry, const world_sta
     collision_context ctx{tf.posA, tf.ornA, tf.posB, tf.ornB, manifold.separation_threshold};
     collision_result result;
     auto one_point = false;
-    visit_shape(registry, a, [&](const auto &shapeA) {
-        visit_shape(registry, b, [&](const auto &shapeB) {
+    visit_shape(bodyA.shape(), [&](const auto &shapeA) {
+        visit_shape(bodyB.shape(), [&](const auto &shapeB) {
             using A = std::decay_t<decltype(shapeA)>;
             using B = std::decay_t<decltype(shapeB)>;
             if constexpr (!(is_static_only_shape_v<A> && is_static_only_shape_v<B>)) {
@@ -244,7 +249,7 @@ void gather_collision_bodies(const registry &registry, world_state &world) {
     if (world.collision_bodies.size() < index_bound) {
         world.collision_bodies.resize(index_bound);
         world.collision_aabbs.resize(index_bound);
-        world.collision_centres.resize(index_bound);
+        world.contact_bodies.resize(index_bound);
     }
     parallel_for(world.scheduler.get(), std::size_t(0), proxies.num_proxies(), bodies_per_task,
                  [&](std::size_t i) {
@@ -253,7 +258,7 @@ void gather_collision_bodies(const registry &registry, world_state &world) {
                      auto &aabb = world.collision_aabbs[to_index(e)];
                      aabb = registry.get<AABB>(e);
                      world.collision_bodies[to_index(e)] =
-                         collision_body_of(registry, e, aabb, world.collision_centres[to_index(e)]);
+                         collision_body_of(registry, e, aabb, world.contact_bodies[to_index(e)]);
                  });
 }
 
@@ -290,8 +295,8 @@ void collide_manifolds(registry &registry, world_state &world) {
         }
         auto &manifold = manifold_pool.value_at(world.manifold_slots[i]);
         auto &changes = world.manifold_changes[i];
-        changes = collide_manifold(registry, world, manifold, dt);
-        fill_materials(registry, world, mix_table, manifold, changes);
+        changes = collide_manifold(world, manifold, dt);
+        fill_materials(world, mix_table, manifold, changes);
         std::uint8_t live = 0;
         for (std::uint32_t k = 0; k < manifold.num_points; ++k)
             live |= static_cast<std::uint8_t>(1u << manifold.ids[k]);

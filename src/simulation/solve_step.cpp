@@ -23,9 +23,10 @@ namespace {
 
 // Axes about which a contact resists rolling: both tangents for spheres and capsules, only the
 // main axis for cylinders, none for shapes that do not roll.
-std::uint32_t roll_axes(const world_state::collision_body &body, const vector3 &normal, vector3 (&axes)[2]) {
+std::uint32_t roll_axes(world_state::rolling rolls, const quaternion &orientation, const vector3 &normal,
+                        vector3 (&axes)[2]) {
     using rolling = world_state::rolling;
-    switch (body.rolls) {
+    switch (rolls) {
     case rolling::both_tangents:
         plane_space(normal, axes[0], axes[1]);
         return 2;
@@ -33,8 +34,8 @@ std::uint32_t roll_axes(const world_state::collision_body &body, const vector3 &
     case rolling::about_y:
     case rolling::about_z: {
         auto main =
-            static_cast<coordinate_axis>(static_cast<int>(body.rolls) - static_cast<int>(rolling::about_x));
-        auto axis = project_plane(coordinate_axis_vector(main, body.orientation), normal);
+            static_cast<coordinate_axis>(static_cast<int>(rolls) - static_cast<int>(rolling::about_x));
+        auto axis = project_plane(coordinate_axis_vector(main, orientation), normal);
         if (!try_normalize(axis)) return 0;
         axes[0] = axis;
         return 1;
@@ -121,7 +122,7 @@ world_state::edge_contact contact_of_edge(const storage<contact_manifold> &manif
     auto *manifold = manifold_pool.try_get(edge);
     if (!manifold || manifold->num_points == 0) return {};
     auto a = manifold->body[0], b = manifold->body[1];
-    if (!world.collision_bodies[to_index(a)].mat || !world.collision_bodies[to_index(b)].mat)
+    if (!world.contact_bodies[to_index(a)].mat || !world.contact_bodies[to_index(b)].mat)
         return {}; // a sensor
     auto ia = body_index_of(world.body_index, a), ib = body_index_of(world.body_index, b);
     if (ia == static_solver_body && ib == static_solver_body) return {};
@@ -138,9 +139,10 @@ void gather_contact(const storage<contact_manifold> &manifold_pool, const materi
     auto &manifold = manifold_pool.value_at(place.slot);
     auto a = manifold.body[0], b = manifold.body[1];
     auto &bodyA = world.collision_bodies[to_index(a)], &bodyB = world.collision_bodies[to_index(b)];
-    auto mixed = get_mixed_material(mix_table, *bodyA.mat, *bodyB.mat);
+    auto &contactA = world.contact_bodies[to_index(a)], &contactB = world.contact_bodies[to_index(b)];
+    auto mixed = get_mixed_material(mix_table, *contactA.mat, *contactB.mat);
     // The narrowphase left the pivots in world space; offsets are from the centres of mass.
-    auto &posA = world.collision_centres[to_index(a)], &posB = world.collision_centres[to_index(b)];
+    auto &posA = contactA.centre, &posB = contactB.centre;
 
     auto &c = world.contacts.constraints[place.constraint];
     c.first_point = place.first_point;
@@ -194,8 +196,9 @@ void gather_contact(const storage<contact_manifold> &manifold_pool, const materi
     }
     c.num_roll_axes = 0;
     if (c.roll_friction > 0) {
-        c.num_roll_axes = roll_axes(bodyA, c.normal, c.roll_axis);
-        if (c.num_roll_axes == 0) c.num_roll_axes = roll_axes(bodyB, c.normal, c.roll_axis);
+        c.num_roll_axes = roll_axes(contactA.rolls, bodyA.orientation, c.normal, c.roll_axis);
+        if (c.num_roll_axes == 0)
+            c.num_roll_axes = roll_axes(contactB.rolls, bodyB.orientation, c.normal, c.roll_axis);
     } else {
         c.roll_impulse[0] = c.roll_impulse[1] = 0;
     }
@@ -225,13 +228,13 @@ void prefetch_write_back_points(const contact_manifold &manifold) {
 void prefetch_gather_bodies(const world_state &world, const contact_manifold &manifold) {
     for (auto e : manifold.body) {
         prefetch(&world.collision_bodies[to_index(e)], sizeof(world_state::collision_body));
-        prefetch(&world.collision_centres[to_index(e)], sizeof(vector3));
+        prefetch(&world.contact_bodies[to_index(e)], sizeof(world_state::contact_body));
     }
 }
 // ...and, once those have come, their materials.
 void prefetch_gather_materials(const world_state &world, const contact_manifold &manifold) {
     for (auto e : manifold.body) {
-        if (auto *mat = world.collision_bodies[to_index(e)].mat) prefetch(mat, sizeof(material));
+        if (auto *mat = world.contact_bodies[to_index(e)].mat) prefetch(mat, sizeof(material));
     }
 }
 

@@ -13,6 +13,7 @@ namespace edyn {
 
 struct mesh_shape;
 struct paged_mesh_shape;
+struct shape_ref;
 
 /// Default mixing of two friction coefficients: their geometric mean.
 /// One slippery surface makes the contact slippery.
@@ -134,6 +135,18 @@ bool has_point_materials([[maybe_unused]] const Shape &shape) {
 /// @param point The contact point, with its features and object-space pivots.
 /// @return The material for that point.
 material_base get_point_material(const registry &registry, entity a, entity b, const contact_point &point);
+
+/// The same for loops over many contacts, which gather what it reads once: the pair overrides
+/// (null when there are none) and each body's material and shape.
+/// @param table The pair overrides; null when there are none.
+/// @param mat_a The first body's material.
+/// @param shape_a The first body's shape (get_shape_ref).
+/// @param mat_b The second body's material.
+/// @param shape_b The second body's shape.
+/// @param point The contact point, with its features and object-space pivots.
+/// @return The material for that point.
+material_base get_point_material(const material_mix_table *table, const material &mat_a, shape_ref shape_a,
+                                 const material &mat_b, shape_ref shape_b, const contact_point &point);
 
 } // namespace edyn
 

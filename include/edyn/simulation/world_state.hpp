@@ -10,6 +10,7 @@
 #include "edyn/constraints/contact_solver.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/solver_body.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/parallel/background_tasks.hpp"
 #include "edyn/parallel/stage_queue.hpp"
 #include "edyn/parallel/task_scheduler.hpp"
@@ -91,10 +92,9 @@ struct world_state {
     /// axes): not at all, about both tangents (a sphere, a capsule), or about its main axis only
     /// (a cylinder along x, y or z).
     enum class rolling : std::uint8_t { none, both_tangents, about_x, about_y, about_z };
-    /// What the narrowphase and the contacts' gathering read of a body with a broadphase proxy,
-    /// gathered once a step so that their loops over the manifolds look nothing up in the
-    /// registry. One cache line each (in single precision): the loops read two per manifold, in
-    /// no predictable order.
+    /// What the narrowphase reads of a body with a broadphase proxy, gathered once a step so
+    /// that its loop over the manifolds looks nothing up in the registry. One cache line each
+    /// (in single precision): the loop reads two per manifold, in no predictable order.
     struct alignas(64) collision_body {
         vector3 origin{vector3_zero};                ///< get_rigidbody_origin (m).
         quaternion orientation{quaternion_identity}; ///< The body's orientation.
@@ -102,19 +102,29 @@ struct world_state {
         scalar spin_reach{0};                        ///< |angvel| × its reach from its centre of mass (m/s).
         scalar bounding_radius{large_scalar};        ///< shape_bounding_radius of its shape (m).
         std::uint32_t shape_epoch{0};                ///< Its shape_epoch, 0 without one.
-        bool dynamic : 1 {false};                    ///< Whether it has a dynamic_tag.
-        bool resting : 1 {false};                    ///< Whether it is static or asleep.
-        bool has_shape : 1 {false};                  ///< Whether it has a shape_index.
+        std::uint8_t dynamic : 1 {0};                ///< Whether it has a dynamic_tag.
+        std::uint8_t resting : 1 {0};                ///< Whether it is static or asleep.
         /// Whether its points may have materials of their own (has_point_materials).
-        bool point_materials : 1 {false};
+        std::uint8_t point_materials : 1 {0};
+        std::uint8_t shape_kind : 5 {0};      ///< Its shape's index in shapes_variant_t (shape_ref::index).
+        const void *shape_component{nullptr}; ///< Its shape component; null without a shape_index.
+
+        /// Its shape, for visit_shape (the body must have one).
+        shape_ref shape() const { return {shape_component, shape_kind}; }
+    };
+    static_assert(num_shapes <= 32, "collision_body::shape_kind must hold every shape's index");
+    /// The collision_body of every body with a proxy, by entity index (others are stale).
+    std::vector<collision_body> collision_bodies;
+    /// What the contacts' gathering reads of a body besides its collision_body, and what the
+    /// narrowphase reads to give new points their materials: apart from collision_body because
+    /// most manifolds do not read it in the narrowphase.
+    struct contact_body {
+        vector3 centre{vector3_zero}; ///< Its position (centre of mass).
         rolling rolls{rolling::none}; ///< How its shape resists rolling.
         const material *mat{nullptr}; ///< Its material; null without one (a sensor).
     };
-    /// The collision_body of every body with a proxy, by entity index (others are stale).
-    std::vector<collision_body> collision_bodies;
-    /// The position (centre of mass) of every body with a proxy, by entity index as
-    /// `collision_bodies`: apart from it because only the contacts' gathering reads it.
-    std::vector<vector3> collision_centres;
+    /// The contact_body of every body with a proxy, by entity index as `collision_bodies`.
+    std::vector<contact_body> contact_bodies;
     /// The AABB component of every body with a proxy, by entity index as `collision_bodies`:
     /// apart from it because only pairs without points read it.
     std::vector<AABB> collision_aabbs;

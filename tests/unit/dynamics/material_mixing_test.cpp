@@ -1,5 +1,6 @@
 // Default material mixing and pair overrides (material_mixing.hpp).
 #include <cmath>
+#include <edyn/dynamics/visit_shape.hpp>
 #include <edyn/edyn.hpp>
 #include <gtest/gtest.h>
 #include <limits>
@@ -182,4 +183,57 @@ TEST(material_mixing, insert_checks_what_make_rigidbody_checks) {
     insert_material_mixing(reg, 2, 3, soft);
     EXPECT_EQ(*reg.ctx().get<material_mix_table>().find(2, 3), soft);
     detach(reg);
+}
+
+TEST(material_mixing, a_point_on_a_mesh_takes_the_friction_between_its_triangles_vertices) {
+    // One triangle whose friction is 0, 1 and 0 at its corners: at barycentric (0.2, 0.5, 0.3) the
+    // mesh's friction is 0.5, mixed with the box's 1 by the geometric mean.
+    auto mesh = std::make_shared<triangle_mesh>();
+    std::vector<vector3> vertices{{0, 0, 0}, {2, 0, 0}, {0, 0, 2}};
+    std::vector<std::uint32_t> indices{0, 2, 1};
+    std::vector<scalar> friction{0, 1, 0};
+    mesh->insert_vertices(vertices.begin(), vertices.end());
+    mesh->insert_indices(indices.begin(), indices.end());
+    mesh->insert_friction_coefficients(friction.begin(), friction.end());
+    mesh->initialize();
+
+    registry reg;
+    rigidbody_def floor_def;
+    floor_def.kind = rigidbody_kind::rb_static;
+    floor_def.shape = mesh_shape{mesh};
+    floor_def.material->restitution = scalar(0.1);
+    auto floor = make_rigidbody(reg, floor_def);
+    rigidbody_def box_def;
+    box_def.shape = box_shape{vector3{scalar(0.5), scalar(0.5), scalar(0.5)}};
+    box_def.material->friction = 1;
+    box_def.material->restitution = scalar(0.4);
+    auto box = make_rigidbody(reg, box_def);
+
+    contact_point cp;
+    cp.pivotA = vertices[0] * scalar(0.2) + vertices[1] * scalar(0.5) + vertices[2] * scalar(0.3);
+    cp.featureA = collision_feature{};
+    cp.featureA->part = 0;
+    auto at_point = get_point_material(reg, floor, box, cp);
+    EXPECT_NEAR(at_point.friction, std::sqrt(scalar(0.5)), scalar(1e-5));
+    EXPECT_EQ(at_point.restitution, scalar(0.4));
+    // The form for loops, given what it reads, gives the same.
+    auto looped = get_point_material(nullptr, reg.get<material>(floor), get_shape_ref(reg, floor),
+                                     reg.get<material>(box), get_shape_ref(reg, box), cp);
+    EXPECT_EQ(looped, at_point);
+    // A point that names no triangle takes the bodies' materials.
+    contact_point plain = cp;
+    plain.featureA.reset();
+    EXPECT_EQ(get_point_material(reg, floor, box, plain),
+              mix_materials(reg.get<material>(floor), reg.get<material>(box)));
+    // A pair override wins over the mesh's coefficients, in both forms.
+    reg.patch<material>(floor, [](material &m) { m.id = 1; });
+    reg.patch<material>(box, [](material &m) { m.id = 2; });
+    material_base override;
+    override.friction = scalar(0.05);
+    insert_material_mixing(reg, 1, 2, override);
+    EXPECT_EQ(get_point_material(reg, floor, box, cp), override);
+    EXPECT_EQ(get_point_material(reg.ctx().find<material_mix_table>(), reg.get<material>(floor),
+                                 get_shape_ref(reg, floor), reg.get<material>(box), get_shape_ref(reg, box),
+                                 cp),
+              override);
 }

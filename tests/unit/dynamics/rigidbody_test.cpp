@@ -1,5 +1,6 @@
 // rigidbody_def validation, make_rigidbody and the functions that change a body.
 #include <cmath>
+#include <edyn/dynamics/visit_shape.hpp>
 #include <edyn/edyn.hpp>
 #include <functional>
 #include <gtest/gtest.h>
@@ -459,4 +460,25 @@ TEST_F(rigidbody_test, changing_kind_and_shape_updates_the_mass_properties) {
     EXPECT_THROW(rigidbody_set_shape(reg, e, shapes_variant_t{sphere_shape{0}}), std::invalid_argument);
     EXPECT_TRUE(reg.all_of<sphere_shape>(e)) << "a rejected shape must leave the old one";
     EXPECT_THROW(rigidbody_set_kind(reg, reg.create(), rigidbody_kind::rb_static), std::invalid_argument);
+}
+
+TEST(rigidbody, a_shape_ref_reaches_the_body_s_shape_component) {
+    registry reg;
+    std::vector<shapes_variant_t> shapes{sphere_shape{scalar(0.5)}, box_shape{vector3{1, 2, 3}},
+                                         cylinder_shape{scalar(0.5), 1, coordinate_axis::z},
+                                         capsule_shape{scalar(0.25), 1, coordinate_axis::x}};
+    for (auto &shape : shapes) {
+        rigidbody_def def;
+        def.shape = shape;
+        auto e = make_rigidbody(reg, def);
+        auto ref = get_shape_ref(reg, e);
+        EXPECT_EQ(ref.index, reg.get<shape_index>(e).value);
+        EXPECT_EQ(ref.index, shape.index());
+        // Visiting through the ref sees the component itself, as visiting through the registry.
+        auto address = visit_shape(ref, [](const auto &s) { return static_cast<const void *>(&s); });
+        EXPECT_EQ(address, ref.shape);
+        EXPECT_EQ(address, visit_shape(reg, e, [](const auto &s) { return static_cast<const void *>(&s); }));
+        std::visit([&](const auto &s) { EXPECT_EQ(ref.shape, &reg.get<std::decay_t<decltype(s)>>(e)); },
+                   shape);
+    }
 }
