@@ -96,35 +96,41 @@ void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::
 
 #else
 
+// Any other representation of the lanes: the bodies' fields copied into arrays of lanes first.
 wide_body gather(const solver_body *bodies, const solver_body_index (&index)[lanes]) {
-    wide_body b;
+    scalar f[14][lanes];
     for (std::uint32_t i = 0; i < lanes; ++i) {
         auto &s = bodies[index[i]];
-        b.linvel.x.v[i] = s.linvel.x;
-        b.linvel.y.v[i] = s.linvel.y;
-        b.linvel.z.v[i] = s.linvel.z;
-        b.angvel.x.v[i] = s.angvel.x;
-        b.angvel.y.v[i] = s.angvel.y;
-        b.angvel.z.v[i] = s.angvel.z;
-        b.delta_position.x.v[i] = s.delta_position.x;
-        b.delta_position.y.v[i] = s.delta_position.y;
-        b.delta_position.z.v[i] = s.delta_position.z;
-        b.delta_rotation.x.v[i] = s.delta_rotation.x;
-        b.delta_rotation.y.v[i] = s.delta_rotation.y;
-        b.delta_rotation.z.v[i] = s.delta_rotation.z;
-        b.delta_rotation.w.v[i] = s.delta_rotation.w;
-        b.inv_mass.v[i] = s.inv_mass;
+        const scalar in[14] = {s.linvel.x,         s.linvel.y,         s.linvel.z,         s.angvel.x,
+                               s.angvel.y,         s.angvel.z,         s.delta_position.x, s.delta_position.y,
+                               s.delta_position.z, s.delta_rotation.x, s.delta_rotation.y, s.delta_rotation.z,
+                               s.delta_rotation.w, s.inv_mass};
+        for (std::size_t k = 0; k < 14; ++k)
+            f[k][i] = in[k];
     }
+    wide_body b;
+    b.linvel = {wide_load(f[0]), wide_load(f[1]), wide_load(f[2])};
+    b.angvel = {wide_load(f[3]), wide_load(f[4]), wide_load(f[5])};
+    b.delta_position = {wide_load(f[6]), wide_load(f[7]), wide_load(f[8])};
+    b.delta_rotation = {wide_load(f[9]), wide_load(f[10]), wide_load(f[11]), wide_load(f[12])};
+    b.inv_mass = wide_load(f[13]);
     return b;
 }
 
 void scatter(solver_body *bodies, const solver_body_index (&index)[lanes], std::uint32_t bits,
              const wide_body &b) {
+    scalar f[6][lanes];
+    wide_store(f[0], b.linvel.x);
+    wide_store(f[1], b.linvel.y);
+    wide_store(f[2], b.linvel.z);
+    wide_store(f[3], b.angvel.x);
+    wide_store(f[4], b.angvel.y);
+    wide_store(f[5], b.angvel.z);
     for (std::uint32_t i = 0; i < lanes; ++i) {
         if (!(bits & (1u << i))) continue;
         auto &s = bodies[index[i]];
-        s.linvel = {b.linvel.x.v[i], b.linvel.y.v[i], b.linvel.z.v[i]};
-        s.angvel = {b.angvel.x.v[i], b.angvel.y.v[i], b.angvel.z.v[i]};
+        s.linvel = {f[0][i], f[1][i], f[2][i]};
+        s.angvel = {f[3][i], f[4][i], f[5][i]};
     }
 }
 

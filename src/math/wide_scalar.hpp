@@ -5,21 +5,27 @@
 // side: four, or eight in a build with EDYN_AVX2. Every operation is the IEEE operation of its
 // scalar counterpart, lane by lane, without fused multiply-adds, so that a lane computes exactly
 // what the scalar code computes for the same inputs, and a build gives one result whichever path
-// it compiles (AVX2 or SSE2 for float on x86-64, plain arrays elsewhere).
+// it compiles (AVX2 or SSE2 registers on x86-64, for float or double; plain arrays elsewhere).
 
 #include "edyn/math/scalar.hpp"
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 
-#if defined(EDYN_AVX2) && !defined(EDYN_DOUBLE_PRECISION)
-#ifndef __AVX2__
+#if defined(EDYN_AVX2) && !defined(__AVX2__)
 #error "EDYN_AVX2 needs the library compiled with -mavx2 (the CMake option EDYN_AVX2 does both)"
 #endif
+#if defined(EDYN_AVX2) && !defined(EDYN_DOUBLE_PRECISION)
 #define EDYN_WIDE_AVX2 1
 #include <immintrin.h>
 #elif defined(__SSE2__) && !defined(EDYN_DOUBLE_PRECISION)
 #define EDYN_WIDE_SSE2 1
+#include <emmintrin.h>
+#elif defined(EDYN_AVX2)
+#define EDYN_WIDE_DOUBLE_AVX 1 // eight doubles in two registers of four
+#include <immintrin.h>
+#elif defined(__SSE2__)
+#define EDYN_WIDE_DOUBLE_SSE2 1 // four doubles in two registers of two
 #include <emmintrin.h>
 #endif
 
@@ -125,6 +131,108 @@ inline bool any(wide_mask m) noexcept { return _mm_movemask_ps(m.m) != 0; }
 inline wide std_max(wide a, wide b) noexcept { return {_mm_max_ps(b.v, a.v)}; }
 // std::clamp(a, lo, hi) for lo <= hi: (a < lo) ? lo : (hi < a) ? hi : a.
 inline wide std_clamp(wide a, wide lo, wide hi) noexcept { return {_mm_min_ps(hi.v, _mm_max_ps(lo.v, a.v))}; }
+
+#elif defined(EDYN_WIDE_DOUBLE_AVX) || defined(EDYN_WIDE_DOUBLE_SSE2)
+
+// The lanes of a double-precision build: two registers, each holding half of them. The
+// operations on one register are the same four or two IEEE operations the scalar code does.
+#ifdef EDYN_WIDE_DOUBLE_AVX
+using wide_half = __m256d;
+inline wide_half half_load(const double *p) noexcept { return _mm256_loadu_pd(p); }
+inline void half_store(double *p, wide_half a) noexcept { _mm256_storeu_pd(p, a); }
+inline wide_half half_set(double s) noexcept { return _mm256_set1_pd(s); }
+inline wide_half half_from_counts(const std::uint32_t *p) noexcept {
+    return _mm256_cvtepi32_pd(_mm_loadu_si128(reinterpret_cast<const __m128i *>(p)));
+}
+inline wide_half half_add(wide_half a, wide_half b) noexcept { return _mm256_add_pd(a, b); }
+inline wide_half half_sub(wide_half a, wide_half b) noexcept { return _mm256_sub_pd(a, b); }
+inline wide_half half_mul(wide_half a, wide_half b) noexcept { return _mm256_mul_pd(a, b); }
+inline wide_half half_div(wide_half a, wide_half b) noexcept { return _mm256_div_pd(a, b); }
+inline wide_half half_xor(wide_half a, wide_half b) noexcept { return _mm256_xor_pd(a, b); }
+inline wide_half half_and(wide_half a, wide_half b) noexcept { return _mm256_and_pd(a, b); }
+inline wide_half half_or(wide_half a, wide_half b) noexcept { return _mm256_or_pd(a, b); }
+inline wide_half half_less(wide_half a, wide_half b) noexcept { return _mm256_cmp_pd(a, b, _CMP_LT_OS); }
+inline wide_half half_select(wide_half m, wide_half a, wide_half b) noexcept {
+    return _mm256_blendv_pd(b, a, m);
+}
+inline wide_half half_sqrt(wide_half a) noexcept { return _mm256_sqrt_pd(a); }
+inline wide_half half_max(wide_half a, wide_half b) noexcept { return _mm256_max_pd(a, b); }
+inline wide_half half_min(wide_half a, wide_half b) noexcept { return _mm256_min_pd(a, b); }
+inline int half_movemask(wide_half m) noexcept { return _mm256_movemask_pd(m); }
+#else
+using wide_half = __m128d;
+inline wide_half half_load(const double *p) noexcept { return _mm_loadu_pd(p); }
+inline void half_store(double *p, wide_half a) noexcept { _mm_storeu_pd(p, a); }
+inline wide_half half_set(double s) noexcept { return _mm_set1_pd(s); }
+inline wide_half half_from_counts(const std::uint32_t *p) noexcept {
+    return _mm_cvtepi32_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p)));
+}
+inline wide_half half_add(wide_half a, wide_half b) noexcept { return _mm_add_pd(a, b); }
+inline wide_half half_sub(wide_half a, wide_half b) noexcept { return _mm_sub_pd(a, b); }
+inline wide_half half_mul(wide_half a, wide_half b) noexcept { return _mm_mul_pd(a, b); }
+inline wide_half half_div(wide_half a, wide_half b) noexcept { return _mm_div_pd(a, b); }
+inline wide_half half_xor(wide_half a, wide_half b) noexcept { return _mm_xor_pd(a, b); }
+inline wide_half half_and(wide_half a, wide_half b) noexcept { return _mm_and_pd(a, b); }
+inline wide_half half_or(wide_half a, wide_half b) noexcept { return _mm_or_pd(a, b); }
+inline wide_half half_less(wide_half a, wide_half b) noexcept { return _mm_cmplt_pd(a, b); }
+inline wide_half half_select(wide_half m, wide_half a, wide_half b) noexcept {
+    return _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b));
+}
+inline wide_half half_sqrt(wide_half a) noexcept { return _mm_sqrt_pd(a); }
+inline wide_half half_max(wide_half a, wide_half b) noexcept { return _mm_max_pd(a, b); }
+inline wide_half half_min(wide_half a, wide_half b) noexcept { return _mm_min_pd(a, b); }
+inline int half_movemask(wide_half m) noexcept { return _mm_movemask_pd(m); }
+#endif
+inline constexpr std::size_t half_lanes = wide_lanes / 2;
+static_assert(sizeof(wide_half) == half_lanes * sizeof(double));
+
+struct wide_mask {
+    wide_half lo, hi;
+};
+
+struct wide {
+    wide_half lo, hi;
+};
+
+inline wide wide_load(const scalar *p) noexcept { return {half_load(p), half_load(p + half_lanes)}; }
+inline void wide_store(scalar *p, wide a) noexcept {
+    half_store(p, a.lo);
+    half_store(p + half_lanes, a.hi);
+}
+inline wide wide_set(scalar s) noexcept { return {half_set(s), half_set(s)}; }
+// Unsigned counts (below 2^31) as scalars.
+inline wide wide_from_counts(const std::uint32_t *p) noexcept {
+    return {half_from_counts(p), half_from_counts(p + half_lanes)};
+}
+inline wide operator+(wide a, wide b) noexcept { return {half_add(a.lo, b.lo), half_add(a.hi, b.hi)}; }
+inline wide operator-(wide a, wide b) noexcept { return {half_sub(a.lo, b.lo), half_sub(a.hi, b.hi)}; }
+inline wide operator*(wide a, wide b) noexcept { return {half_mul(a.lo, b.lo), half_mul(a.hi, b.hi)}; }
+inline wide operator/(wide a, wide b) noexcept { return {half_div(a.lo, b.lo), half_div(a.hi, b.hi)}; }
+inline wide operator-(wide a) noexcept {
+    auto sign = half_set(-0.0);
+    return {half_xor(a.lo, sign), half_xor(a.hi, sign)};
+}
+// a < b, lane by lane.
+inline wide_mask operator<(wide a, wide b) noexcept { return {half_less(a.lo, b.lo), half_less(a.hi, b.hi)}; }
+// Lanes of `a` where the mask is set, of `b` elsewhere.
+inline wide select(wide_mask m, wide a, wide b) noexcept {
+    return {half_select(m.lo, a.lo, b.lo), half_select(m.hi, a.hi, b.hi)};
+}
+inline wide_mask operator&(wide_mask a, wide_mask b) noexcept {
+    return {half_and(a.lo, b.lo), half_and(a.hi, b.hi)};
+}
+inline wide_mask operator|(wide_mask a, wide_mask b) noexcept {
+    return {half_or(a.lo, b.lo), half_or(a.hi, b.hi)};
+}
+// std::sqrt in every lane (correctly rounded, as the scalar one).
+inline wide wide_sqrt(wide a) noexcept { return {half_sqrt(a.lo), half_sqrt(a.hi)}; }
+inline bool any(wide_mask m) noexcept { return (half_movemask(m.lo) | half_movemask(m.hi)) != 0; }
+// std::max(a, b), that is (a < b) ? b : a, in every lane (zeros' signs and NaNs included).
+inline wide std_max(wide a, wide b) noexcept { return {half_max(b.lo, a.lo), half_max(b.hi, a.hi)}; }
+// std::clamp(a, lo, hi) for lo <= hi: (a < lo) ? lo : (hi < a) ? hi : a.
+inline wide std_clamp(wide a, wide lo, wide hi) noexcept {
+    return {half_min(hi.lo, half_max(lo.lo, a.lo)), half_min(hi.hi, half_max(lo.hi, a.hi))};
+}
 
 #else
 
