@@ -141,13 +141,14 @@ struct wide_row {
     wide3 angularA, angularB, inv_angularA, inv_angularB;
 };
 
-wide_row load_row(const scalar (&row)[4][3][lanes]) {
+EDYN_WIDE_INLINE wide_row load_row(const scalar (&row)[4][3][lanes]) {
     return {wide3_load(row[0]), wide3_load(row[1]), wide3_load(row[2]), wide3_load(row[3])};
 }
 
 // Relative velocity along d, as row_velocity() in contact_solver.cpp.
 template<fixed_side F>
-inline wide row_velocity(const wide_row &row, const wide3 &d, const wide_body &a, const wide_body &b) {
+EDYN_WIDE_INLINE wide row_velocity(const wide_row &row, const wide3 &d, const wide_body &a,
+                                   const wide_body &b) {
     if constexpr (F == fixed_side::b) {
         return dot(d, a.linvel) + dot(row.angularA, a.angvel);
     } else if constexpr (F == fixed_side::a) {
@@ -159,7 +160,8 @@ inline wide row_velocity(const wide_row &row, const wide3 &d, const wide_body &a
 
 // Applies the impulse along the row, as apply_row() in contact_solver.cpp.
 template<fixed_side F>
-inline void apply_row(const wide_row &row, const wide3 &d, wide impulse, wide_body &a, wide_body &b) {
+EDYN_WIDE_INLINE void apply_row(const wide_row &row, const wide3 &d, wide impulse, wide_body &a,
+                                wide_body &b) {
     if constexpr (F != fixed_side::a) {
         a.linvel = a.linvel + d * (a.inv_mass * impulse);
         a.angvel = a.angvel + row.inv_angularA * impulse;

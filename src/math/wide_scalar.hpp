@@ -31,6 +31,14 @@
 
 namespace edyn::detail {
 
+// For the helpers on several wide values: a double build's wide3 spans six registers, and the
+// compiler then leaves such helpers out of line unless told, passing their values through memory.
+#if defined(__GNUC__)
+#define EDYN_WIDE_INLINE [[gnu::always_inline]] inline
+#else
+#define EDYN_WIDE_INLINE inline
+#endif
+
 #ifdef EDYN_AVX2
 inline constexpr std::size_t wide_lanes = 8;
 #else
@@ -324,18 +332,24 @@ struct wide3 {
     wide x, y, z;
 };
 
-inline wide3 operator+(const wide3 &a, const wide3 &b) noexcept { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline wide3 operator-(const wide3 &a, const wide3 &b) noexcept { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline wide3 operator*(const wide3 &a, wide s) noexcept { return {a.x * s, a.y * s, a.z * s}; }
-inline wide dot(const wide3 &a, const wide3 &b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline wide3 cross(const wide3 &a, const wide3 &b) noexcept {
+EDYN_WIDE_INLINE wide3 operator+(const wide3 &a, const wide3 &b) noexcept {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+EDYN_WIDE_INLINE wide3 operator-(const wide3 &a, const wide3 &b) noexcept {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+EDYN_WIDE_INLINE wide3 operator*(const wide3 &a, wide s) noexcept { return {a.x * s, a.y * s, a.z * s}; }
+EDYN_WIDE_INLINE wide dot(const wide3 &a, const wide3 &b) noexcept {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+EDYN_WIDE_INLINE wide3 cross(const wide3 &a, const wide3 &b) noexcept {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline wide3 select(wide_mask m, const wide3 &a, const wide3 &b) noexcept {
+EDYN_WIDE_INLINE wide3 select(wide_mask m, const wide3 &a, const wide3 &b) noexcept {
     return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
 }
 // Loads three arrays of lanes (x, y, z).
-inline wide3 wide3_load(const scalar (&p)[3][wide_lanes]) noexcept {
+EDYN_WIDE_INLINE wide3 wide3_load(const scalar (&p)[3][wide_lanes]) noexcept {
     return {wide_load(p[0]), wide_load(p[1]), wide_load(p[2])};
 }
 
@@ -345,7 +359,7 @@ struct wide_matrix3x3 {
 };
 
 // The matrix times a column vector in each lane, as edyn's matrix3x3 operator* computes it.
-inline wide3 operator*(const wide_matrix3x3 &m, const wide3 &v) noexcept {
+EDYN_WIDE_INLINE wide3 operator*(const wide_matrix3x3 &m, const wide3 &v) noexcept {
     return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)};
 }
 
@@ -354,7 +368,7 @@ struct wide_quaternion {
     wide x, y, z, w;
 };
 
-inline wide3 rotate(const wide_quaternion &q, const wide3 &v) noexcept {
+EDYN_WIDE_INLINE wide3 rotate(const wide_quaternion &q, const wide3 &v) noexcept {
     wide3 u{q.x, q.y, q.z};
     auto two = wide_set(scalar(2));
     auto t = cross(u, v) * two;
