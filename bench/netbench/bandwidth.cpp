@@ -14,21 +14,6 @@ namespace edyn_netbench {
 
 namespace {
 
-constexpr edyn::scalar cube_half_extent = 0.25f;
-constexpr edyn::scalar cube_spacing = 1;
-constexpr edyn::scalar player_half_extent = 1;
-constexpr edyn::scalar player_mass = 80;
-// The client steers its cube, from what it sees of it, after a point going round a circle in
-// the middle of the grid at this rate (rad/s), so that the cube keeps ploughing through cubes,
-// as in the article. The circle's radius is this share of the grid's half width, at most the
-// second figure (m): about 4 m/s round the 30 by 30 grid.
-constexpr double path_rate = 0.5;
-constexpr double path_radius_share = 0.55;
-constexpr double max_path_radius = 8;
-// A spring and damper towards that point, capped: about 14 m/s² left after friction.
-constexpr double steer_stiffness = 400;
-constexpr double steer_damping = 250;
-constexpr double max_steer_newtons = 1500;
 // Longest wait for the scene to come to rest, before the drive and after it.
 constexpr double max_settle_seconds = 20;
 
@@ -38,44 +23,6 @@ constexpr double datagram_bytes = 1200;
 // The article's figures, for reference: its uncompressed snapshots and its final result.
 constexpr double article_uncompressed_mbps = 17.37;
 constexpr double article_final_kbps = 256;
-
-edyn::scalar grid_half_width(unsigned grid) { return edyn::scalar(grid - 1) * cube_spacing / 2; }
-
-struct cube_grid {
-    std::vector<edyn::entity> cubes;
-    edyn::entity player{edyn::null};
-};
-
-cube_grid build_scene(edyn::registry &server, unsigned grid) {
-    auto ground = edyn::rigidbody_def{};
-    ground.kind = edyn::rigidbody_kind::rb_static;
-    ground.shape = edyn::plane_shape{{0, 1, 0}, 0};
-    auto g = edyn::make_rigidbody(server, ground);
-    server.emplace<edyn::networked_tag>(g);
-
-    auto out = cube_grid{};
-    auto half_width = grid_half_width(grid);
-    for (unsigned i = 0; i < grid; ++i) {
-        for (unsigned j = 0; j < grid; ++j) {
-            auto def = edyn::rigidbody_def{};
-            def.shape = edyn::box_shape{{cube_half_extent, cube_half_extent, cube_half_extent}};
-            def.mass = 1;
-            def.position = {edyn::scalar(i) * cube_spacing - half_width, cube_half_extent,
-                            edyn::scalar(j) * cube_spacing - half_width};
-            auto e = edyn::make_rigidbody(server, def);
-            server.emplace<edyn::networked_tag>(e);
-            out.cubes.push_back(e);
-        }
-    }
-    auto def = edyn::rigidbody_def{};
-    def.shape = edyn::box_shape{{player_half_extent, player_half_extent, player_half_extent}};
-    def.mass = player_mass;
-    // Just off the grid's edge, a quarter metre from the nearest cubes.
-    def.position = {-half_width - cube_half_extent - player_half_extent - 0.25f, player_half_extent, 0};
-    out.player = edyn::make_rigidbody(server, def);
-    server.emplace<edyn::networked_tag>(out.player);
-    return out;
-}
 
 // Awake bodies that are not moving (below the speeds at which a body may sleep): kept awake by
 // their island, and sent in every snapshot all the same.
@@ -88,18 +35,6 @@ std::size_t awake_still_bodies(const edyn::registry &server) {
          server.view<edyn::dynamic_tag, edyn::linvel, edyn::angvel>(edyn::exclude<edyn::sleeping_tag>).each())
         count += edyn::length_sqr(v) <= lin && edyn::length_sqr(w) <= ang;
     return count;
-}
-
-edyn::vector3 steer(const edyn::registry &client, edyn::entity cube, unsigned grid, double time) {
-    auto radius = std::min(max_path_radius, path_radius_share * double(grid_half_width(grid)));
-    auto target = edyn::vector3{edyn::scalar(-radius * std::cos(path_rate * time)), player_half_extent,
-                                edyn::scalar(-radius * std::sin(path_rate * time))};
-    auto force = (target - client.get<edyn::position>(cube)) * edyn::scalar(steer_stiffness) -
-                 client.get<edyn::linvel>(cube) * edyn::scalar(steer_damping);
-    force.y = 0;
-    auto magnitude = edyn::length(force);
-    if (magnitude > edyn::scalar(max_steer_newtons)) force *= edyn::scalar(max_steer_newtons) / magnitude;
-    return force;
 }
 
 struct phase_figures {
@@ -213,7 +148,7 @@ bandwidth_run run_phases(const options &opt, session &s, client_end &c, edyn::en
     auto drive_start = edyn::get_network_client_time(client);
     run.moving = run_phase("moving", opt.moving_seconds, [&] {
         auto t = edyn::get_network_client_time(client) - drive_start;
-        set_drive(client, local_player, steer(client, local_player, opt.grid, t));
+        set_drive(client, local_player, steer_player(client, local_player, opt.grid, 0, 1, t));
     });
 
     set_drive(client, local_player, edyn::vector3_zero);
@@ -297,7 +232,8 @@ void run_bandwidth(const options &opt, results &out) {
     if (opt.grid == 0) throw std::invalid_argument("edyn-netbench: --grid must be at least 1");
     auto s = session(&setup_registry);
     s.detailed_traffic = true;
-    auto built = build_scene(s.server, opt.grid);
+    auto built = build_cube_grid(s.server, opt.grid, 1);
+    auto player = built.players.front();
     auto cube_count = built.cubes.size() + 1;
     std::fprintf(stderr, "edyn-netbench: bandwidth, %zu cubes at %.0f snapshots/s ... ", cube_count,
                  opt.snapshot_rate);
@@ -311,9 +247,9 @@ void run_bandwidth(const options &opt, results &out) {
     rc.snapshot_rate = opt.snapshot_rate;
     // Kept centred on the player's cube, and wide enough to hold the whole grid wherever it goes.
     rc.aabb_of_interest = {{-100, -100, -100}, {100, 100, 100}};
-    rc.owned_entities.push_back(built.player);
+    rc.owned_entities.push_back(player);
 
-    auto run = run_phases(opt, s, c, built.player);
+    auto run = run_phases(opt, s, c, player);
     report(run, out);
 
     char note[400];

@@ -1,9 +1,12 @@
 // The convergence scenario: clients over a bad network (latency, jitter, loss, duplication,
-// reordering) watching a scene that keeps moving, each driving a box of its own with a scripted
-// input. Two figures: how far each client's copy of every body is from the server's body at
-// the same server time, and how far the server's path of each driven box strays from the path
-// the same script gives over a clean link (same latency, nothing lost or late). Beside them, the
-// floor under the first: how far a world rebuilt from the bodies' motion strays from the original.
+// reordering) watching a scene that keeps moving, each driving a body of its own. Two scenes:
+// a walled arena of bodies thrown about and bouncing, each client driving a box with a scripted
+// input (--arena walls), and the cube grid of Glenn Fiedler's "Snapshot Compression" article,
+// each client steering a large cube through it (--arena cubes). Two figures: how far each
+// client's copy of every body is from the server's body at the same server time, and how far
+// the server's path of each driven body strays from the path the same drive gives over a clean
+// link (same latency, nothing lost or late). Beside them, the floor under the first: how far a
+// world rebuilt from the bodies' motion strays from the original.
 #include "netbench.hpp"
 #include "session.hpp"
 #include <algorithm>
@@ -29,8 +32,19 @@ constexpr edyn::scalar driven_mass = 10;
 constexpr double drive_newtons = 160;
 
 enum body_kind : std::uint8_t { own_box, other_driven_box, free_body, kind_count };
-const char *kind_names[] = {"its own driven box", "other clients' driven boxes",
-                            "thrown and bouncing bodies"};
+
+bool in_cube_grid(const options &opt) { return opt.arena == "cubes"; }
+
+const char *kind_name(const options &opt, body_kind kind) {
+    switch (kind) {
+    case own_box:
+        return in_cube_grid(opt) ? "its own cube" : "its own driven box";
+    case other_driven_box:
+        return in_cube_grid(opt) ? "other players' cubes" : "other clients' driven boxes";
+    default:
+        return in_cube_grid(opt) ? "the grid's small cubes" : "thrown and bouncing bodies";
+    }
+}
 
 // A fixed generator for the scene, so that every run builds the same one.
 struct scene_random {
@@ -64,7 +78,7 @@ struct scene {
 
 // A walled arena; spheres bouncing (restitution 0.9) and boxes thrown tumbling, all with
 // velocities of a few metres a second; one box per client on a circle, for it to drive.
-scene build_scene(edyn::registry &server, unsigned bodies, unsigned clients) {
+scene build_arena(edyn::registry &server, unsigned bodies, unsigned clients) {
     auto ground = edyn::rigidbody_def{};
     ground.kind = edyn::rigidbody_kind::rb_static;
     ground.shape = edyn::plane_shape{{0, 1, 0}, 0};
@@ -112,7 +126,13 @@ scene build_scene(edyn::registry &server, unsigned bodies, unsigned clients) {
     return out;
 }
 
-// The script each client follows: a force turning in the horizontal plane, a function of the
+scene build_scene(edyn::registry &server, const options &opt) {
+    if (!in_cube_grid(opt)) return build_arena(server, opt.bodies, opt.clients);
+    auto grid = build_cube_grid(server, opt.grid, opt.clients);
+    return {std::move(grid.cubes), std::move(grid.players)};
+}
+
+// The script each client follows in the arena: a force turning in the horizontal plane, a function of the
 // client's time only (the server time at which it applies), so that it is the same in every
 // run whatever the network does. It starts at a fixed time, by which every client has joined
 // over any link the benchmark simulates, rather than whenever the client gets its box.
@@ -123,6 +143,16 @@ edyn::vector3 scripted_force(unsigned client, double time) {
     auto phase = 2.1 * client;
     return {edyn::scalar(drive_newtons * std::cos(2 * time + phase)), 0,
             edyn::scalar(drive_newtons * std::sin(1.6 * time + phase))};
+}
+
+// The drive of client `client`'s body `driven`, as `registry` shows it, at the client's time
+// `time`: the arena's script, or in the cube grid the player's steering from where it sees its
+// cube (which therefore depends on what the network did).
+edyn::vector3 drive_force(const options &opt, const edyn::registry &registry, edyn::entity driven,
+                          unsigned client, double time) {
+    if (!in_cube_grid(opt)) return scripted_force(client, time);
+    if (time < drive_start) return edyn::vector3_zero;
+    return steer_player(registry, driven, opt.grid, client, opt.clients, time - drive_start);
 }
 
 // The server's positions of the tracked bodies after each step.
@@ -196,7 +226,7 @@ void set_at(std::vector<T> &list, std::size_t i, const T &value) {
 
 run_figures run_once(const options &opt, unsigned run, bool lossy) {
     auto s = session(&setup_registry);
-    auto built = build_scene(s.server, opt.bodies, opt.clients);
+    auto built = build_scene(s.server, opt);
     auto tracked = built.free_bodies;
     tracked.insert(tracked.end(), built.driven.begin(), built.driven.end());
 
@@ -237,7 +267,7 @@ run_figures run_once(const options &opt, unsigned run, bool lossy) {
             auto &reg = *s.clients[i]->reg;
             auto client_time = edyn::get_network_client_time(reg);
             auto own = edyn::client_local_entity(reg, built.driven[i]);
-            if (own != edyn::null) set_drive(reg, own, scripted_force(i, client_time));
+            if (own != edyn::null) set_drive(reg, own, drive_force(opt, reg, own, i, client_time));
             if (s.now() < settle_time) continue;
             for (std::uint32_t b = 0; b < tracked.size(); ++b) {
                 auto local = edyn::client_local_entity(reg, tracked[b]);
@@ -315,9 +345,10 @@ path_comparison compare_paths(const run_figures &a, const run_figures &b) {
 // ran on. A client with exact snapshots and every input can extrapolate no better: contact
 // points, their impulses, ages and order, and sleep timers are not carried. With `contacts` the
 // rebuilt world also starts with the original's contact points as they were (what no snapshot
-// carries): what is then left is the rounding's share. With `driven` the boxes are driven by the
-// clients' scripts in both worlds, every input known at its step: what is left is what the
-// scene's collisions make of the rebuild alone. Rebuilt every third step after the first second;
+// carries): what is then left is the rounding's share. With `driven` the driven bodies get the
+// clients' drives in both worlds, the rebuilt world the very forces the original had at each
+// step: every input known at its step, what is left is what the scene's collisions make of the
+// rebuild alone. Rebuilt every third step after the first second;
 // metres, one value per body and rebuild.
 struct motion_record {
     edyn::vector3 position, linvel, angvel;
@@ -339,11 +370,12 @@ void seed_contacts(edyn::registry &rebuilt, const std::vector<edyn::contact_mani
     }
 }
 
-// Sets each driven box's drive to its script's force at `time`, as the server applies the
-// inputs stamped with it, waking the box as an input does.
-void drive_by_script(edyn::registry &registry, const std::vector<edyn::entity> &driven, double time) {
+// Sets each driven body's drive to its force in `forces`, as the server applies the inputs
+// stamped with a step, waking the body as an input does.
+void set_drives(edyn::registry &registry, const std::vector<edyn::entity> &driven,
+                const std::vector<edyn::vector3> &forces) {
     for (unsigned i = 0; i < driven.size(); ++i) {
-        registry.emplace_or_replace<drive>(driven[i], drive{{}, scripted_force(i, time)});
+        registry.emplace_or_replace<drive>(driven[i], drive{{}, forces[i]});
         if (registry.all_of<edyn::sleeping_tag>(driven[i])) edyn::wake_up_entity(registry, driven[i]);
     }
 }
@@ -353,7 +385,7 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
     auto make_world = [&](edyn::registry &registry) {
         edyn::attach(registry, edyn::init_config{edyn::execution_mode::sequential});
         setup_registry(registry);
-        auto built = build_scene(registry, opt.bodies, opt.clients);
+        auto built = build_scene(registry, opt);
         auto bodies = built.free_bodies;
         bodies.insert(bodies.end(), built.driven.begin(), built.driven.end());
         return bodies;
@@ -380,8 +412,14 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
     auto boxes = boxes_of(bodies);
     // The manifolds with points at each step a world is rebuilt at.
     auto touching = std::vector<std::vector<edyn::contact_manifold>>(steps + 1);
+    // The drives of the step that led to each state, which the rebuilt worlds apply again.
+    auto drives = std::vector<std::vector<edyn::vector3>>(steps + 1);
     for (std::size_t k = 1; k <= steps; ++k) {
-        if (driven) drive_by_script(original, boxes, double(k - 1) * dt);
+        if (driven) {
+            for (unsigned i = 0; i < boxes.size(); ++i)
+                drives[k].push_back(drive_force(opt, original, boxes[i], i, double(k - 1) * dt));
+            set_drives(original, boxes, drives[k]);
+        }
         edyn::step_simulation(original);
         history.push_back(record(original, bodies));
         if (!contacts || !rebuilt_at(k)) continue;
@@ -418,7 +456,7 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
         if (contacts) seed_contacts(rebuilt, touching[k]);
         auto copied_boxes = boxes_of(copies);
         for (unsigned h = 0; h < horizon; ++h) {
-            if (driven) drive_by_script(rebuilt, copied_boxes, double(k + h) * dt);
+            if (driven) set_drives(rebuilt, copied_boxes, drives[k + h + 1]);
             edyn::step_simulation(rebuilt);
         }
         for (std::size_t i = 0; i < copies.size(); ++i)
@@ -432,6 +470,8 @@ std::vector<double> rebuild_errors(const options &opt, unsigned horizon, bool qu
 
 void run_convergence(const options &opt, results &out) {
     if (opt.clients == 0) throw std::invalid_argument("edyn-netbench: convergence needs at least one client");
+    if (in_cube_grid(opt) && opt.grid == 0)
+        throw std::invalid_argument("edyn-netbench: --grid must be at least 1");
     if (opt.seconds <= settle_time)
         throw std::invalid_argument("edyn-netbench: convergence must run longer than its first second");
 
@@ -446,13 +486,19 @@ void run_convergence(const options &opt, results &out) {
         {"client view error, max", "cm", "≤ 5 cm", 5, {}},
         {"client view error, p99", "cm", "", 0, {}},
         {"client view error, median", "cm", "", 0, {}},
-        {std::string("max error on ") + kind_names[own_box], "cm", "", 0, {}},
-        {std::string("max error on ") + kind_names[other_driven_box], "cm", "", 0, {}},
-        {std::string("max error on ") + kind_names[free_body], "cm", "", 0, {}},
+        {std::string("max error on ") + kind_name(opt, own_box), "cm", "", 0, {}},
+        {std::string("max error on ") + kind_name(opt, other_driven_box), "cm", "", 0, {}},
+        {std::string("max error on ") + kind_name(opt, free_body), "cm", "", 0, {}},
         {"client view error against the server's nearest step, max", "cm", "", 0, {}},
         {"client view error against the server's nearest step, p99", "cm", "", 0, {}},
         {"client time's distance from the server's step grid, median", "ms", "", 0, {}},
-        {"driven path vs clean link, max distance", "cm", "≤ 10 cm", 10, {}},
+        // In the cube grid a player steers from what it sees, which the network changes: its
+        // path has no reason to be the clean link's, and the target is the arena's.
+        {"driven path vs clean link, max distance",
+         "cm",
+         in_cube_grid(opt) ? "" : "≤ 10 cm",
+         in_cube_grid(opt) ? 0.0 : 10.0,
+         {}},
         {"driven paths first 1 mm apart at server time", "s", "", 0, {}},
         {"driven steps whose applied input differs from the clean link's", "%", "", 0, {}},
         {"input snapshots that reached the server after their time", "packets", "", 0, {}},
@@ -461,8 +507,10 @@ void run_convergence(const options &opt, results &out) {
     };
     auto compared = std::size_t{0};
     for (unsigned run = 0; run < opt.repeat; ++run) {
-        std::fprintf(stderr, "edyn-netbench: convergence, run %u of %u: %u clients, %u bodies, %.1f s ... ",
-                     run + 1, opt.repeat, opt.clients, opt.bodies, opt.seconds);
+        std::fprintf(stderr,
+                     "edyn-netbench: convergence (%s), run %u of %u: %u clients, %u bodies, %.1f s ... ",
+                     opt.arena.c_str(), run + 1, opt.repeat, opt.clients,
+                     in_cube_grid(opt) ? opt.grid * opt.grid : opt.bodies, opt.seconds);
         std::fflush(stderr);
         auto lossy = run_once(opt, run, true);
         auto clean = run_once(opt, run, false);
@@ -494,18 +542,27 @@ void run_convergence(const options &opt, results &out) {
             char rate[64] = "the library's default rate";
             if (opt.client_snapshot_rate > 0)
                 std::snprintf(rate, sizeof rate, "%.0f a second", opt.client_snapshot_rate);
-            char note[700];
+            char scene[160];
+            if (in_cube_grid(opt)) {
+                std::snprintf(scene, sizeof scene,
+                              "%u×%u small cubes + %u large cubes the clients steer through them", opt.grid,
+                              opt.grid, opt.clients);
+            } else {
+                std::snprintf(scene, sizeof scene,
+                              "%u thrown/bouncing bodies + %u driven boxes in a walled arena", opt.bodies,
+                              opt.clients);
+            }
+            char note[800];
             std::snprintf(note, sizeof note,
-                          "convergence: %u clients, %u thrown/bouncing bodies + %u driven boxes in a walled "
-                          "arena, %.1f s, driven from 1 s on, inputs sent at %s; link %.0f ms one way ± %.0f "
-                          "ms, %.0f%% loss, "
+                          "convergence: %u clients, %s, %.1f s, driven from 1 s on, inputs sent at %s; link "
+                          "%.0f ms one way ± %.0f ms, %.0f%% loss, "
                           "%.0f%% duplication, %.0f%% reordering, against a clean link of the same latency; "
                           "%zu samples (client, body, frame) compared per run after the first second; "
                           "server→client in run 1: %llu packets, %llu lost, %llu duplicated, %llu held back, "
                           "%llu reliable resends",
-                          opt.clients, opt.bodies, opt.clients, opt.seconds, rate, opt.latency * 1000,
-                          opt.jitter * 1000, opt.loss * 100, opt.duplication * 100, opt.reordering * 100,
-                          compared, (unsigned long long)d.packets_sent, (unsigned long long)d.packets_lost,
+                          opt.clients, scene, opt.seconds, rate, opt.latency * 1000, opt.jitter * 1000,
+                          opt.loss * 100, opt.duplication * 100, opt.reordering * 100, compared,
+                          (unsigned long long)d.packets_sent, (unsigned long long)d.packets_lost,
                           (unsigned long long)d.packets_duplicated, (unsigned long long)d.packets_reordered,
                           (unsigned long long)d.retransmissions);
             out.notes.push_back(note);

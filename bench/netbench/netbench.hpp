@@ -20,7 +20,8 @@ struct options {
     bool small{false};
 
     // convergence
-    unsigned repeat{1}; // runs, each with its own link seeds; the table shows their median
+    std::string arena{"walls"}; // the scene: "walls" (thrown and bouncing bodies) or "cubes" (Fiedler's)
+    unsigned repeat{1};         // runs, each with its own link seeds; the table shows their median
     unsigned clients{3};
     unsigned bodies{30}; // thrown and bouncing, besides one driven box per client
     double seconds{10};
@@ -33,7 +34,7 @@ struct options {
     std::uint64_t seed{1};
 
     // bandwidth
-    unsigned grid{30}; // cubes per side of the grid
+    unsigned grid{30}; // cubes per side of the grid (the convergence's too, with arena "cubes")
     double snapshot_rate{60};
     double moving_seconds{10};
     double rest_seconds{5};
@@ -99,6 +100,23 @@ void setup_registry(edyn::registry &registry);
 // the simulation); nothing when the force is the same as before, so that a constant input
 // does not keep the body awake.
 void set_drive(edyn::registry &client, edyn::entity local, const edyn::vector3 &force);
+
+// The scene of Glenn Fiedler's "Snapshot Compression" article: a grid of `grid` by `grid` small
+// cubes (1 kg, a metre apart) on the ground, and one large cube (80 kg) per player just off the
+// grid's edge, spread round it.
+inline constexpr edyn::scalar cube_half_extent = 0.25f;
+inline constexpr edyn::scalar player_half_extent = 1;
+struct cube_grid {
+    std::vector<edyn::entity> cubes;
+    std::vector<edyn::entity> players;
+};
+cube_grid build_cube_grid(edyn::registry &server, unsigned grid, unsigned players);
+
+// The force with which player `k` of `players` steers its cube, from where `registry` shows it,
+// `time` seconds into the drive: after a point going round a circle in the middle of the grid,
+// each player's a share of a turn ahead of the last's, with a spring and damper, capped.
+edyn::vector3 steer_player(const edyn::registry &registry, edyn::entity cube, unsigned grid, unsigned k,
+                           unsigned players, double time);
 
 // Bodies of `server` that are dynamic and awake.
 std::size_t awake_bodies(const edyn::registry &server);

@@ -55,6 +55,11 @@ int main(int argc, char **argv) {
     app.add_flag("--small", opt.small,
                  "tiny sizes and short runs (the smoke test); explicit sizes still apply");
 
+    app.add_option("--arena", opt.arena,
+                   "convergence: the scene: walls (bodies thrown and bouncing in a walled arena, each client "
+                   "driving a box by script) or cubes (Fiedler's grid of cubes, --grid wide, each client "
+                   "steering a large cube through it)")
+        ->check(CLI::IsMember({"walls", "cubes"}));
     app.add_option("--repeat", opt.repeat,
                    "convergence: runs, each with its own link seeds (the table: medians)")
         ->check(CLI::PositiveNumber);
@@ -79,7 +84,9 @@ int main(int argc, char **argv) {
         ->check(CLI::NonNegativeNumber);
     app.add_option("--seed", opt.seed, "seed of the links' generators");
 
-    app.add_option("--grid", opt.grid, "bandwidth: small cubes per side of the grid (30: the article's 900)")
+    app.add_option("--grid", opt.grid,
+                   "bandwidth and the convergence's cube grid: small cubes per side of the grid (30: the "
+                   "article's 900)")
         ->check(CLI::PositiveNumber);
     app.add_option("--snapshot-rate", opt.snapshot_rate, "bandwidth: snapshots per second to the client")
         ->check(CLI::PositiveNumber);
