@@ -81,6 +81,13 @@ joint_anchor make_joint_anchor(const registry &registry, const entity (&body)[2]
     return anchor;
 }
 
+matrix3x3 frame_from_axis(const vector3 &axis) {
+    vector3 p, q;
+    auto a = normalize(axis);
+    plane_space(a, p, q);
+    return matrix3x3_columns(a, p, q);
+}
+
 matrix3x3 world_frame(const registry &registry, entity body, const matrix3x3 &frame) {
     return to_matrix3x3(registry.get<orientation>(body)) * frame;
 }

@@ -6,13 +6,8 @@
 namespace edyn {
 
 void hinge_constraint::set_axes(const vector3 &axisA, const vector3 &axisB) {
-    vector3 p, q;
-    auto a = normalize(axisA);
-    plane_space(a, p, q);
-    frame[0] = matrix3x3_columns(a, p, q);
-    auto b = normalize(axisB);
-    plane_space(b, p, q);
-    frame[1] = matrix3x3_columns(b, p, q);
+    frame[0] = frame_from_axis(axisA);
+    frame[1] = frame_from_axis(axisB);
 }
 
 void validate_constraint(const hinge_constraint &c) {

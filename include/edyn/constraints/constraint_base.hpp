@@ -119,6 +119,12 @@ joint_anchor make_joint_anchor(const registry &registry, const entity (&body)[2]
 /// @return The frame with each column in world space.
 matrix3x3 world_frame(const registry &registry, entity body, const matrix3x3 &frame);
 
+/// The joint frame whose first column is `axis`, normalised, completed by plane_space(): what
+/// the joints' set_axes() give each body.
+/// @param axis The joint's axis in one body's object space; not zero.
+/// @return The orthonormal frame [axis, p, q].
+matrix3x3 frame_from_axis(const vector3 &axis);
+
 /// Rotates the columns of a world-space frame by q.
 /// Used to follow a joint frame through a body's rotation since the start of the step.
 /// @param q The rotation (x y z w, unit length).
