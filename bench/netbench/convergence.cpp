@@ -132,10 +132,10 @@ scene build_scene(edyn::registry &server, const options &opt) {
     return {std::move(grid.cubes), std::move(grid.players)};
 }
 
-// The script each client follows in the arena: a force turning in the horizontal plane, a function of the
-// client's time only (the server time at which it applies), so that it is the same in every
-// run whatever the network does. It starts at a fixed time, by which every client has joined
-// over any link the benchmark simulates, rather than whenever the client gets its box.
+// The script each client follows in the arena: a force turning in the horizontal plane, a
+// function of the client's time only (the server time at which it applies), so that it is the
+// same in every run whatever the network does. It starts at a fixed time, by which every client
+// has joined over any link the benchmark simulates, rather than whenever the client gets its box.
 constexpr double drive_start = 1;
 
 edyn::vector3 scripted_force(unsigned client, double time) {
