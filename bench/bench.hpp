@@ -26,6 +26,9 @@ struct scene_spec {
     // Threads edyn runs on: above 1, execution_mode::sequential_multithreaded with that many.
     // Bullet's peer, btDiscreteDynamicsWorld, always runs on one.
     unsigned threads{1};
+    // With threads above 1: init_config::min_parallel_bodies, below which a step keeps to the
+    // calling thread.
+    unsigned min_parallel_bodies{edyn::init_config::default_min_parallel_bodies};
 };
 
 // What one engine measured on one scene.

@@ -24,6 +24,7 @@ struct options {
     unsigned steps{0};
     int warmup{-1};
     unsigned threads{1};
+    unsigned min_parallel_bodies{edyn::init_config::default_min_parallel_bodies};
     std::string engine{"both"};
     std::string json;
     std::string markdown;
@@ -119,6 +120,7 @@ std::vector<scene_spec> make_specs(const options &opt) {
             scene_spec spec;
             spec.scene = scene;
             spec.threads = opt.threads;
+            spec.min_parallel_bodies = opt.min_parallel_bodies;
             spec.size = size;
             spec.sleeping = opt.sleeping;
             spec.steps = opt.steps > 0 ? opt.steps : default_steps(scene);
@@ -325,6 +327,10 @@ int main(int argc, char **argv) {
     app.add_option("--threads", opt.threads,
                    "threads edyn runs on (sequential_multithreaded above 1); Bullet runs on one")
         ->check(CLI::PositiveNumber);
+    app.add_option("--min-parallel-bodies", opt.min_parallel_bodies,
+                   "with --threads above 1: the fewest moving bodies for a step to use the threads "
+                   "(init_config::min_parallel_bodies; 0: every step)")
+        ->check(CLI::NonNegativeNumber);
     app.add_option("--engine", opt.engine, "edyn, bullet or both")
         ->check(CLI::IsMember({"edyn", "bullet", "both"}));
     app.add_option("--json", opt.json, "write the records to this file");

@@ -39,6 +39,7 @@ run_result run_edyn(const scene_spec &spec) {
     if (spec.threads > 1) {
         config.execution_mode = edyn::execution_mode::sequential_multithreaded;
         config.num_worker_threads = spec.threads;
+        config.min_parallel_bodies = spec.min_parallel_bodies;
     }
     edyn::attach(registry, config);
     auto tracked = build_scene(registry, spec);

@@ -137,6 +137,7 @@ int main(int argc, char **) {
     };
     auto multithreaded = edyn::init_config{edyn::execution_mode::sequential_multithreaded};
     multithreaded.num_worker_threads = 2;
+    multithreaded.min_parallel_bodies = 0; // a small scene: on the threads all the same
     check("sequential_multithreaded", multithreaded);
     edyn::task_hooks hooks;
     hooks.enqueue = &run_ranges_backwards;

@@ -216,7 +216,7 @@ void list_awake_manifolds(registry &registry, world_state &world) {
     auto &block_first = world.manifold_block_first;
     block_first.resize(num_blocks + 1);
     block_first[0] = 0;
-    parallel_for(world.scheduler.get(), 0u, num_blocks, 1, [&](std::uint32_t block) {
+    parallel_for(world.step_scheduler, 0u, num_blocks, 1, [&](std::uint32_t block) {
         auto [first, last] = slots_of(block);
         std::uint32_t count = 0;
         for (auto slot = first; slot < last; ++slot)
@@ -228,7 +228,7 @@ void list_awake_manifolds(registry &registry, world_state &world) {
     auto num_manifolds = std::size_t(block_first[num_blocks]);
     world.manifolds.resize(num_manifolds);
     world.manifold_slots.resize(num_manifolds);
-    parallel_for(world.scheduler.get(), 0u, num_blocks, 1, [&](std::uint32_t block) {
+    parallel_for(world.step_scheduler, 0u, num_blocks, 1, [&](std::uint32_t block) {
         auto [first, last] = slots_of(block);
         auto next = block_first[block];
         for (auto slot = first; slot < last; ++slot) {
@@ -251,7 +251,7 @@ void gather_collision_bodies(const registry &registry, world_state &world) {
         world.collision_aabbs.resize(index_bound);
         world.contact_bodies.resize(index_bound);
     }
-    parallel_for(world.scheduler.get(), std::size_t(0), proxies.num_proxies(), bodies_per_task,
+    parallel_for(world.step_scheduler, std::size_t(0), proxies.num_proxies(), bodies_per_task,
                  [&](std::size_t i) {
                      auto e = proxies.proxy_body(i);
                      // Every body with a proxy has an AABB component (the broadphase reads it).
@@ -303,7 +303,7 @@ void collide_manifolds(registry &registry, world_state &world) {
         if (changes.num_created > 0 || changes.num_destroyed > 0) live |= world_state::points_changed_bit;
         world.manifold_live_slots[i] = live;
     };
-    parallel_for(world.scheduler.get(), std::size_t(0), num_manifolds, manifolds_per_task, collide_one);
+    parallel_for(world.step_scheduler, std::size_t(0), num_manifolds, manifolds_per_task, collide_one);
 }
 
 // In the manifolds' order, the live slots for the next step's look-ahead and what the registry

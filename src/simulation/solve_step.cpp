@@ -60,7 +60,7 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
     auto &candidates = view.handle();
     auto num_candidates = candidates.size();
     world.body_candidates.resize(num_candidates);
-    parallel_for(world.scheduler.get(), std::size_t(0), num_candidates, gathered_bodies_per_task,
+    parallel_for(world.step_scheduler, std::size_t(0), num_candidates, gathered_bodies_per_task,
                  [&](std::size_t i) { world.body_candidates[i] = view.contains(candidates.data()[i]); });
     world.body_entities.clear();
     world.body_entities.push_back(null);
@@ -92,7 +92,7 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
             body.acceleration = g ? static_cast<vector3>(*g) : settings.gravity;
         }
     };
-    parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), gathered_bodies_per_task, fill);
+    parallel_for(world.step_scheduler, std::size_t(1), world.bodies.size(), gathered_bodies_per_task, fill);
 }
 
 namespace {
@@ -254,7 +254,7 @@ void find_island_contacts(registry &registry, world_state &world) {
     auto num_edges = static_cast<std::uint32_t>(world.island_edges.size());
     world.edge_contacts.resize(num_edges);
     auto &manifold_pool = registry.storage<contact_manifold>();
-    parallel_for(world.scheduler.get(), 0u, num_edges, gathered_manifolds_per_task, [&](std::uint32_t i) {
+    parallel_for(world.step_scheduler, 0u, num_edges, gathered_manifolds_per_task, [&](std::uint32_t i) {
         if (i + gather_prefetch_distance < num_edges) {
             if (auto *ahead = manifold_pool.try_get(world.island_edges[i + gather_prefetch_distance])) {
                 prefetch(ahead);
@@ -316,7 +316,7 @@ void gather_contacts(registry &registry, world_state &world) {
     auto manifold_of = [&](std::uint32_t k) -> auto & {
         return manifold_pool.value_at(world.contact_places[k].slot);
     };
-    parallel_for(world.scheduler.get(), 0u, num_contacts, gathered_manifolds_per_task, [&](std::uint32_t k) {
+    parallel_for(world.step_scheduler, 0u, num_contacts, gathered_manifolds_per_task, [&](std::uint32_t k) {
         if (k + 2 * gather_prefetch_distance < num_contacts)
             prefetch_manifold_head(manifold_of(k + 2 * gather_prefetch_distance));
         if (k + gather_prefetch_distance < num_contacts) {
@@ -344,7 +344,7 @@ void solve_constraints(world_state &world, const settings &settings) {
     // when there is one. Their passes and the integrations are queued, and the queue is handed
     // to the scheduler as one task: once per step when nothing bounces. Restitution runs its own
     // passes: the passes queued before them run first.
-    auto *scheduler = world.scheduler.get();
+    auto *scheduler = world.step_scheduler;
     prepare_contacts(contacts, bodies, scheduler);
     auto &queue = world.solver_stages;
     queue.clear(); // of what a step that threw may have left
@@ -411,7 +411,7 @@ void write_back_bodies(registry &registry, world_state &world, scalar dt) {
     auto &world_inertias = registry.storage<inertia_world_inv>();
     auto &aabbs = registry.storage<AABB>();
     auto &centres = registry.storage<center_of_mass>();
-    parallel_for(world.scheduler.get(), std::size_t(1), world.bodies.size(), write_backs_per_task,
+    parallel_for(world.step_scheduler, std::size_t(1), world.bodies.size(), write_backs_per_task,
                  [&](std::size_t i) {
                      auto e = world.body_entities[i];
                      auto &body = world.bodies[i];
@@ -444,7 +444,7 @@ void write_back_contacts(registry &registry, world_state &world) {
     auto &constraints = world.contacts.constraints;
     auto &manifold_pool = registry.storage<contact_manifold>();
     parallel_for(
-        world.scheduler.get(), std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
+        world.step_scheduler, std::size_t(0), constraints.size(), write_backs_per_task, [&](std::size_t k) {
             if (k + 2 * gather_prefetch_distance < constraints.size()) {
                 auto ahead = world.contact_places[constraints[k + 2 * gather_prefetch_distance].source].slot;
                 prefetch_manifold_head(manifold_pool.value_at(ahead));

@@ -1,4 +1,5 @@
 #include "edyn/simulation/step.hpp"
+#include "edyn/dynamics/tags.hpp"
 #include "edyn/simulation/action_list.hpp"
 #include "edyn/simulation/body_motion_estimate.hpp"
 #include "edyn/simulation/contact_events.hpp"
@@ -18,10 +19,15 @@ void run_step(registry &registry) {
 
     if (settings.pre_step_callback) settings.pre_step_callback(registry);
 
+    // 0. The worker threads take the step's phases only when the world is big enough for them to
+    //    pay; otherwise it is stepped on the calling thread, to the same result.
+    auto moving = world.bodies.empty() ? registry.storage<dynamic_tag>().size() : world.bodies.size() - 1;
+    world.step_scheduler = moving >= world.min_parallel_bodies ? world.scheduler.get() : nullptr;
+
     // 1. Broadphase: manifolds created for new overlapping pairs, destroyed for separated ones;
     //    every body's fat box covers where its velocities take it in this step.
     const body_motion_estimate estimate(settings, registry);
-    world.broadphase.update(registry, world.scheduler.get(), estimate.estimator());
+    world.broadphase.update(registry, world.step_scheduler, estimate.estimator());
     //    Paged meshes load the pages bodies are over and near, and unload those left behind.
     update_paged_meshes(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.

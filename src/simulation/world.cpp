@@ -137,6 +137,7 @@ void attach(registry &registry, const init_config &config) {
     s.execution_mode = config.execution_mode;
     auto &state = registry.ctx().emplace<world_state>();
     state.scheduler = std::move(scheduler);
+    state.min_parallel_bodies = config.min_parallel_bodies;
     state.background = std::move(background);
     registry.ctx().emplace<contact_events>();
     if (config.execution_mode == execution_mode::asynchronous) {

@@ -127,6 +127,7 @@ TEST(step_allocation, a_settled_pile_steps_without_allocating_on_worker_threads)
     init_config config;
     config.execution_mode = execution_mode::sequential_multithreaded;
     config.num_worker_threads = 2;
+    config.min_parallel_bodies = 0; // the pile is below the default threshold
     EXPECT_EQ(allocations_per_100_settled_steps(config), 0u) << "allocations in 100 steps (2 threads)";
 }
 

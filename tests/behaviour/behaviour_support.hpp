@@ -28,6 +28,8 @@ inline init_config test_config() {
     if (mode && std::string_view(mode) == "sequential_multithreaded") {
         config.execution_mode = execution_mode::sequential_multithreaded;
         config.num_worker_threads = 2;
+        // The scenes are small: every step goes to the threads all the same.
+        config.min_parallel_bodies = 0;
     } else if (mode && std::string_view(mode) == "asynchronous") {
         config.execution_mode = execution_mode::asynchronous;
     } else if (mode && std::string_view(mode) != "sequential") {

@@ -84,6 +84,7 @@ TEST(determinism, the_multithreaded_step_gives_the_sequential_transforms) {
         init_config config;
         config.execution_mode = execution_mode::sequential_multithreaded;
         config.num_worker_threads = threads;
+        config.min_parallel_bodies = 0; // below the default threshold: to the threads all the same
         EXPECT_EQ(hex(run_pile(config)), hex(sequential)) << threads << " threads";
     }
 }
@@ -123,6 +124,7 @@ TEST(determinism, the_multithreaded_step_gives_the_sequential_rag_dolls) {
         init_config config;
         config.execution_mode = execution_mode::sequential_multithreaded;
         config.num_worker_threads = threads;
+        config.min_parallel_bodies = 0; // below the default threshold: to the threads all the same
         EXPECT_EQ(hex(run_ragdolls(config)), hex(sequential)) << threads << " threads";
     }
 }

@@ -36,6 +36,16 @@ struct init_config {
     /// background_tasks). Empty by default. Its `enqueue` and `wait` hooks must be set and its
     /// `concurrency` must not be 0.
     std::optional<task_hooks> scheduler{};
+    /// sequential_multithreaded only: the fewest bodies a step must move for its phases to be
+    /// spread over the worker threads (the bodies awake in the step before, or every dynamic
+    /// body in the first step). A smaller world is stepped on the calling thread alone, where
+    /// handing out work and waiting for it would cost more than it saves; either way a step
+    /// gives the same result to the last bit. 0 spreads every step.
+    unsigned min_parallel_bodies{default_min_parallel_bodies};
+    /// min_parallel_bodies' default, measured with edyn-bench on a 2-core machine (the pile,
+    /// the pyramid, the chain and the rag dolls, one thread against two): below it, two threads
+    /// were slower than one in every scene.
+    static constexpr unsigned default_min_parallel_bodies = 2048;
 };
 
 } // namespace edyn

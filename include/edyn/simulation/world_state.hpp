@@ -154,6 +154,13 @@ struct world_state {
     /// Runs the step's parallel phases in execution_mode::sequential_multithreaded; null in the
     /// other modes, where every phase runs on the calling thread.
     std::unique_ptr<task_scheduler> scheduler;
+    /// init_config::min_parallel_bodies: the fewest bodies a step must move for its phases to go
+    /// to `scheduler`.
+    std::uint32_t min_parallel_bodies{0};
+    /// The scheduler the phases of the step under way use: `scheduler`, or null when the world
+    /// is too small for worker threads to pay (its phases then run on the calling thread).
+    /// Set by run_step.
+    task_scheduler *step_scheduler{nullptr};
     /// The solver's passes queued to be handed to `scheduler` together (see solve_constraints);
     /// empty between steps.
     stage_queue solver_stages;

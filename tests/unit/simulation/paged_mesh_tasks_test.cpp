@@ -140,6 +140,7 @@ TEST(paged_mesh_tasks_test, a_program_scheduler_sees_and_runs_the_page_loads) {
     program_scheduler scheduler;
     init_config config{execution_mode::sequential_multithreaded};
     config.scheduler = task_hooks{&program_scheduler::enqueue, &program_scheduler::wait, &scheduler, 2};
+    config.min_parallel_bodies = 0; // the step's loops on the program's threads too
     registry reg;
     auto t = balls_landed_on_terrain(reg, config);
     // Every load the step did not have to do at once ran as a task of the program's scheduler,
@@ -156,6 +157,7 @@ TEST(paged_mesh_tasks_test, without_a_program_scheduler_pages_load_off_the_stepp
     for (auto mode : {execution_mode::sequential, execution_mode::sequential_multithreaded}) {
         init_config config{mode};
         config.num_worker_threads = 2;
+        config.min_parallel_bodies = 0;
         registry reg;
         auto t = balls_landed_on_terrain(reg, config);
         // Pages asked for in advance loaded in the background (those needed at once, if any, on
