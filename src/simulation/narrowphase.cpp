@@ -12,9 +12,11 @@
 #include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/parallel/parallel_for.hpp"
 #include "edyn/shapes/shape_bounding_radius.hpp"
+#include "edyn/shapes/shape_extent.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/settings.hpp"
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <utility>
 
@@ -120,18 +122,31 @@ world_state::collision_body collision_body_of(const registry &registry, entity e
     return body;
 }
 
-// Whether the shapes of a and b lie farther apart than `threshold`, by their bounding spheres
-// or their AABBs (false when neither shows it).
+// Whether the shapes of a and b lie farther apart than `threshold`, by their bounding spheres,
+// their AABBs or their extents along the line between their origins (false when none shows it).
 bool shapes_apart(const world_state &world, entity a, entity b, const manifold_transforms &tf,
                   scalar threshold) {
     auto &bodyA = world.collision_bodies[to_index(a)];
     auto &bodyB = world.collision_bodies[to_index(b)];
     // (A shape without a bound has large_scalar, and the sum is then infinite.)
     auto reach = bodyA.bounding_radius + bodyB.bounding_radius + threshold;
-    if (length_sqr(tf.posA - tf.posB) > reach * reach) return true;
+    auto offset = tf.posB - tf.posA;
+    auto distance_sqr = length_sqr(offset);
+    if (distance_sqr > reach * reach) return true;
     auto &aabbA = world.collision_aabbs[to_index(a)];
     auto &aabbB = world.collision_aabbs[to_index(b)];
-    return !intersect(inset(aabbA, vector3_one * threshold), aabbB);
+    if (!intersect(inset(aabbA, vector3_one * threshold), aabbB)) return true;
+    // The gap along the line between the origins, each shape's support taken towards the other:
+    // a separating axis that suits round and long shapes lying side by side, which the bounding
+    // sphere and a turned shape's AABB hold loosely.
+    if (!(distance_sqr > epsilon * epsilon)) return false;
+    auto distance = std::sqrt(distance_sqr);
+    auto dir = offset / distance;
+    auto extentA =
+        visit_shape(bodyA.shape(), [&](const auto &shape) { return shape_extent(shape, tf.ornA, dir); });
+    auto extentB =
+        visit_shape(bodyB.shape(), [&](const auto &shape) { return shape_extent(shape, tf.ornB, -dir); });
+    return distance - extentA - extentB > threshold;
 }
 
 // Closest points of one manifold's pair, the manifold updated in place. Reads what was gathered
@@ -158,10 +173,11 @@ contact_point_changes collide_manifold(const world_state &world, contact_manifol
         return refresh_contact_manifold(manifold, tf);
     }
     // A pair without points whose shapes lie farther apart than the threshold gets none now
-    // either; two bounds show it without collide(): the spheres about the origins that hold the
-    // shapes, and the AABBs, each of which holds its body's shape where the last step left it.
-    // (Most pairs of a large heap are such neighbours, which the broadphase's fat boxes keep
-    // together long after their shapes parted.)
+    // either; three bounds show it without collide(): the spheres about the origins that hold the
+    // shapes, the AABBs, each of which holds its body's shape where the last step left it, and
+    // the shapes' extents along the line between their origins. (Most pairs of a large heap are
+    // such neighbours, which the broadphase's fat boxes keep together long after their shapes
+    // parted.)
     if (manifold.num_points == 0 && shapes_apart(world, a, b, tf, manifold.separation_threshold)) {
         remember_collide(manifold, tf, epochs);
         return {};

@@ -188,6 +188,20 @@ inline scalar box_projection_radius(const vector3 &half_extents, const vector3 &
            half_extents.z * std::abs(axis.z);
 }
 
+/// Half the length of the projection of a cylinder on a direction:
+/// |dir.axis| h + r sqrt(1 - (dir.axis)^2).
+/// @param axis The cylinder's axis, unit length.
+/// @param half_length Half the cylinder's length along its axis.
+/// @param radius The cylinder's radius.
+/// @param dir The direction; unit length.
+/// @return The projection radius.
+inline scalar cylinder_projection_radius(const vector3 &axis, scalar half_length, scalar radius,
+                                         const vector3 &dir) noexcept {
+    auto c = dot(dir, axis);
+    auto s_sqr = std::max(scalar(0), scalar(1) - c * c);
+    return std::abs(c) * half_length + radius * std::sqrt(s_sqr);
+}
+
 /// The face of the box nearest to a point inside it; the point's projection on that face is
 /// the closest point of the box surface. Ties go to the lower axis.
 /// @param half_extents Half the box's size along each axis.

@@ -1,31 +1,27 @@
 #include "unit/shapes/shape_test_util.hpp"
 #include <edyn/edyn.hpp>
 #include <edyn/shapes/shape_bounding_radius.hpp>
+#include <edyn/shapes/shape_extent.hpp>
 #include <gtest/gtest.h>
 #include <random>
 #include <variant>
 
-// The step's narrowphase rules a pair without points out by its bounding spheres and its AABBs
-// before it calls collide(). Pairs of spheres, boxes, capsules and cylinders, turned at random
-// and placed about where they begin to touch along a random line: a pair must get points in the
-// step exactly when collide() finds one within the contact threshold.
+// The step's narrowphase rules a pair without points out by its bounding spheres, its AABBs and
+// its shapes' extents along the line between their origins before it calls collide(). Pairs of
+// spheres, boxes, capsules and cylinders, turned at random and placed about where they begin to
+// touch along a random line: a pair must get points in the step exactly when collide() finds one
+// within the contact threshold.
 
 namespace edyn {
 namespace {
 
 using test_shape = std::variant<sphere_shape, box_shape, capsule_shape, cylinder_shape>;
 
-// How far a shape turned by `orn` reaches from its origin along the unit direction `dir`: its
-// AABB's face on x once the direction is turned onto x.
-template<typename Shape>
-scalar reach_along(const Shape &shape, const quaternion &orn, const vector3 &dir) {
-    return shape_aabb(shape, vector3_zero, normalize(shortest_arc(dir, vector3_x) * orn)).max.x;
-}
-
 struct trial_counts {
     int touching{0};      // collide() found a point within the threshold
     int apart{0};         // it found none
-    int beyond_bounds{0}; // apart, though the spheres and the AABBs overlap: collide() decided
+    int by_extents{0};    // apart, and only the extents along the line between the origins show it
+    int beyond_bounds{0}; // apart, though no bound shows it: collide() decided
 };
 
 void run_trial(const test_shape &shape_a, const test_shape &shape_b, std::mt19937 &rng,
@@ -33,8 +29,8 @@ void run_trial(const test_shape &shape_a, const test_shape &shape_b, std::mt1993
     auto orn_a = test::random_orientation(rng), orn_b = test::random_orientation(rng);
     auto dir = test::random_direction(rng);
     // Where the shapes' reaches along `dir` meet: they touch there or nearer.
-    auto meet = std::visit([&](auto &s) { return reach_along(s, orn_a, dir); }, shape_a) +
-                std::visit([&](auto &s) { return reach_along(s, orn_b, -dir); }, shape_b);
+    auto meet = std::visit([&](auto &s) { return shape_extent(s, orn_a, dir); }, shape_a) +
+                std::visit([&](auto &s) { return shape_extent(s, orn_b, -dir); }, shape_b);
     auto offset = std::uniform_real_distribution<scalar>(scalar(-0.25), scalar(0.06))(rng);
     auto pos_a = vector3{scalar(0.3), 2, scalar(-0.1)};
     auto pos_b = pos_a + dir * (meet + offset);
@@ -74,7 +70,10 @@ void run_trial(const test_shape &shape_a, const test_shape &shape_b, std::mt1993
     auto spheres_overlap = length(pos_b - pos_a) <= radius_a + radius_b + contact_breaking_threshold;
     auto aabbs_overlap =
         intersect(inset(reg.get<AABB>(a), vector3_one * contact_breaking_threshold), reg.get<AABB>(b));
-    counts.beyond_bounds += spheres_overlap && aabbs_overlap;
+    // The shapes are `meet + offset` apart along `dir`, and reach `meet` towards each other.
+    auto extents_overlap = offset <= contact_breaking_threshold;
+    counts.by_extents += spheres_overlap && aabbs_overlap && !extents_overlap;
+    counts.beyond_bounds += spheres_overlap && aabbs_overlap && extents_overlap;
 }
 
 TEST(narrowphase, rules_out_only_pairs_that_collide_would_give_no_point) {
@@ -90,9 +89,11 @@ TEST(narrowphase, rules_out_only_pairs_that_collide_would_give_no_point) {
         for (auto &b : shapes)
             for (int trial = 0; trial < 40; ++trial)
                 run_trial(a, b, rng, counts);
-    // Both outcomes come up often, and so do pairs that only collide() tells apart.
+    // Both outcomes come up often, and so do pairs that only the extents or only collide() tell
+    // apart.
     EXPECT_GT(counts.touching, 100);
     EXPECT_GT(counts.apart, 100);
+    EXPECT_GT(counts.by_extents, 25);
     EXPECT_GT(counts.beyond_bounds, 50);
 }
 

@@ -2,6 +2,7 @@
 #define EDYN_COLLISION_DETAIL_CYLINDER_GEOM_HPP
 
 #include "edyn/collision/collision_result.hpp"
+#include "edyn/math/geom.hpp"
 #include "edyn/math/vector3.hpp"
 #include "edyn/shapes/cylinder_shape.hpp"
 #include <algorithm>
@@ -31,17 +32,9 @@ inline vector3 cylinder_cap_center(const placed_cylinder &cyl, unsigned cap) noe
     return cyl.center + cyl.axis * (cyl.half_length * cylinder_cap_sign(cap));
 }
 
-// Half length of the projection of a cylinder (unit `axis`) on the unit direction `dir`:
-// |dir.axis| h + r sqrt(1 - (dir.axis)^2).
-inline scalar cylinder_projection_radius(const vector3 &axis, scalar half_length, scalar radius,
-                                         const vector3 &dir) noexcept {
-    auto c = dot(dir, axis);
-    auto s_sqr = std::max(scalar(0), scalar(1) - c * c);
-    return std::abs(c) * half_length + radius * std::sqrt(s_sqr);
-}
-
+// Half length of the placed cylinder's projection on the unit direction `dir`.
 inline scalar cylinder_projection_radius(const placed_cylinder &cyl, const vector3 &dir) noexcept {
-    return cylinder_projection_radius(cyl.axis, cyl.half_length, cyl.radius, dir);
+    return edyn::cylinder_projection_radius(cyl.axis, cyl.half_length, cyl.radius, dir);
 }
 
 // Point of the cylinder farthest along `dir` (any length). On ties, cap 0 and the direction
