@@ -27,9 +27,12 @@ scalar shape_extent(const polyhedron_shape &shape, const quaternion &orn, const 
     return dot(shape.mesh->vertices[shape.mesh->support_vertex(local)], local);
 }
 
-// The farthest child: its origin's offset along `dir` plus its own extent.
+// The farthest child: its origin's offset along `dir` plus its own extent. A compound large
+// enough for a tree over its children gets no bound: a pass over all of them could cost more
+// than the collision it would spare, which the tree keeps to the children nearby.
 scalar shape_extent(const compound_shape &shape, const quaternion &orn, const vector3 &dir) {
-    if (shape.children.empty()) return large_scalar;
+    if (shape.children.empty() || shape.children.size() > compound_shape::max_children_without_tree)
+        return large_scalar;
     auto extent = -large_scalar;
     for (const auto &child : shape.children) {
         auto child_orn = orn * child.orientation;

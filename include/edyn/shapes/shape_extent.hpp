@@ -13,8 +13,9 @@ namespace edyn {
 /// Two shapes whose origins lie `d` apart are at least
 /// dot(d, n) - shape_extent(A, ornA, n) - shape_extent(B, ornB, -n) apart, for any unit n. The
 /// narrowphase takes n along the line between the origins to skip pairs this shows too far apart
-/// for contact. Shapes without a bound (planes, triangle meshes, paged meshes) return
-/// `large_scalar`, which never rules a pair out.
+/// for contact. Shapes without a bound (planes, triangle meshes, paged meshes, compounds with more
+/// than `compound_shape::max_children_without_tree` children) return `large_scalar`, which never
+/// rules a pair out.
 ///
 /// @param shape The shape.
 /// @param orn The shape's orientation.

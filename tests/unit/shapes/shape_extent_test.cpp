@@ -145,6 +145,12 @@ TEST(shape_extent_test, shapes_without_a_bound_rule_nothing_out) {
     EXPECT_EQ(shape_extent(paged_mesh_shape{}, quaternion_identity, vector3_y), large_scalar);
     EXPECT_EQ(shape_extent(compound_shape{}, quaternion_identity, vector3_y), large_scalar);
     EXPECT_EQ(shape_extent(polyhedron_shape{}, quaternion_identity, vector3_y), large_scalar);
+    // Nor do compounds with a tree over their children, which may be many.
+    compound_shape large;
+    for (std::size_t i = 0; i <= compound_shape::max_children_without_tree; ++i)
+        large.add_shape(sphere_shape{scalar(0.1)}, vector3{scalar(i), 0, 0});
+    large.finish();
+    EXPECT_EQ(shape_extent(large, quaternion_identity, vector3_x), large_scalar);
 }
 
 // The narrowphase skips a pair whose gap along the line between the origins exceeds its
