@@ -7,71 +7,9 @@
 
 using namespace edyn;
 using edyn::test::str;
+using edyn::test::surface_samples;
 
 namespace {
-
-// Points on the surface of each shape in object space. The extreme points of every shape lie on
-// rims, spheres or vertices, which are sampled densely enough for 1e-4 at unit size.
-
-std::vector<vector3> fibonacci_sphere(scalar radius, const vector3 &centre, int count) {
-    std::vector<vector3> points;
-    auto golden = pi * (3 - std::sqrt(scalar(5)));
-    for (int i = 0; i < count; ++i) {
-        auto y = 1 - 2 * (scalar(i) + scalar(0.5)) / scalar(count);
-        auto r = std::sqrt(1 - y * y);
-        auto theta = golden * scalar(i);
-        points.push_back(centre + vector3{r * std::cos(theta), y, r * std::sin(theta)} * radius);
-    }
-    return points;
-}
-
-vector3 axis_point(coordinate_axis axis, scalar along, scalar u, scalar v) {
-    auto k = coordinate_axis_index(axis);
-    vector3 p;
-    p[k] = along;
-    p[(k + 1) % 3] = u;
-    p[(k + 2) % 3] = v;
-    return p;
-}
-
-std::vector<vector3> surface_samples(const cylinder_shape &c) {
-    std::vector<vector3> points;
-    constexpr int n = 8192;
-    for (int i = 0; i < n; ++i) {
-        auto angle = pi2 * scalar(i) / n;
-        for (scalar along : {-c.half_length, c.half_length, scalar(0)}) {
-            points.push_back(
-                axis_point(c.axis, along, c.radius * std::cos(angle), c.radius * std::sin(angle)));
-        }
-    }
-    return points;
-}
-
-std::vector<vector3> surface_samples(const capsule_shape &c) {
-    auto k = coordinate_axis_index(c.axis);
-    auto offset = vector3_zero;
-    offset[k] = c.half_length;
-    auto points = fibonacci_sphere(c.radius, offset, 400000);
-    auto lower = fibonacci_sphere(c.radius, -offset, 400000);
-    points.insert(points.end(), lower.begin(), lower.end());
-    return points;
-}
-
-std::vector<vector3> surface_samples(const box_shape &b) {
-    std::vector<vector3> points;
-    for (int i = 0; i < 8; ++i) {
-        points.push_back({i & 1 ? -b.half_extents.x : b.half_extents.x,
-                          i & 2 ? -b.half_extents.y : b.half_extents.y,
-                          i & 4 ? -b.half_extents.z : b.half_extents.z});
-    }
-    return points;
-}
-
-std::vector<vector3> surface_samples(const sphere_shape &s) {
-    return fibonacci_sphere(s.radius, vector3_zero, 400000);
-}
-
-std::vector<vector3> surface_samples(const polyhedron_shape &p) { return p.mesh->vertices; }
 
 // Every sample inside the AABB (to rounding) and the AABB no larger than the samples' bounds
 // plus `tightness` on each side.

@@ -16,64 +16,13 @@ using namespace edyn;
 using edyn::test::random_direction;
 using edyn::test::random_orientation;
 
-// Points of each shape, in object space, among which the farthest along any direction lies
-// within `sample_tolerance` of the shape's own farthest point.
+// The shapes' surface samples (edyn::test::surface_samples) hold each shape's farthest point
+// along any direction to within `sample_tolerance`.
 constexpr scalar sample_tolerance = scalar(1e-4);
-constexpr int rim_samples = 1000;
-
-std::vector<vector3> points_of(const sphere_shape &shape) {
-    std::vector<vector3> points;
-    std::mt19937 rng(3);
-    for (int i = 0; i < 50000; ++i)
-        points.push_back(random_direction(rng) * shape.radius);
-    return points;
-}
-
-std::vector<vector3> points_of(const box_shape &shape) {
-    std::vector<vector3> points;
-    for (int i = 0; i < 8; ++i) {
-        points.push_back({i & 1 ? shape.half_extents.x : -shape.half_extents.x,
-                          i & 2 ? shape.half_extents.y : -shape.half_extents.y,
-                          i & 4 ? shape.half_extents.z : -shape.half_extents.z});
-    }
-    return points;
-}
-
-// The rims of a cylinder or the equators of a capsule's hemispheres about its axis.
-std::vector<vector3> rims(coordinate_axis axis, scalar half_length, scalar radius) {
-    auto a = coordinate_axis_vector(axis);
-    vector3 u, v;
-    plane_space(a, u, v);
-    std::vector<vector3> points;
-    for (int end = -1; end <= 1; end += 2) {
-        for (int k = 0; k < rim_samples; ++k) {
-            auto angle = pi2 * scalar(k) / rim_samples;
-            points.push_back(a * (half_length * scalar(end)) +
-                             (u * std::cos(angle) + v * std::sin(angle)) * radius);
-        }
-    }
-    return points;
-}
-
-std::vector<vector3> points_of(const cylinder_shape &shape) {
-    return rims(shape.axis, shape.half_length, shape.radius);
-}
-
-std::vector<vector3> points_of(const capsule_shape &shape) {
-    std::vector<vector3> points;
-    std::mt19937 rng(5);
-    auto a = coordinate_axis_vector(shape.axis);
-    for (int i = 0; i < 50000; ++i) {
-        auto u = random_direction(rng) * shape.radius;
-        points.push_back(a * shape.half_length + u);
-        points.push_back(a * -shape.half_length + u);
-    }
-    return points;
-}
 
 template<typename Shape>
 void expect_support(const Shape &shape, scalar tolerance = sample_tolerance) {
-    auto points = points_of(shape);
+    auto points = edyn::test::surface_samples(shape);
     std::mt19937 rng(11);
     for (int i = 0; i < 200; ++i) {
         auto orn = random_orientation(rng);
