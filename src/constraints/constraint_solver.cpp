@@ -195,16 +195,21 @@ void refresh_joint_geometry(constraint_solver_state &state, std::span<const solv
                             stage_queue &queue) {
     // Each joint writes only its own state: any order gives the same result.
     for_each_batch(state, [&](auto &batch) {
-        auto *solvers = batch.solvers.data();
-        queue.add_for(0u, std::uint32_t(batch.solvers.size()), joints_per_refresh,
-                      [solvers, bodies](std::uint32_t i) {
-                          auto &s = solvers[i];
-                          if constexpr (requires { s.anchor; }) {
-                              refresh_pose(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]]);
-                          }
-                          if constexpr (requires { refresh_geometry(s, bodies); })
-                              refresh_geometry(s, bodies);
-                      });
+        using solver = std::remove_reference_t<decltype(batch.solvers[0])>;
+        constexpr bool has_anchor = requires(solver & s) { s.anchor; };
+        constexpr bool has_geometry = requires(solver & s) { refresh_geometry(s, bodies); };
+        // Joints whose rows read no geometry (gravity) have nothing to refresh.
+        if constexpr (has_anchor || has_geometry) {
+            auto *solvers = batch.solvers.data();
+            queue.add_for(0u, std::uint32_t(batch.solvers.size()), joints_per_refresh,
+                          [solvers, bodies](std::uint32_t i) {
+                              auto &s = solvers[i];
+                              if constexpr (has_anchor) {
+                                  refresh_pose(s.anchor, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]]);
+                              }
+                              if constexpr (has_geometry) refresh_geometry(s, bodies);
+                          });
+        }
     });
 }
 
