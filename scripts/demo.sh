@@ -10,10 +10,9 @@ cd "$root"
 bash scripts/deps.sh
 # New build folders use Ninja (an existing folder keeps the generator it was made with).
 export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
-# Eight-lane contact bundles (EDYN_AVX2) where this CPU has AVX2.
-avx2=OFF
-if grep -qw avx2 /proc/cpuinfo 2>/dev/null; then avx2=ON; fi
-cmake -S . -B build-release -DCMAKE_BUILD_TYPE=Release -DEDYN_BUILD_TESTS=OFF -DEDYN_AVX2=$avx2 >/dev/null
+# Eight-lane contact bundles where this CPU has AVX2 (scripts/vector_options.sh).
+read -ra vector_options <<<"$(bash scripts/vector_options.sh)"
+cmake -S . -B build-release -DCMAKE_BUILD_TYPE=Release -DEDYN_BUILD_TESTS=OFF "${vector_options[@]}" >/dev/null
 testbed=build-release/testbed/edyn-testbed
 if [ -n "${DISPLAY:-}" ]; then
   if cmake --build build-release -j "$(nproc)" --target edyn-testbed; then

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds edyn with its tests and runs them through CTest.
 #   scripts/test.sh            normal build (RelWithDebInfo, assertions on, EDYN_AVX2 where the
-#                              CPU has AVX2) in build/
+#                              CPU has AVX2, EDYN_AVX512 where it has AVX-512F and VL) in build/
 #   scripts/test.sh --asan     AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/ (the
 #                              behaviour suite once, in the sequential mode: its copies in the
 #                              threaded modes run the same scenes, and the threaded modes' own
@@ -50,9 +50,10 @@ done
 cmake_args+=(-DEDYN_WERROR=${werror:-OFF})
 if [[ "$build_dir" != build-asan && "$build_dir" != build-tsan ]]; then
   cmake_args+=("-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g${CI:+1} -DNDEBUG")
-  # Eight-lane contact bundles where this CPU has AVX2; the sanitizer builds keep the four-lane
-  # path, so that both are tested against the same pinned hashes.
-  if grep -qw avx2 /proc/cpuinfo 2>/dev/null; then cmake_args+=(-DEDYN_AVX2=ON); fi
+  # Eight-lane contact bundles where this CPU has AVX2 (scripts/vector_options.sh); the sanitizer
+  # builds keep the four-lane path, so that both are tested against the same pinned hashes.
+  read -ra vector_options <<<"$(bash scripts/vector_options.sh)"
+  cmake_args+=("${vector_options[@]}")
 fi
 
 bash scripts/deps.sh
