@@ -37,9 +37,11 @@ dvec operator-(const dvec &a, const dvec &b) noexcept { return {a.x - b.x, a.y -
 dvec operator*(const dvec &a, double s) noexcept { return {a.x * s, a.y * s, a.z * s}; }
 double dot(const dvec &a, const dvec &b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-double poly_eval(const double *c, int degree, double x) noexcept {
-    auto v = c[degree];
-    for (int i = degree - 1; i >= 0; --i) {
+// Horner's rule, the degree known at compile time so that the loop unrolls.
+template<int Degree>
+double poly_eval(const double *c, double x) noexcept {
+    auto v = c[Degree];
+    for (int i = Degree - 1; i >= 0; --i) {
         v = v * x + c[i];
     }
     return v;
@@ -51,16 +53,17 @@ double poly_eval(const double *c, int degree, double x) noexcept {
 // the value drops below 1e-13 of the coefficients' scale (rounding level).
 // An end that is an extremum (`a_extremum`, `b_extremum`) starts the search from its quadratic
 // model: two roots close to one extremum (nearly a double root) otherwise make Newton crawl.
-double refine_root(const double *c, const double *dc, int degree, double a, double b, double fa, double fb,
+template<int Degree>
+double refine_root(const double *c, const double *dc, double a, double b, double fa, double fb,
                    bool a_extremum, bool b_extremum) noexcept {
     auto x = a - fa * (b - a) / (fb - fa);
     if (a_extremum || b_extremum) {
         auto e = a_extremum ? a : b;
         auto fe = a_extremum ? fa : fb;
-        double ddc[3];
-        for (int i = 0; i + 1 < degree; ++i)
+        double ddc[Degree - 1];
+        for (int i = 0; i + 1 < Degree; ++i)
             ddc[i] = double(i + 1) * dc[i + 1];
-        auto curvature = poly_eval(ddc, degree - 2, e);
+        auto curvature = poly_eval<Degree - 2>(ddc, e);
         auto ratio = curvature != 0 ? -2 * fe / curvature : -1.0;
         if (ratio > 0) x = a_extremum ? e + std::sqrt(ratio) : e - std::sqrt(ratio);
     }
@@ -68,11 +71,11 @@ double refine_root(const double *c, const double *dc, int degree, double a, doub
     // Bound of |c_i x^i| summed over the bracket.
     auto reach = std::max(1.0, std::max(std::abs(a), std::abs(b)));
     double size = 0, power = 1;
-    for (int i = 0; i <= degree; ++i, power *= reach)
+    for (int i = 0; i <= Degree; ++i, power *= reach)
         size += std::abs(c[i]) * power;
     auto negligible = 1e-13 * size;
     for (int iteration = 0; iteration < 60; ++iteration) {
-        auto f = poly_eval(c, degree, x);
+        auto f = poly_eval<Degree>(c, x);
         if (std::abs(f) <= negligible) return x;
         if ((f < 0) == (fa < 0)) {
             a = x;
@@ -80,7 +83,7 @@ double refine_root(const double *c, const double *dc, int degree, double a, doub
         } else {
             b = x;
         }
-        auto df = poly_eval(dc, degree - 1, x);
+        auto df = poly_eval<Degree - 1>(dc, x);
         auto next = df != 0 ? x - f / df : (a + b) * 0.5;
         if (!(next > a && next < b)) next = (a + b) * 0.5;
         auto scale = std::max(1.0, std::abs(next));
@@ -104,6 +107,61 @@ std::size_t quadratic_roots(const double *c, double lo, double hi, double *roots
     return count;
 }
 
+// Root of c0 + c1 x (c1 != 0) in [lo, hi], if there is one.
+std::size_t linear_root(const double *c, double lo, double hi, double *roots) noexcept {
+    auto x = -c[0] / c[1];
+    if (x >= lo && x <= hi) {
+        roots[0] = x;
+        return 1;
+    }
+    return 0;
+}
+
+// polynomial_roots() for a polynomial of degree 2 to 4 whose leading coefficient is not zero,
+// with lo <= hi.
+template<int Degree>
+std::size_t roots_of_degree(const double *c, double lo, double hi, double *roots, double *extrema,
+                            std::size_t *num_extrema) noexcept {
+    // Between consecutive roots of the derivative the polynomial is monotonic: one sign change
+    // at most per piece.
+    double dc[Degree];
+    for (int i = 0; i < Degree; ++i) {
+        dc[i] = double(i + 1) * c[i + 1];
+    }
+    double breaks[Degree + 1];
+    std::size_t num_crit;
+    if constexpr (Degree == 2) {
+        num_crit = linear_root(dc, lo, hi, breaks + 1);
+    } else {
+        num_crit = roots_of_degree<Degree - 1>(dc, lo, hi, breaks + 1, nullptr, nullptr);
+    }
+    if (extrema) {
+        std::copy(breaks + 1, breaks + 1 + num_crit, extrema);
+        *num_extrema = num_crit;
+    }
+    if constexpr (Degree == 2) {
+        return quadratic_roots(c, lo, hi, roots);
+    } else {
+        breaks[0] = lo;
+        breaks[num_crit + 1] = hi;
+
+        std::size_t count = 0;
+        auto f_prev = poly_eval<Degree>(c, lo);
+        if (f_prev == 0) roots[count++] = lo;
+        for (std::size_t i = 0; i <= num_crit; ++i) {
+            auto a = breaks[i], b = breaks[i + 1];
+            auto fb = poly_eval<Degree>(c, b);
+            if (fb == 0) {
+                if (count == 0 || roots[count - 1] != b) roots[count++] = b;
+            } else if (f_prev != 0 && (f_prev < 0) != (fb < 0)) {
+                roots[count++] = refine_root<Degree>(c, dc, a, b, f_prev, fb, i > 0, i < num_crit);
+            }
+            f_prev = fb;
+        }
+        return count;
+    }
+}
+
 } // namespace
 
 std::size_t polynomial_roots(const double *c, int degree, double lo, double hi, double *roots,
@@ -113,45 +171,16 @@ std::size_t polynomial_roots(const double *c, int degree, double lo, double hi, 
     while (degree > 0 && c[degree] == 0)
         --degree;
     if (degree <= 0 || lo > hi) return 0;
-    if (degree == 1) {
-        auto x = -c[0] / c[1];
-        if (x >= lo && x <= hi) {
-            roots[0] = x;
-            return 1;
-        }
-        return 0;
+    switch (degree) {
+    case 1:
+        return linear_root(c, lo, hi, roots);
+    case 2:
+        return roots_of_degree<2>(c, lo, hi, roots, extrema, num_extrema);
+    case 3:
+        return roots_of_degree<3>(c, lo, hi, roots, extrema, num_extrema);
+    default:
+        return roots_of_degree<4>(c, lo, hi, roots, extrema, num_extrema);
     }
-
-    // Between consecutive roots of the derivative the polynomial is monotonic: one sign change
-    // at most per piece.
-    double dc[4];
-    for (int i = 0; i < degree; ++i) {
-        dc[i] = double(i + 1) * c[i + 1];
-    }
-    double breaks[5];
-    auto num_crit = polynomial_roots(dc, degree - 1, lo, hi, breaks + 1);
-    if (extrema) {
-        std::copy(breaks + 1, breaks + 1 + num_crit, extrema);
-        *num_extrema = num_crit;
-    }
-    if (degree == 2) return quadratic_roots(c, lo, hi, roots);
-    breaks[0] = lo;
-    breaks[num_crit + 1] = hi;
-
-    std::size_t count = 0;
-    auto f_prev = poly_eval(c, degree, lo);
-    if (f_prev == 0) roots[count++] = lo;
-    for (std::size_t i = 0; i <= num_crit; ++i) {
-        auto a = breaks[i], b = breaks[i + 1];
-        auto fb = poly_eval(c, degree, b);
-        if (fb == 0) {
-            if (count == 0 || roots[count - 1] != b) roots[count++] = b;
-        } else if (f_prev != 0 && (f_prev < 0) != (fb < 0)) {
-            roots[count++] = refine_root(c, dc, degree, a, b, f_prev, fb, i > 0, i < num_crit);
-        }
-        f_prev = fb;
-    }
-    return count;
 }
 
 std::size_t circle_segment_critical_points(const vector3 &center, const vector3 &normal, scalar radius,
