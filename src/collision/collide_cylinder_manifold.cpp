@@ -23,6 +23,11 @@ constexpr std::size_t max_candidates = 20;
 // Relative tolerance of the inside tests, so that points on a boundary survive rounding.
 constexpr scalar inside_tolerance = scalar(1e-4);
 
+// How much shallower than the shapes' separation along the normal (as a fraction of the
+// threshold: 0.2 mm at the default 2 cm) a manifold's deepest point may be before the support
+// points are added to it.
+constexpr scalar deepest_point_tolerance = scalar(0.01);
+
 struct candidate {
     vector3 position;
     bool on_a; // Lies on A's feature (else on B's).
@@ -343,16 +348,20 @@ void build_manifold(const contact_feature &a, const contact_feature &b, const ve
     candidate_list candidates;
     gather(a, b, normal, candidates);
 
-    collision_result::collision_point points[max_candidates];
+    // The candidates and the three support-point fallbacks below.
+    collision_result::collision_point points[max_candidates + 3];
     std::size_t count = 0;
     auto world_normal = rotate(to_world, normal);
+    auto deepest = large_scalar;
     auto add = [&](const vector3 &on_a, const vector3 &on_b) {
         auto distance = dot(on_a - on_b, normal);
-        if (distance > ctx.threshold) return;
+        if (distance > ctx.threshold) return false;
         auto &p = points[count++];
         p = make_point(ctx, on_a, on_b, world_normal, distance);
         if (a.has_id) p.featureA = a.id;
         if (b.has_id) p.featureB = b.id;
+        deepest = std::min(deepest, distance);
+        return true;
     };
     // Box faces turn counter-clockwise about their outward normal.
     std::optional<quad_sides> sides_a, sides_b;
@@ -366,18 +375,20 @@ void build_manifold(const contact_feature &a, const contact_feature &b, const ve
             !on_feature(b, sides_b ? &*sides_b : nullptr, on_b)) {
             return false;
         }
-        add(on_a, on_b);
-        return true;
+        return add(on_a, on_b);
     };
-    auto kept = false;
     for (std::size_t i = 0; i < candidates.count; ++i) {
-        kept |= try_add(candidates.items[i].position, candidates.items[i].on_a);
+        try_add(candidates.items[i].position, candidates.items[i].on_a);
     }
-    // The projections missed each other: the features were taken within feature_tolerance of
-    // the normal while the contact is at a support point.
-    if (!kept) kept = try_add(a.support, true);
-    if (!kept) kept = try_add(b.support, false);
-    if (!kept) add(a.support, a.support + normal * dot(b.support - a.support, normal));
+    // The supports lie exactly as far apart along the normal as the shapes. When no candidate
+    // comes that deep, the projections missed each other where the shapes touch: the features
+    // were taken within feature_tolerance of the normal, or the deepest point of one lies just
+    // beyond the other's outline (two rims crossing). The contact is then at a support point.
+    auto gap = dot(a.support - b.support, normal);
+    auto missed = [&] { return !(deepest <= gap + ctx.threshold * deepest_point_tolerance); };
+    if (missed()) try_add(a.support, true);
+    if (missed()) try_add(b.support, false);
+    if (missed()) add(a.support, a.support + normal * dot(b.support - a.support, normal));
     // Deepest first, so that add_point's reduction to four keeps it and grows the area from it.
     std::sort(points, points + count, [](const auto &p, const auto &q) { return p.distance < q.distance; });
     for (std::size_t i = 0; i < count; ++i) {
