@@ -22,6 +22,8 @@ struct cylinder_box {
     detail::placed_cylinder cyl; // In the box's space.
     vector3 he;
     detail::sat_result sat;
+    // Pairs of points closer than this give no reliable axis (see detail::coincident_pair_fraction).
+    scalar coincident{0};
 
     void test(const vector3 &n) noexcept {
         sat.test(n, dot(cyl.center, n), detail::cylinder_projection_radius(cyl, n),
@@ -102,9 +104,12 @@ void test_vertices(cylinder_box &cb, scalar margin) noexcept {
         auto off_axis = distance(core, v);
         if (reaches_vertex_region(cb.he, v, cyl.center, cyl_half, margin) ||
             (depth > 0 && std::abs(off_axis - cyl.radius) < depth)) {
-            auto radial = project_plane(v - cyl.center, cyl.axis);
-            if (try_normalize(radial)) {
-                cb.test_pair(core + radial * cyl.radius, v);
+            auto radial = v - cyl.center;
+            if (try_normalize_across(radial, cyl.axis)) {
+                // A vertex touching the side: the side's normal is the pair's axis.
+                auto side = core + radial * cyl.radius;
+                if (distance(side, v) < cb.coincident) cb.test(radial);
+                cb.test_pair(side, v);
                 cb.test_pair(core - radial * cyl.radius, v, true);
             }
         }
@@ -141,6 +146,10 @@ void test_edges(cylinder_box &cb, scalar margin) noexcept {
                 auto q = lerp(v0, v1, t[i]);
                 auto p = closest_point_circle(center, cyl.axis, cyl.radius, q);
                 cb.test_pair(p, q);
+                // A rim that touches the edge crosses it there: the axis across the rim's tangent
+                // and the edge is the pair's.
+                if (distance(p, q) < cb.coincident)
+                    cb.test_direction(cross(cross(cyl.axis, p - center), v1 - v0));
                 cb.test_pair(center * 2 - p, q, true);
             }
         }
@@ -163,6 +172,7 @@ void collide(const cylinder_shape &a, const box_shape &b, const collision_contex
     auto size = a.radius + a.half_length + b.half_extents.x + b.half_extents.y + b.half_extents.z;
     cb.sat.bias = scalar(1e-6) * size;
     cb.sat.witness_tolerance = scalar(1e-5) * size;
+    cb.coincident = detail::coincident_pair_fraction * size;
 
     cb.test(vector3_x);
     cb.test(vector3_y);

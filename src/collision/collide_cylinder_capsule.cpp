@@ -37,15 +37,23 @@ struct cylinder_capsule {
     // its segment) nearest to and farthest from pa, kept as witnesses if closest or deepest. The
     // far side, and any `deep` pa (a far rim or side point), can only give the deepest pair, and
     // only if closer than the current depth.
+    // Both pairs lie on the line from `core` through pa, so that line is their axis: taken from
+    // pa - core, whose length is at least about the capsule's radius, and not from the pair's
+    // points, which nearly coincide where the shapes touch.
     void test_pair(const vector3 &pa, const vector3 &core, bool deep = false) noexcept {
         auto towards = pa - core;
-        if (!try_normalize(towards)) return;
+        auto reach = length(towards);
+        if (!(reach > epsilon)) return;
+        towards /= reach;
         for (auto side : {scalar(1), scalar(-1)}) {
-            auto d = pa - (core + towards * (radius * side));
-            auto len = length(d);
-            if (!(len > epsilon)) continue;
+            auto gap = reach - radius * side;
+            auto len = std::abs(gap);
+            if (!(len > epsilon)) {
+                test(towards);
+                continue;
+            }
             if ((deep || side < 0) && !(len < sat.witness_tolerance - sat.distance)) continue;
-            auto n = d / len;
+            auto n = gap > 0 ? towards : -towards;
             auto capsule_radius = std::abs(dot(seg.axis, n)) * half_length + radius;
             sat.test_witness(n, len, dot(cyl.center - seg_center, n),
                              detail::cylinder_projection_radius(cyl, n), capsule_radius);
@@ -54,8 +62,8 @@ struct cylinder_capsule {
 
     // Both side points of the cylinder above the axis point `core` in the plane through `target`.
     void test_side_pairs(const vector3 &core, const vector3 &target) noexcept {
-        auto radial = project_plane(target - core, cyl.axis);
-        if (!try_normalize(radial)) return;
+        auto radial = target - core;
+        if (!try_normalize_across(radial, cyl.axis)) return;
         test_pair(core + radial * cyl.radius, target);
         test_pair(core - radial * cyl.radius, target, true);
     }

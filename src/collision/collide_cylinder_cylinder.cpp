@@ -26,6 +26,8 @@ struct cylinder_pair {
     placed_cylinder a, b;
     vector3 delta; // a.center - b.center
     detail::sat_result sat;
+    // Pairs of points closer than this give no reliable axis (see detail::coincident_pair_fraction).
+    scalar coincident{0};
 
     void test(const vector3 &n) noexcept {
         sat.test(n, dot(delta, n), detail::cylinder_projection_radius(a, n),
@@ -52,15 +54,17 @@ struct cylinder_pair {
 
 // The side points of `cyl` above the axis point `core` in the plane through `target`: the nearer
 // to it first. The farther one is the deepest in overlaps where `target` has passed the axis.
-void side_points(const placed_cylinder &cyl, const vector3 &core, const vector3 &target,
-                 vector3 (&out)[2]) noexcept {
-    auto radial = project_plane(target - core, cyl.axis);
-    if (!try_normalize(radial)) {
+// Returns the side's outward normal at the nearer point (zero when `target` lies on the axis).
+vector3 side_points(const placed_cylinder &cyl, const vector3 &core, const vector3 &target,
+                    vector3 (&out)[2]) noexcept {
+    auto radial = target - core;
+    if (!try_normalize_across(radial, cyl.axis)) {
         out[0] = out[1] = core;
-        return;
+        return vector3_zero;
     }
     out[0] = core + radial * cyl.radius;
     out[1] = core - radial * cyl.radius;
+    return radial;
 }
 
 // Whether some point of the circle (center, unit normal, radius) lies beyond cap `cap` of `cyl`
@@ -104,7 +108,12 @@ void test_rim_against_axis(cylinder_pair &pair, const placed_cylinder &rims, uns
         vector3 rim_points[2] = {p, center * 2 - p};
         for (int r = 0; r < 2; ++r) {
             vector3 sides[2];
-            side_points(other, q, rim_points[r], sides);
+            auto side_normal = side_points(other, q, rim_points[r], sides);
+            // Where the rim touches the side, the side's normal is the pair's axis.
+            if (r == 0 && side_normal != vector3_zero &&
+                distance(rim_points[0], sides[0]) < pair.coincident) {
+                pair.test(side_normal);
+            }
             for (int k = 0; k < 2; ++k) {
                 auto deep = r + k > 0;
                 if (rims_are_a) {
@@ -190,6 +199,10 @@ void test_rim_pairs(cylinder_pair &pair, scalar margin) {
                 detail::circle_circle_local_minima(ca, a.axis, a.radius, cb, b.axis, b.radius, on_a, on_b);
             for (std::size_t k = 0; k < count; ++k) {
                 pair.test_pair(on_a[k], on_b[k]);
+                // Rims that touch cross there: the axis across both tangents is the pair's.
+                if (distance(on_a[k], on_b[k]) < pair.coincident) {
+                    pair.test_direction(cross(cross(a.axis, on_a[k] - ca), cross(b.axis, on_b[k] - cb)));
+                }
             }
         }
     }
@@ -207,6 +220,7 @@ void collide(const cylinder_shape &a, const cylinder_shape &b, const collision_c
     auto size = a.radius + a.half_length + b.radius + b.half_length;
     pair.sat.bias = scalar(1e-6) * size;
     pair.sat.witness_tolerance = scalar(1e-5) * size;
+    pair.coincident = detail::coincident_pair_fraction * size;
 
     pair.test(pair.a.axis);
     pair.test(pair.b.axis);

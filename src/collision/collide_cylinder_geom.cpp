@@ -14,8 +14,8 @@ placed_cylinder place_cylinder(const cylinder_shape &shape, const vector3 &pos,
 
 vector3 cylinder_support_point(const placed_cylinder &cyl, const vector3 &dir) noexcept {
     auto c = dot(dir, cyl.axis);
-    auto radial = dir - cyl.axis * c;
-    if (!try_normalize(radial)) {
+    auto radial = dir;
+    if (!try_normalize_across(radial, cyl.axis)) {
         vector3 t1;
         plane_space(cyl.axis, radial, t1);
     }
@@ -419,11 +419,9 @@ bool clip_segment_sphere(const vector3 &p0, const vector3 &p1, const vector3 &ce
 contact_feature cylinder_support_feature(const placed_cylinder &cyl, const vector3 &dir) noexcept {
     contact_feature f;
     auto c = dot(dir, cyl.axis);
-    auto radial = dir - cyl.axis * c;
-    auto s = length(radial);
-    if (s > epsilon) {
-        radial /= s;
-    } else {
+    auto s = length(dir - cyl.axis * c);
+    auto radial = dir;
+    if (!try_normalize_across(radial, cyl.axis)) {
         vector3 t1;
         plane_space(cyl.axis, radial, t1);
     }

@@ -24,6 +24,8 @@ struct cylinder_polytope {
     detail::placed_cylinder cyl; // In the polyhedron's space.
     detail::polytope poly;
     detail::sat_result sat;
+    // Pairs of points closer than this give no reliable axis (see detail::coincident_pair_fraction).
+    scalar coincident{0};
 
     void test(const vector3 &n) noexcept {
         scalar lo, hi;
@@ -68,7 +70,7 @@ void test_vertices(cylinder_polytope &cp) noexcept {
     for (const auto &v : cp.poly.vertices) {
         auto radial = project_plane(v - cyl.center, cyl.axis);
         cp.test_direction(radial);
-        if (try_normalize(radial)) {
+        if (try_normalize_across(radial, cyl.axis)) {
             auto core = closest_point_segment(top, bottom, v);
             cp.test_pair(core + radial * cyl.radius, v);
             cp.test_pair(core - radial * cyl.radius, v);
@@ -101,6 +103,10 @@ void test_edges(cylinder_polytope &cp, scalar threshold, scalar margin) noexcept
                 auto q = lerp(v0, v1, t[i]);
                 auto p = closest_point_circle(center, cyl.axis, cyl.radius, q);
                 cp.test_pair(p, q);
+                // A rim that touches the edge crosses it there: the axis across the rim's tangent
+                // and the edge is the pair's.
+                if (distance(p, q) < cp.coincident)
+                    cp.test_direction(cross(cross(cyl.axis, p - center), v1 - v0));
                 cp.test_pair(center * 2 - p, q);
             }
         }
@@ -142,6 +148,7 @@ void collide_cylinder_polytope(const cylinder_shape &a, const polytope &poly, co
     auto size = a.radius + a.half_length + cp.poly.bounding_radius;
     cp.sat.bias = scalar(1e-6) * size;
     cp.sat.witness_tolerance = scalar(1e-5) * size;
+    cp.coincident = detail::coincident_pair_fraction * size;
 
     for (std::uint32_t f = 0; f < cp.poly.faces.size(); ++f)
         cp.test_face(f);

@@ -260,8 +260,8 @@ vector3 closest_point_disc(const vector3 &center, const vector3 &normal, scalar 
 
 vector3 closest_point_circle(const vector3 &center, const vector3 &normal, scalar radius,
                              const vector3 &p) noexcept {
-    auto w = project_plane(p - center, normal);
-    if (!try_normalize(w)) {
+    auto w = p - center;
+    if (!try_normalize_across(w, normal)) {
         vector3 t1;
         plane_space(normal, w, t1);
     }

@@ -191,6 +191,29 @@ inline bool isfinite(const vector3 &v) noexcept {
 /// @return `v - n * dot(v, n)`.
 constexpr vector3 project_plane(const vector3 &v, const vector3 &n) noexcept { return v - n * dot(v, n); }
 
+/// Turns `v` into the unit vector along its component orthogonal to the unit vector `n`, kept
+/// orthogonal to `n` even when that component is short beside `v`: what one projection leaves
+/// along `n` is of the order of the rounding of `v`, which normalising a short component would
+/// blow up (a cylinder's support point pulled off its rim), so such a component is projected
+/// again once normalised.
+/// @param v Any vector; on return the unit direction, or unspecified when the function fails.
+/// @param n Unit normal (not checked).
+/// @return False when the orthogonal component is too short to give a direction.
+inline bool try_normalize_across(vector3 &v, const vector3 &n) noexcept {
+    auto full_sqr = length_sqr(v);
+    v = project_plane(v, n);
+    auto len_sqr = length_sqr(v);
+    if (!(len_sqr > epsilon * epsilon)) return false;
+    if (len_sqr < full_sqr * scalar(0.01)) {
+        v /= std::sqrt(len_sqr);
+        v = project_plane(v, n);
+        len_sqr = length_sqr(v);
+        if (!(len_sqr > epsilon * epsilon)) return false;
+    }
+    v /= std::sqrt(len_sqr);
+    return true;
+}
+
 /// Unit vectors `t0`, `t1` completing the unit vector `n` to a right-handed orthonormal basis
 /// (t0 × t1 = n), for example the friction directions of a contact. Continuous except across the
 /// switch between the two branches (|n.z| = √2 / 2).

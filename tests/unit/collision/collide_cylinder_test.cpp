@@ -408,6 +408,34 @@ void random_against_brute_force(MakeA &&make_a, MakeB &&make_b, scalar reach, un
     EXPECT_GT(overlapping, count / 8);
 }
 
+// Configurations recorded from a 16,384-body pile of boxes, cylinders and capsules where
+// collide() once missed a touching contact or reported its deepest point centimetres too
+// shallow: every pair within the threshold is reported, with its deepest point within 0.1 mm
+// of the direction search. Float literals as recorded, so that the rounding is the pile's.
+template<typename B>
+struct recorded_pair {
+    cylinder_shape a;
+    B b;
+    collision_context ctx;
+};
+
+template<typename B>
+void expect_recorded_pairs_exact(const std::vector<recorded_pair<B>> &pairs) {
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const auto &[a, b, ctx] = pairs[i];
+        collision_result r;
+        collide(a, b, ctx, r);
+        auto searched =
+            searched_distance(support_of(a, ctx.posA, ctx.ornA), support_of(b, ctx.posB, ctx.ornB));
+        if (searched < ctx.threshold - scalar(1e-3)) {
+            ASSERT_GT(r.num_points, 0u) << "pair " << i << " at " << searched << " within " << ctx.threshold;
+        }
+        if (r.num_points > 0) {
+            EXPECT_NEAR(min_distance(r), searched, 1e-4) << "pair " << i;
+        }
+    }
+}
+
 cylinder_shape random_cylinder(std::mt19937 &rng) {
     std::uniform_real_distribution<scalar> size(scalar(0.15), scalar(0.6));
     std::uniform_int_distribution<int> axis(0, 2);
@@ -652,6 +680,57 @@ TEST(CollideCylinderCylinder, RandomAgainstBruteForce) {
                                                                11);
 }
 
+TEST(CollideCylinderCylinder, RecordedPilePairsAreExact) {
+    using c = cylinder_shape;
+    using a = coordinate_axis;
+    expect_recorded_pairs_exact<cylinder_shape>({
+        // Deepest point 3.9 cm too shallow: a rim point just outside the other cylinder's outline.
+        {c{0x1.daa92ap-3f, 0x1.daa92ap-3f, a::y},
+         c{0x1.c08adep-3f, 0x1.c08adep-3f, a::y},
+         {{0x1.f42b4ap+2f, 0x1.a62b7ep+0f, -0x1.e91db4p+3f},
+          {-0x1.1ec556p-1f, 0x1.f42f16p-3f, -0x1.f3e7e4p-3f, -0x1.818d8p-1f},
+          {0x1.eaf6bp+2f, 0x1.c37adp+0f, -0x1.d9336ep+3f},
+          {0x1.c837d4p-4f, 0x1.18a9f4p-1f, -0x1.779ccp-1f, 0x1.8b256cp-2f},
+          0x1.d5937cp-4f}},
+        {c{0x1.913848p-3f, 0x1.913848p-3f, a::y},
+         c{0x1.0ef8fap-2f, 0x1.0ef8fap-2f, a::y},
+         {{0x1.410ae6p+4f, 0x1.a88c2p-2f, -0x1.8be6cp+1f},
+          {-0x1.d9240ep-5f, -0x1.b9ef66p-2f, -0x1.cce5d2p-1f, 0x1.0110bap-7f},
+          {0x1.46cc9cp+4f, 0x1.c1ea06p-1f, -0x1.a35dbp+1f},
+          {0x1.ebaa8cp-2f, 0x1.dfac6cp-3f, 0x1.77772ap-1f, 0x1.ae9b16p-2f},
+          0x1.76ad04p-5f}},
+        {c{0x1.18721ap-2f, 0x1.18721ap-2f, a::y},
+         c{0x1.327724p-2f, 0x1.327724p-2f, a::y},
+         {{0x1.ee5474p+2f, 0x1.2d14fp+1f, -0x1.0a07a4p+0f},
+          {-0x1.edb65cp-3f, 0x1.9c2942p-3f, -0x1.0a2f46p-1f, 0x1.96bd98p-1f},
+          {0x1.009d36p+3f, 0x1.4c062cp+1f, -0x1.982332p+0f},
+          {0x1.a0d4b2p-1f, 0x1.758564p-2f, -0x1.c1195p-2f, 0x1.bcff8ap-4f},
+          0x1.96ef68p-6f}},
+        {c{0x1.1e3072p-2f, 0x1.1e3072p-2f, a::y},
+         c{0x1.0f05c2p-2f, 0x1.0f05c2p-2f, a::y},
+         {{-0x1.7b90a4p+0f, 0x1.3f8e6ep+0f, -0x1.f7c0ecp+1f},
+          {0x1.2bc05ap-2f, -0x1.c0334cp-1f, 0x1.b4e624p-4f, -0x1.7a7f7cp-2f},
+          {-0x1.3aedb6p+0f, 0x1.62105p+0f, -0x1.a94bfp+1f},
+          {0x1.4733c6p-1f, -0x1.7619bap-2f, 0x1.006398p-1f, -0x1.d24d74p-2f},
+          0x1.3e840cp-3f}},
+        // Touching and once missed: the rejected candidate suppressed the support fallbacks.
+        {c{0x1.320ef8p-2f, 0x1.320ef8p-2f, a::y},
+         c{0x1.0e062p-2f, 0x1.0e062p-2f, a::y},
+         {{0x1.90554cp+2f, 0x1.af37ccp-2f, 0x1.212258p+3f},
+          {0x1.81cf78p-1f, 0x1.9e9d8p-2f, 0x1.a9662ap-2f, -0x1.3cb682p-2f},
+          {0x1.ba1072p+2f, 0x1.1b4eb4p-2f, 0x1.1b44d2p+3f},
+          {-0x1.be9348p-3f, -0x1.80beap-4f, -0x1.4e87f6p-1f, -0x1.700b06p-1f},
+          0x1.7048b4p-5f}},
+        {c{0x1.ae3078p-3f, 0x1.ae3078p-3f, a::y},
+         c{0x1.2d8dbp-2f, 0x1.2d8dbp-2f, a::y},
+         {{0x1.280d1ep+4f, 0x1.ad7a32p-3f, 0x1.1f5bc6p+4f},
+          {0x1.64656cp-2f, 0x1.3b7894p-1f, -0x1.3b31fap-1f, 0x1.631312p-2f},
+          {0x1.20827cp+4f, 0x1.5b7caap-2f, 0x1.25ba9ep+4f},
+          {0x1.69e6ecp-8f, 0x1.18fc34p-1f, 0x1.8701eep-1f, 0x1.5c1e1ep-2f},
+          0x1.f9f098p-5f}},
+    });
+}
+
 // Cylinder–box.
 
 TEST(CollideCylinderBox, StandingOnAFaceGivesFourRimPoints) {
@@ -831,6 +910,35 @@ TEST(CollideCylinderBox, RandomAgainstBruteForce) {
     random_against_brute_force<cylinder_shape, box_shape>(random_cylinder, make_box, scalar(1.7), 23);
 }
 
+TEST(CollideCylinderBox, RecordedPilePairsAreExact) {
+    using a = coordinate_axis;
+    expect_recorded_pairs_exact<box_shape>({
+        // Deepest point 1.5 cm too shallow.
+        {cylinder_shape{0x1.f6a176p-3f, 0x1.f6a176p-3f, a::y},
+         box_shape{{0x1.5280dp-2f, 0x1.0ecd74p-2f, 0x1.96342ep-3f}},
+         {{-0x1.5e6568p-2f, 0x1.3e7cfcp-1f, -0x1.12df26p+4f},
+          {0x1.5f76dcp-3f, 0x1.558d3ap-3f, 0x1.30d3b2p-1f, 0x1.88b31ep-1f},
+          {-0x1.1712cep-2f, 0x1.9c7164p-3f, -0x1.0b34a4p+4f},
+          {0x1.a087cp-3f, 0x1.5ca34ep-1f, 0x1.58797cp-1f, -0x1.a53944p-3f},
+          0x1.a4a7a8p-4f}},
+        // Touching and once missed.
+        {cylinder_shape{0x1.f9a50ap-3f, 0x1.f9a50ap-3f, a::y},
+         box_shape{{0x1.d784ap-2f, 0x1.7936e6p-2f, 0x1.1ae92ep-2f}},
+         {{-0x1.816e86p-2f, 0x1.773d84p+0f, 0x1.7aaf16p+3f},
+          {-0x1.ed4274p-1f, 0x1.0b8ff6p-2f, 0x1.d35e76p-5f, 0x1.2cc9f2p-6f},
+          {-0x1.6f275ap-3f, 0x1.61f14p-1f, 0x1.815674p+3f},
+          {-0x1.579532p-2f, -0x1.8f1f28p-1f, 0x1.7044f6p-2f, -0x1.8d214p-2f},
+          0x1.7e535cp-6f}},
+        {cylinder_shape{0x1.6f9c0cp-3f, 0x1.6f9c0cp-3f, a::y},
+         box_shape{{0x1.20e4f8p-2f, 0x1.ce3b26p-3f, 0x1.5aac5ep-3f}},
+         {{-0x1.95af3ep-3f, 0x1.7f3f36p+0f, 0x1.00ef02p-1f},
+          {-0x1.1c7fe4p-1f, -0x1.01f05ep-2f, -0x1.8de75ap-1f, -0x1.3c1042p-3f},
+          {-0x1.612202p-2f, 0x1.354ee6p+0f, 0x1.df9adp-1f},
+          {0x1.ebab94p-3f, 0x1.5876a6p-3f, 0x1.9274c8p-1f, -0x1.16a794p-1f},
+          0x1.82995ep-6f}},
+    });
+}
+
 // Cylinder–capsule.
 
 TEST(CollideCylinderCapsule, LyingOnACapGivesTheSegmentOverTheDisc) {
@@ -920,6 +1028,20 @@ TEST(CollideCylinderCapsule, RandomAgainstBruteForce) {
         return capsule_shape{size(rng), size(rng), coordinate_axis(axis(rng))};
     };
     random_against_brute_force<cylinder_shape, capsule_shape>(random_cylinder, make_capsule, scalar(1.6), 37);
+}
+
+TEST(CollideCylinderCapsule, RecordedPilePairsAreExact) {
+    using a = coordinate_axis;
+    // Deepest point 2 cm too shallow: the axis between two nearly coincident points was noise.
+    expect_recorded_pairs_exact<capsule_shape>({
+        {cylinder_shape{0x1.c66d44p-3f, 0x1.c66d44p-3f, a::y},
+         capsule_shape{0x1.8bed2p-3f, 0x1.8bed2p-3f, a::x},
+         {{0x1.0ec8d6p+4f, 0x1.c63c5ap-3f, -0x1.8f3d28p+3f},
+          {0x1.fd871cp-3f, -0x1.6a0014p-1f, -0x1.52e86ep-1f, 0x1.f121ecp-8f},
+          {0x1.08ad22p+4f, 0x1.38c576p-1f, -0x1.84f4cep+3f},
+          {-0x1.ed3c5ep-4f, -0x1.f61b1cp-1f, 0x1.38398ap-3f, 0x1.7a1e98p-6f},
+          0x1.94bee4p-6f}},
+    });
 }
 
 // Cylinder–sphere.

@@ -78,6 +78,25 @@ TEST(vector3_test, length_and_normalize) {
     EXPECT_EQ(z, vector3_zero);
 }
 
+TEST(vector3_test, try_normalize_across_stays_orthogonal_when_nearly_along_the_normal) {
+    auto n = normalize(vector3{scalar(0.3), 1, scalar(-0.2)});
+    auto t = normalize(cross(n, vector3{1, scalar(0.1), scalar(0.7)}));
+    // The orthogonal part from a thousandth to all of v: what is left along n after normalising
+    // stays at rounding size however short that part was (one projection leaves up to ~1e-3).
+    for (auto part : {scalar(1), scalar(1e-1), scalar(1e-2), scalar(1e-3)}) {
+        auto v = n * 10 + t * (10 * part);
+        ASSERT_TRUE(try_normalize_across(v, n)) << part;
+        EXPECT_NEAR(length(v), 1, tol) << part;
+        EXPECT_NEAR(dot(v, n), 0, 1e-6) << part;
+        // The direction itself is only as good as v's rounding over the orthogonal part.
+        EXPECT_NEAR(dot(v, t), 1, 1e-3) << part;
+    }
+    auto along = n * 5;
+    EXPECT_FALSE(try_normalize_across(along, n));
+    auto zero = vector3_zero;
+    EXPECT_FALSE(try_normalize_across(zero, n));
+}
+
 TEST(vector3_test, min_max_abs) {
     vector3 a{1, -2, 3}, b{-4, 5, 0};
     EXPECT_EQ(min(a, b), (vector3{-4, -2, 0}));

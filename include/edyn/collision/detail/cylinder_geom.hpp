@@ -136,6 +136,12 @@ struct sat_result {
     }
 };
 
+// Where a pair of points lies closer than this fraction of the shapes' size, the routines take
+// the pair's axis from the features (a side's normal, the line across two crossing edges) as well
+// as from the points: where the shapes touch the points nearly coincide, and the line through
+// them is then the rounding of their coordinates, not the axis along which they touch.
+inline constexpr scalar coincident_pair_fraction = scalar(0.01);
+
 // The feature through which a shape touches the other along a contact normal, in the frame of
 // the separating-axis test. build_manifold() clips two of them.
 enum class contact_feature_kind : unsigned char {
