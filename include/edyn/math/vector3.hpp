@@ -197,7 +197,7 @@ constexpr vector3 project_plane(const vector3 &v, const vector3 &n) noexcept { r
 /// blow up (a cylinder's support point pulled off its rim), so such a component is projected
 /// again once normalised.
 /// @param v Any vector; on return the unit direction, or unspecified when the function fails.
-/// @param n Unit normal (not checked).
+/// @param n Unit normal (not checked; rounding off unit length is tolerated).
 /// @return False when the orthogonal component is too short to give a direction.
 inline bool try_normalize_across(vector3 &v, const vector3 &n) noexcept {
     auto full_sqr = length_sqr(v);
@@ -207,8 +207,10 @@ inline bool try_normalize_across(vector3 &v, const vector3 &n) noexcept {
     if (len_sqr < full_sqr * scalar(0.01)) {
         v /= std::sqrt(len_sqr);
         v = project_plane(v, n);
+        // What was left lay along `n` itself (rounding, or an `n` a little off unit length): not
+        // a direction across it.
         len_sqr = length_sqr(v);
-        if (!(len_sqr > epsilon * epsilon)) return false;
+        if (!(len_sqr > scalar(0.25))) return false;
     }
     v /= std::sqrt(len_sqr);
     return true;

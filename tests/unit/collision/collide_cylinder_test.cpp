@@ -408,6 +408,46 @@ void random_against_brute_force(MakeA &&make_a, MakeB &&make_b, scalar reach, un
     EXPECT_GT(overlapping, count / 8);
 }
 
+// Pairs that touch (separated by -2 mm to 2 mm) at 20 m from the origin, where float rounding of
+// the positions is about 1e-6 m and the line between two nearly coincident points is noise: the
+// pair is reported within the threshold and its deepest point within 0.1 mm of the direction
+// search. A is moved along the line between the centres until the search says it touches.
+template<typename A, typename B, typename MakeA, typename MakeB>
+void random_touching_far_from_origin(MakeA &&make_a, MakeB &&make_b, scalar reach, unsigned seed) {
+    constexpr int count = 40;
+    std::mt19937 rng(seed + random_seed_offset);
+    std::uniform_real_distribution<scalar> offset(scalar(0.3), scalar(1)), gap(scalar(-0.002), scalar(0.002));
+    const auto pos_b = vector3{scalar(20.3), scalar(1.7), scalar(-15.2)};
+    for (int i = 0; i < count; ++i) {
+        A a = make_a(rng);
+        B b = make_b(rng);
+        auto orn_a = aligned_or_random_orientation(rng), orn_b = aligned_or_random_orientation(rng);
+        auto dir = random_direction(rng);
+        auto target = gap(rng);
+        auto separation = [&](scalar t) {
+            return searched_distance(support_of(a, pos_b + dir * t, orn_a), support_of(b, pos_b, orn_b));
+        };
+        // Secant steps on the separation along the line, which grows with t at a slope of at most 1.
+        auto t0 = offset(rng) * reach, f0 = separation(t0) - target;
+        auto t1 = t0 - f0, f1 = separation(t1) - target;
+        for (int k = 0; k < 3 && std::abs(f1) > scalar(1e-4) && f1 != f0; ++k) {
+            auto t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
+            t0 = t1;
+            f0 = f1;
+            t1 = t2;
+            f1 = separation(t1) - target;
+        }
+        auto pos_a = pos_b + dir * t1;
+        auto searched = f1 + target;
+        ASSERT_LT(std::abs(searched), scalar(0.005)) << "config " << i << " did not come to touch";
+        auto ctx = make_ctx(pos_a, orn_a, pos_b, orn_b, scalar(0.02));
+        collision_result r;
+        collide(a, b, ctx, r);
+        ASSERT_GT(r.num_points, 0u) << "config " << i << " at " << searched;
+        EXPECT_NEAR(min_distance(r), searched, 1e-4) << "config " << i;
+    }
+}
+
 // Configurations recorded from a 16,384-body pile of boxes, cylinders and capsules where
 // collide() once missed a touching contact or reported its deepest point centimetres too
 // shallow: every pair within the threshold is reported, with its deepest point within 0.1 mm
@@ -438,6 +478,17 @@ void expect_recorded_pairs_exact(const std::vector<recorded_pair<B>> &pairs) {
 
 cylinder_shape random_cylinder(std::mt19937 &rng) {
     std::uniform_real_distribution<scalar> size(scalar(0.15), scalar(0.6));
+    std::uniform_int_distribution<int> axis(0, 2);
+    return {size(rng), size(rng), coordinate_axis(axis(rng))};
+}
+
+box_shape random_box(std::mt19937 &rng) {
+    std::uniform_real_distribution<scalar> size(scalar(0.1), scalar(0.6));
+    return {{size(rng), size(rng), size(rng)}};
+}
+
+capsule_shape random_capsule(std::mt19937 &rng) {
+    std::uniform_real_distribution<scalar> size(scalar(0.1), scalar(0.5));
     std::uniform_int_distribution<int> axis(0, 2);
     return {size(rng), size(rng), coordinate_axis(axis(rng))};
 }
@@ -680,6 +731,11 @@ TEST(CollideCylinderCylinder, RandomAgainstBruteForce) {
                                                                11);
 }
 
+TEST(CollideCylinderCylinder, RandomTouchingFarFromTheOrigin) {
+    random_touching_far_from_origin<cylinder_shape, cylinder_shape>(random_cylinder, random_cylinder,
+                                                                    scalar(1.6), 13);
+}
+
 TEST(CollideCylinderCylinder, RecordedPilePairsAreExact) {
     using c = cylinder_shape;
     using a = coordinate_axis;
@@ -903,11 +959,11 @@ TEST(CollideCylinderBox, RimAgainstAnEdgeIsExact) {
 }
 
 TEST(CollideCylinderBox, RandomAgainstBruteForce) {
-    auto make_box = [](std::mt19937 &rng) {
-        std::uniform_real_distribution<scalar> size(scalar(0.1), scalar(0.6));
-        return box_shape{{size(rng), size(rng), size(rng)}};
-    };
-    random_against_brute_force<cylinder_shape, box_shape>(random_cylinder, make_box, scalar(1.7), 23);
+    random_against_brute_force<cylinder_shape, box_shape>(random_cylinder, random_box, scalar(1.7), 23);
+}
+
+TEST(CollideCylinderBox, RandomTouchingFarFromTheOrigin) {
+    random_touching_far_from_origin<cylinder_shape, box_shape>(random_cylinder, random_box, scalar(1.7), 29);
 }
 
 TEST(CollideCylinderBox, RecordedPilePairsAreExact) {
@@ -1022,12 +1078,13 @@ TEST(CollideCylinderCapsule, HemisphereOnTheCapAndOnTheRim) {
 }
 
 TEST(CollideCylinderCapsule, RandomAgainstBruteForce) {
-    auto make_capsule = [](std::mt19937 &rng) {
-        std::uniform_real_distribution<scalar> size(scalar(0.1), scalar(0.5));
-        std::uniform_int_distribution<int> axis(0, 2);
-        return capsule_shape{size(rng), size(rng), coordinate_axis(axis(rng))};
-    };
-    random_against_brute_force<cylinder_shape, capsule_shape>(random_cylinder, make_capsule, scalar(1.6), 37);
+    random_against_brute_force<cylinder_shape, capsule_shape>(random_cylinder, random_capsule, scalar(1.6),
+                                                              37);
+}
+
+TEST(CollideCylinderCapsule, RandomTouchingFarFromTheOrigin) {
+    random_touching_far_from_origin<cylinder_shape, capsule_shape>(random_cylinder, random_capsule,
+                                                                   scalar(1.6), 43);
 }
 
 TEST(CollideCylinderCapsule, RecordedPilePairsAreExact) {

@@ -93,6 +93,11 @@ TEST(vector3_test, try_normalize_across_stays_orthogonal_when_nearly_along_the_n
     }
     auto along = n * 5;
     EXPECT_FALSE(try_normalize_across(along, n));
+    // An axis rotated by a quaternion rounded off unit length is a little long: what a vector
+    // along it leaves across it is then along it too, and gives no direction.
+    auto long_n = n * scalar(1 + 1e-6);
+    auto unit = n;
+    EXPECT_FALSE(try_normalize_across(unit, long_n));
     auto zero = vector3_zero;
     EXPECT_FALSE(try_normalize_across(zero, n));
 }
