@@ -22,8 +22,6 @@ struct cylinder_box {
     detail::placed_cylinder cyl; // In the box's space.
     vector3 he;
     detail::sat_result sat;
-    // Pairs of points closer than this give no reliable axis (see detail::coincident_pair_fraction).
-    scalar coincident{0};
 
     void test(const vector3 &n) noexcept {
         sat.test(n, dot(cyl.center, n), detail::cylinder_projection_radius(cyl, n),
@@ -108,7 +106,7 @@ void test_vertices(cylinder_box &cb, scalar margin) noexcept {
             if (try_normalize_across(radial, cyl.axis)) {
                 // A vertex touching the side: the side's normal is the pair's axis.
                 auto side = core + radial * cyl.radius;
-                if (distance(side, v) < cb.coincident) cb.test(radial);
+                if (distance(side, v) < cb.sat.coincident) cb.test(radial);
                 cb.test_pair(side, v);
                 cb.test_pair(core - radial * cyl.radius, v, true);
             }
@@ -148,7 +146,7 @@ void test_edges(cylinder_box &cb, scalar margin) noexcept {
                 cb.test_pair(p, q);
                 // A rim that touches the edge crosses it there: the axis across the rim's tangent
                 // and the edge is the pair's.
-                if (distance(p, q) < cb.coincident)
+                if (distance(p, q) < cb.sat.coincident)
                     cb.test_direction(cross(cross(cyl.axis, p - center), v1 - v0));
                 cb.test_pair(center * 2 - p, q, true);
             }
@@ -170,9 +168,7 @@ void collide(const cylinder_shape &a, const box_shape &b, const collision_contex
     cb.cyl = detail::place_cylinder(a, local.posA, local.ornA);
     cb.he = b.half_extents;
     auto size = a.radius + a.half_length + b.half_extents.x + b.half_extents.y + b.half_extents.z;
-    cb.sat.bias = scalar(1e-6) * size;
-    cb.sat.witness_tolerance = scalar(1e-5) * size;
-    cb.coincident = detail::coincident_pair_fraction * size;
+    cb.sat.scale_to(size);
 
     cb.test(vector3_x);
     cb.test(vector3_y);

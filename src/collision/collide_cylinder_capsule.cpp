@@ -103,8 +103,7 @@ void collide(const cylinder_shape &a, const capsule_shape &b, const collision_co
     cc.half_length = b.half_length;
     cc.radius = b.radius;
     auto size = a.radius + a.half_length + b.radius + b.half_length;
-    cc.sat.bias = scalar(1e-6) * size;
-    cc.sat.witness_tolerance = scalar(1e-5) * size;
+    cc.sat.scale_to(size);
     const auto &cyl = cc.cyl;
 
     cc.test(cyl.axis);

@@ -26,8 +26,6 @@ struct cylinder_pair {
     placed_cylinder a, b;
     vector3 delta; // a.center - b.center
     detail::sat_result sat;
-    // Pairs of points closer than this give no reliable axis (see detail::coincident_pair_fraction).
-    scalar coincident{0};
 
     void test(const vector3 &n) noexcept {
         sat.test(n, dot(delta, n), detail::cylinder_projection_radius(a, n),
@@ -111,7 +109,7 @@ void test_rim_against_axis(cylinder_pair &pair, const placed_cylinder &rims, uns
             auto side_normal = side_points(other, q, rim_points[r], sides);
             // Where the rim touches the side, the side's normal is the pair's axis.
             if (r == 0 && side_normal != vector3_zero &&
-                distance(rim_points[0], sides[0]) < pair.coincident) {
+                distance(rim_points[0], sides[0]) < pair.sat.coincident) {
                 pair.test(side_normal);
             }
             for (int k = 0; k < 2; ++k) {
@@ -200,7 +198,7 @@ void test_rim_pairs(cylinder_pair &pair, scalar margin) {
             for (std::size_t k = 0; k < count; ++k) {
                 pair.test_pair(on_a[k], on_b[k]);
                 // Rims that touch cross there: the axis across both tangents is the pair's.
-                if (distance(on_a[k], on_b[k]) < pair.coincident) {
+                if (distance(on_a[k], on_b[k]) < pair.sat.coincident) {
                     pair.test_direction(cross(cross(a.axis, on_a[k] - ca), cross(b.axis, on_b[k] - cb)));
                 }
             }
@@ -218,9 +216,7 @@ void collide(const cylinder_shape &a, const cylinder_shape &b, const collision_c
     pair.b = detail::place_cylinder(b, ctx.posB, ctx.ornB);
     pair.delta = pair.a.center - pair.b.center;
     auto size = a.radius + a.half_length + b.radius + b.half_length;
-    pair.sat.bias = scalar(1e-6) * size;
-    pair.sat.witness_tolerance = scalar(1e-5) * size;
-    pair.coincident = detail::coincident_pair_fraction * size;
+    pair.sat.scale_to(size);
 
     pair.test(pair.a.axis);
     pair.test(pair.b.axis);

@@ -388,7 +388,7 @@ void build_manifold(const contact_feature &a, const contact_feature &b, const ve
     auto missed = [&] { return !(deepest <= gap + ctx.threshold * deepest_point_tolerance); };
     if (missed()) try_add(a.support, true);
     if (missed()) try_add(b.support, false);
-    if (missed()) add(a.support, a.support + normal * dot(b.support - a.support, normal));
+    if (missed()) add(a.support, a.support - normal * gap);
     // Deepest first, so that add_point's reduction to four keeps it and grows the area from it.
     std::sort(points, points + count, [](const auto &p, const auto &q) { return p.distance < q.distance; });
     for (std::size_t i = 0; i < count; ++i) {

@@ -24,8 +24,6 @@ struct cylinder_polytope {
     detail::placed_cylinder cyl; // In the polyhedron's space.
     detail::polytope poly;
     detail::sat_result sat;
-    // Pairs of points closer than this give no reliable axis (see detail::coincident_pair_fraction).
-    scalar coincident{0};
 
     void test(const vector3 &n) noexcept {
         scalar lo, hi;
@@ -105,7 +103,7 @@ void test_edges(cylinder_polytope &cp, scalar threshold, scalar margin) noexcept
                 cp.test_pair(p, q);
                 // A rim that touches the edge crosses it there: the axis across the rim's tangent
                 // and the edge is the pair's.
-                if (distance(p, q) < cp.coincident)
+                if (distance(p, q) < cp.sat.coincident)
                     cp.test_direction(cross(cross(cyl.axis, p - center), v1 - v0));
                 cp.test_pair(center * 2 - p, q);
             }
@@ -146,9 +144,7 @@ void collide_cylinder_polytope(const cylinder_shape &a, const polytope &poly, co
     auto cyl_reach = std::sqrt(a.radius * a.radius + a.half_length * a.half_length);
     if (length(cp.cyl.center) - cyl_reach - cp.poly.bounding_radius > ctx.threshold) return;
     auto size = a.radius + a.half_length + cp.poly.bounding_radius;
-    cp.sat.bias = scalar(1e-6) * size;
-    cp.sat.witness_tolerance = scalar(1e-5) * size;
-    cp.coincident = detail::coincident_pair_fraction * size;
+    cp.sat.scale_to(size);
 
     for (std::uint32_t f = 0; f < cp.poly.faces.size(); ++f)
         cp.test_face(f);

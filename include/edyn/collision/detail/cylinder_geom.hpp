@@ -90,6 +90,11 @@ bool clip_segment_sphere(const vector3 &p0, const vector3 &p1, const vector3 &ce
 // witnesses when the separation along them equals the points' distance (apart) or minus it
 // (overlapping): such an axis is exactly the direction between closest (or deepest) points, and
 // finish() snaps to the best witness when it ties the best axis within `witness_tolerance`.
+//
+// Where the shapes touch, a pair of points nearly coincides and the line through them is the
+// rounding of their coordinates, not the axis along which they touch: pairs closer than
+// `coincident` also test the axis their features give (a side's normal, the line across two
+// crossing edges).
 struct sat_result {
     vector3 normal{vector3_y};
     scalar distance{-large_scalar};
@@ -97,6 +102,15 @@ struct sat_result {
     vector3 witness_normal{vector3_y};
     scalar witness_distance{-large_scalar};
     scalar witness_tolerance{0};
+    scalar coincident{0};
+
+    // The tolerances for shapes of `size` (the sum of their extents): bias a millionth of it,
+    // witness_tolerance 1e-5, coincident 1 %.
+    void scale_to(scalar size) noexcept {
+        bias = scalar(1e-6) * size;
+        witness_tolerance = scalar(1e-5) * size;
+        coincident = scalar(0.01) * size;
+    }
 
     // Tests unit axis `n`: `delta` is dot(center A - center B, n), `radius_a`/`radius_b` the
     // shapes' projection half lengths on n.
@@ -135,12 +149,6 @@ struct sat_result {
         }
     }
 };
-
-// Where a pair of points lies closer than this fraction of the shapes' size, the routines take
-// the pair's axis from the features (a side's normal, the line across two crossing edges) as well
-// as from the points: where the shapes touch the points nearly coincide, and the line through
-// them is then the rounding of their coordinates, not the axis along which they touch.
-inline constexpr scalar coincident_pair_fraction = scalar(0.01);
 
 // The feature through which a shape touches the other along a contact normal, in the frame of
 // the separating-axis test. build_manifold() clips two of them.
