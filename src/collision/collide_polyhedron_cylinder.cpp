@@ -66,11 +66,14 @@ void test_vertices(cylinder_polytope &cp) noexcept {
     const auto &cyl = cp.cyl;
     auto top = cyl.center + cyl.axis * cyl.half_length, bottom = cyl.center - cyl.axis * cyl.half_length;
     for (const auto &v : cp.poly.vertices) {
-        auto radial = project_plane(v - cyl.center, cyl.axis);
-        cp.test_direction(radial);
+        auto radial = v - cyl.center;
+        cp.test_direction(project_plane(radial, cyl.axis));
         if (try_normalize_across(radial, cyl.axis)) {
             auto core = closest_point_segment(top, bottom, v);
-            cp.test_pair(core + radial * cyl.radius, v);
+            // A vertex touching the side: the side's normal is the pair's axis.
+            auto side = core + radial * cyl.radius;
+            if (distance(side, v) < cp.sat.coincident) cp.test(radial);
+            cp.test_pair(side, v);
             cp.test_pair(core - radial * cyl.radius, v);
         }
         for (unsigned cap = 0; cap < 2; ++cap) {

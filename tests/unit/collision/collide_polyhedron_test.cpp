@@ -1069,6 +1069,51 @@ TEST(collide_polyhedron_test, random_polyhedron_cylinder_matches_brute_force) {
     EXPECT_GT(overlapping, 15);
 }
 
+// Touching (-2 mm to 2 mm) at 20 m from the origin, where float rounding of the positions is
+// about 1e-6 m and the line between two nearly coincident points is noise: the pair is reported
+// within the threshold and its deepest point within 0.5 mm of the direction search. The hull is
+// moved along the line between the centres until the search says it touches.
+TEST(collide_polyhedron_test, random_polyhedron_cylinder_touching_far_from_the_origin) {
+    rng random(57);
+    const vector3 pos_b{scalar(20.3), scalar(1.7), scalar(-15.2)};
+    for (int i = 0; i < 40; ++i) {
+        auto hull = random_hull(random, i);
+        cylinder_shape cylinder{random.uniform(0.1, 0.5), random.uniform(0.1, 0.5), coordinate_axis(i % 3)};
+        auto orn_a = random.orientation(), orn_b = random.orientation();
+        auto dir = random.unit();
+        auto target = random.uniform(-0.002, 0.002);
+        auto axis = coordinate_axis_vector(cylinder.axis, orn_b);
+        auto support_cylinder = [&](const vector3 &n) {
+            auto c = dot(axis, n);
+            return dot(pos_b, n) + std::abs(c) * cylinder.half_length +
+                   cylinder.radius * std::sqrt(std::max(scalar(0), dot(n, n) - c * c));
+        };
+        auto separation = [&](scalar t) {
+            placed_polyhedron poly(hull, pos_b + dir * t, orn_a);
+            return searched_gap([&](const vector3 &n) { return points_support(poly.vertices, n); },
+                                support_cylinder);
+        };
+        // Secant steps on the separation along the line, which grows with t at a slope of at most 1.
+        scalar t0 = 1, f0 = separation(t0) - target;
+        auto t1 = t0 - f0, f1 = separation(t1) - target;
+        for (int k = 0; k < 3 && std::abs(f1) > scalar(1e-4) && f1 != f0; ++k) {
+            auto t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
+            t0 = t1;
+            f0 = f1;
+            t1 = t2;
+            f1 = separation(t1) - target;
+        }
+        auto searched = f1 + target;
+        ASSERT_LT(std::abs(searched), scalar(0.005)) << "case " << i << " did not come to touch";
+        collision_context ctx{pos_b + dir * t1, orn_a, pos_b, orn_b, scalar(0.02)};
+        collision_result r;
+        collide(hull, cylinder, ctx, r);
+        ASSERT_GE(r.num_points, 1u) << "case " << i << " at " << searched;
+        // As near as the random placements near the origin: the polyhedron routines' own bound.
+        EXPECT_NEAR(min_distance(r), searched, 5e-4) << "case " << i;
+    }
+}
+
 TEST(collide_polyhedron_test, random_polyhedron_plane_matches_brute_force) {
     rng random(56);
     int touching = 0;
