@@ -285,25 +285,10 @@ support_set support_of(const sphere_shape &s, const vector3 &pos, const quaterni
 }
 
 // Signed distance as the largest gap, over all unit directions n, between A's lowest and B's
-// highest point along n: dense directions, then a pattern search from the best few and from the
-// shapes' axes and their cross products.
+// highest point along n, searched from the best few dense directions and from the shapes' axes
+// and their cross products.
 scalar searched_distance(const support_set &a, const support_set &b) {
-    auto gap = [&](const vector3 &n, bool coarse = false) {
-        return -a.support(-n, coarse) - b.support(n, coarse);
-    };
-    constexpr int num_dirs = 2000;
-    std::vector<std::pair<scalar, vector3>> coarse;
-    for (int i = 0; i < num_dirs; ++i) {
-        auto y = 1 - 2 * (scalar(i) + scalar(0.5)) / num_dirs;
-        auto rho = std::sqrt(std::max(scalar(0), 1 - y * y));
-        auto phi = scalar(i) * scalar(2.399963229728653);
-        vector3 n{rho * std::cos(phi), y, rho * std::sin(phi)};
-        coarse.emplace_back(gap(n, true), n);
-    }
-    std::sort(coarse.begin(), coarse.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
     std::vector<vector3> starts;
-    for (int i = 0; i < 8; ++i)
-        starts.push_back(coarse[i].second);
     for (const auto &x : a.axes) {
         for (const auto &y : b.axes) {
             auto c = cross(x, y);
@@ -314,33 +299,8 @@ scalar searched_distance(const support_set &a, const support_set &b) {
         for (const auto &x : set->axes)
             starts.insert(starts.end(), {x, -x});
     }
-    // Compass search from the best few, its stencil turned at random each round so that it also
-    // climbs along the ridges where the supporting points switch.
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<scalar> phase(0, pi2);
-    auto best = -large_scalar;
-    for (auto n : starts) {
-        auto value = gap(n);
-        for (scalar step = scalar(0.08); step > scalar(1e-6);) {
-            vector3 t0, t1;
-            plane_space(n, t0, t1);
-            auto offset = phase(rng);
-            auto moved = false;
-            for (int j = 0; j < 12; ++j) {
-                auto angle = offset + pi2 * scalar(j) / 12;
-                auto m = normalize(n + (t0 * std::cos(angle) + t1 * std::sin(angle)) * step);
-                auto g = gap(m);
-                if (g > value) {
-                    value = g;
-                    n = m;
-                    moved = true;
-                }
-            }
-            if (!moved) step *= scalar(0.5);
-        }
-        best = std::max(best, value);
-    }
-    return best;
+    return searched_max_gap(
+        [&](const vector3 &n, bool coarse) { return -a.support(-n, coarse) - b.support(n, coarse); }, starts);
 }
 
 // Half the time a multiple of quarter turns about the axes, a third of those tilted by 1e-3 rad:
@@ -427,18 +387,8 @@ void random_touching_far_from_origin(MakeA &&make_a, MakeB &&make_b, scalar reac
         auto separation = [&](scalar t) {
             return searched_distance(support_of(a, pos_b + dir * t, orn_a), support_of(b, pos_b, orn_b));
         };
-        // Secant steps on the separation along the line, which grows with t at a slope of at most 1.
-        auto t0 = offset(rng) * reach, f0 = separation(t0) - target;
-        auto t1 = t0 - f0, f1 = separation(t1) - target;
-        for (int k = 0; k < 3 && std::abs(f1) > scalar(1e-4) && f1 != f0; ++k) {
-            auto t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
-            t0 = t1;
-            f0 = f1;
-            t1 = t2;
-            f1 = separation(t1) - target;
-        }
-        auto pos_a = pos_b + dir * t1;
-        auto searched = f1 + target;
+        auto [t, searched] = secant_to(separation, offset(rng) * reach, target);
+        auto pos_a = pos_b + dir * t;
         ASSERT_LT(std::abs(searched), scalar(0.005)) << "config " << i << " did not come to touch";
         auto ctx = make_ctx(pos_a, orn_a, pos_b, orn_b, scalar(0.02));
         collision_result r;

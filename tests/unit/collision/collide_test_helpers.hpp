@@ -220,6 +220,71 @@ inline std::vector<vector3> candidate_directions(const quaternion &orn_a, const 
 // face-axis bias documented in collision/detail/collide_common.hpp).
 inline scalar sat_bias(scalar depth) { return scalar(1e-3) + scalar(0.02) * std::abs(depth) + scalar(2e-4); }
 
+// The largest value of `gap(n, coarse)` over unit directions n: dense directions (scored with
+// `coarse` set, which may be cheaper and rougher), then a compass search from the best
+// `num_best` of them and from `starts`, its stencil turned at random each round so that it also
+// climbs along the ridges where the supporting points switch.
+template<typename Gap>
+scalar searched_max_gap(Gap &&gap, std::vector<vector3> starts, int num_best = 8) {
+    constexpr int num_dirs = 2000;
+    std::vector<std::pair<scalar, vector3>> coarse;
+    for (int i = 0; i < num_dirs; ++i) {
+        auto y = 1 - 2 * (scalar(i) + scalar(0.5)) / num_dirs;
+        auto rho = std::sqrt(std::max(scalar(0), 1 - y * y));
+        auto phi = scalar(i) * scalar(2.399963229728653);
+        vector3 n{rho * std::cos(phi), y, rho * std::sin(phi)};
+        coarse.emplace_back(gap(n, true), n);
+    }
+    std::sort(coarse.begin(), coarse.end(), [](const auto &x, const auto &y) { return x.first > y.first; });
+    for (int i = 0; i < num_best; ++i)
+        starts.insert(starts.begin() + i, coarse[i].second);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<scalar> phase(0, pi2);
+    auto best = -large_scalar;
+    for (auto n : starts) {
+        auto value = gap(n, false);
+        for (scalar step = scalar(0.08); step > scalar(1e-6);) {
+            vector3 t0, t1;
+            plane_space(n, t0, t1);
+            auto offset = phase(rng);
+            auto moved = false;
+            for (int j = 0; j < 12; ++j) {
+                auto angle = offset + pi2 * scalar(j) / 12;
+                auto m = normalize(n + (t0 * std::cos(angle) + t1 * std::sin(angle)) * step);
+                auto g = gap(m, false);
+                if (g > value) {
+                    value = g;
+                    n = m;
+                    moved = true;
+                }
+            }
+            if (!moved) step *= scalar(0.5);
+        }
+        best = std::max(best, value);
+    }
+    return best;
+}
+
+// Where `separation(t)`, which grows with t at a slope of at most 1, comes to `target`: secant
+// steps from t0 to within 0.1 mm. Returns t and the separation there.
+struct secant_result {
+    scalar t, separation;
+};
+
+template<typename Separation>
+secant_result secant_to(Separation &&separation, scalar t0, scalar target) {
+    auto f0 = separation(t0) - target;
+    auto t1 = t0 - f0, f1 = separation(t1) - target;
+    for (int k = 0; k < 3 && std::abs(f1) > scalar(1e-4) && f1 != f0; ++k) {
+        auto t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
+        t0 = t1;
+        f0 = f1;
+        t1 = t2;
+        f1 = separation(t1) - target;
+    }
+    return {t1, f1 + target};
+}
+
 } // namespace collide_test
 
 #endif // EDYN_TESTS_UNIT_COLLISION_COLLIDE_TEST_HELPERS_HPP
