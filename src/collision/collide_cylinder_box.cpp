@@ -54,7 +54,7 @@ bool circle_reaches_edge_region(const vector3 &he, unsigned edge, const vector3 
     vector3 v0, v1;
     detail::box_edge_vertices(he, edge, v0, v1);
     for (int k = 0; k < 3; ++k) {
-        auto spread = radius * std::sqrt(std::max(scalar(0), scalar(1) - normal[k] * normal[k]));
+        auto spread = radius * length_across_axis(normal, k);
         if (k == axis) {
             if (std::abs(center[k]) - spread > he[k] + margin) return false;
         } else {
@@ -90,7 +90,7 @@ void test_vertices(cylinder_box &cb, scalar margin) noexcept {
     // Extents of the cylinder's and of a rim's bounding boxes.
     vector3 rim_half, cyl_half;
     for (int k = 0; k < 3; ++k) {
-        rim_half[k] = cyl.radius * std::sqrt(std::max(scalar(0), scalar(1) - cyl.axis[k] * cyl.axis[k]));
+        rim_half[k] = cyl.radius * length_across_axis(cyl.axis, k);
         cyl_half[k] = rim_half[k] + cyl.half_length * std::abs(cyl.axis[k]);
     }
     auto a0 = cyl.center + cyl.axis * cyl.half_length, a1 = cyl.center - cyl.axis * cyl.half_length;

@@ -72,8 +72,7 @@ bool circle_reaches_rim_region(const vector3 &center, const vector3 &normal, sca
                                const placed_cylinder &cyl, unsigned cap, scalar margin) noexcept {
     auto w = center - cyl.center;
     auto along = dot(w, cyl.axis) * detail::cylinder_cap_sign(cap);
-    auto c = dot(normal, cyl.axis);
-    auto spread = radius * std::sqrt(std::max(scalar(0), scalar(1) - c * c));
+    auto spread = radius * length(cross(normal, cyl.axis));
     if (along + spread < cyl.half_length - margin) return false;
     auto off_axis = length(project_plane(w, cyl.axis));
     return off_axis + radius >= cyl.radius - margin;
@@ -84,8 +83,7 @@ bool circle_reaches_rim_region(const vector3 &center, const vector3 &normal, sca
 scalar circle_circle_distance_bound(const vector3 &ca, const vector3 &na, scalar ra, const vector3 &cb,
                                     const vector3 &nb, scalar rb) noexcept {
     auto bound = distance(ca, cb) - ra - rb;
-    auto cn = dot(na, nb);
-    auto tilt = std::sqrt(std::max(scalar(0), scalar(1) - cn * cn));
+    auto tilt = length(cross(na, nb));
     bound = std::max(bound, std::abs(dot(cb - ca, na)) - rb * tilt);
     bound = std::max(bound, std::abs(dot(ca - cb, nb)) - ra * tilt);
     return bound;

@@ -1,4 +1,5 @@
 #include "edyn/shapes/shape_aabb.hpp"
+#include "edyn/math/geom.hpp"
 #include "edyn/math/matrix3x3.hpp"
 #include "edyn/math/transform.hpp"
 #include <algorithm>
@@ -61,12 +62,11 @@ AABB shape_aabb(const box_shape &shape, const vector3 &pos, const quaternion &or
 
 AABB shape_aabb(const cylinder_shape &shape, const vector3 &pos, const quaternion &orn) {
     // The caps are discs of normal a: along unit direction e a disc of radius r reaches
-    // r sqrt(1 - (a.e)^2) from its centre.
+    // r sqrt(1 - (a.e)^2) from its centre, taken from a's other components.
     auto a = coordinate_axis_vector(shape.axis, orn);
     vector3 extent;
     for (int i = 0; i < 3; ++i) {
-        extent[i] = std::abs(a[i]) * shape.half_length +
-                    shape.radius * std::sqrt(std::max(scalar(0), scalar(1) - a[i] * a[i]));
+        extent[i] = std::abs(a[i]) * shape.half_length + shape.radius * length_across_axis(a, i);
     }
     return {pos - extent, pos + extent};
 }

@@ -1,4 +1,5 @@
 #include "collide_test_helpers.hpp"
+#include "edyn/math/geom.hpp"
 #include "edyn/shapes/mesh_shape.hpp"
 #include "edyn/shapes/polyhedron_shape.hpp"
 #include "support/grid_mesh.hpp"
@@ -105,8 +106,7 @@ scalar lowest_y(const shapes_variant_t &shape, const vector3 &pos, const quatern
                 vector3 axis = vector3_zero;
                 axis[int(s.axis)] = 1;
                 auto a = rotate(orn, axis);
-                return pos.y - s.half_length * std::abs(a.y) -
-                       s.radius * std::sqrt(std::max(scalar(0), 1 - a.y * a.y));
+                return pos.y - s.half_length * std::abs(a.y) - s.radius * length_across_axis(a, 1);
             } else if constexpr (std::is_same_v<S, polyhedron_shape>) {
                 auto y = large_scalar;
                 for (auto &v : s.mesh->vertices)

@@ -1071,6 +1071,61 @@ TEST(collide_polyhedron_test, random_polyhedron_cylinder_touching_far_from_the_o
     }
 }
 
+// A cylinder's cap touching a hull (-2 mm to 2 mm) at 20 m from the origin: in even cases within
+// 2e-3 rad of parallel to a face, as a cylinder resting on the hull, in odd cases at any angle, a
+// corner or an edge of the hull against the cap. The deepest point within 0.02 mm of the
+// direction search (4e-6 m at worst today). The cylinder is moved along a line near the face's
+// normal or its own axis until the search says it touches.
+TEST(collide_polyhedron_test, random_cylinder_cap_touching_a_hull) {
+    rng random(59);
+    const vector3 pos_a{scalar(20.3), scalar(1.7), scalar(-15.2)};
+    for (int i = 0; i < 60; ++i) {
+        auto hull = random_hull(random, i);
+        cylinder_shape cylinder{random.uniform(0.1, 0.5), random.uniform(0.1, 0.5), coordinate_axis(i % 3)};
+        auto orn_a = random.orientation();
+        placed_polyhedron poly(hull, pos_a, orn_a);
+        vector3 start, normal;
+        quaternion orn_b;
+        if (i % 2 == 0) {
+            auto face = std::min(std::size_t(random.uniform(0, scalar(poly.polygons.size()))),
+                                 poly.polygons.size() - 1);
+            normal = poly.face_normal(face);
+            start = vector3_zero;
+            for (const auto &v : poly.polygons[face])
+                start += v / scalar(poly.polygons[face].size());
+            auto side = normalize(cross(normal, random.unit()));
+            orn_b = quaternion_axis_angle(side, random.uniform(0, 2e-3)) *
+                    shortest_arc(coordinate_axis_vector(cylinder.axis), normal);
+        } else {
+            orn_b = random.orientation();
+            normal = coordinate_axis_vector(cylinder.axis, orn_b);
+            start = pos_a;
+        }
+        auto off_normal = normalize(cross(normal, random.unit()));
+        auto dir = normalize(normal + off_normal * random.uniform(0, 0.5));
+        auto target = random.uniform(-0.002, 0.002);
+        auto poly_support = [&](const vector3 &n) { return points_support(poly.vertices, n); };
+        auto separation = [&](scalar t) {
+            return searched_gap(poly_support, [&](const vector3 &n) {
+                return cylinder_support(cylinder, start + dir * t, orn_b, n);
+            });
+        };
+        auto [t, searched] = secant_to(separation, cylinder.half_length + scalar(0.3), target);
+        ASSERT_LT(std::abs(searched), scalar(0.005)) << "case " << i << " did not come to touch";
+        auto pos_b = start + dir * t;
+        collision_context ctx{pos_a, orn_a, pos_b, orn_b, scalar(0.02)};
+        collision_result r;
+        collide(hull, cylinder, ctx, r);
+        ASSERT_GE(r.num_points, 1u) << "case " << i << " at " << searched;
+        // Any direction's gap is a lower bound of the distance, the reported normals' too.
+        for (std::size_t k = 0; k < r.num_points; ++k) {
+            const auto &n = r.point[k].normal;
+            searched = std::max(searched, -poly_support(-n) - cylinder_support(cylinder, pos_b, orn_b, n));
+        }
+        EXPECT_NEAR(min_distance(r), searched, 2e-5) << "case " << i;
+    }
+}
+
 TEST(collide_polyhedron_test, random_polyhedron_plane_matches_brute_force) {
     rng random(56);
     int touching = 0;

@@ -1,4 +1,5 @@
 #include "edyn/collision/shape_raycast.hpp"
+#include "edyn/math/geom.hpp"
 #include "edyn/math/math.hpp"
 #include "edyn/math/transform.hpp"
 #include "unit/shapes/shape_test_util.hpp"
@@ -57,8 +58,8 @@ scalar support(const sphere_shape &s, const vector3 &) { return s.radius; }
 scalar support(const box_shape &b, const vector3 &n) { return dot(abs(n), b.half_extents); }
 
 scalar support(const cylinder_shape &c, const vector3 &n) {
-    auto a = n[coordinate_axis_index(c.axis)];
-    return std::abs(a) * c.half_length + c.radius * std::sqrt(std::max(scalar(0), 1 - a * a));
+    auto k = coordinate_axis_index(c.axis);
+    return std::abs(n[k]) * c.half_length + c.radius * length_across_axis(n, k);
 }
 
 scalar support(const capsule_shape &c, const vector3 &n) {
