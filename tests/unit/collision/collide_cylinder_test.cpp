@@ -447,12 +447,12 @@ box_shape random_box(std::mt19937 &rng) {
     return {{size(rng), size(rng), size(rng)}};
 }
 
-// A cylinder touching (-2 mm to 2 mm) B, at 20 m from the origin, with its axis within 2e-3 rad
-// of B's `k`-th axis (a cylinder's own, a box face's normal): cap against cap or face, or a rim
-// just tipped onto it. Along directions that close to the axis, a cylinder's projection once
-// lost half its digits (sqrt(1 - c^2) in float) and the deepest point of cylinder pairs came out
-// up to 0.3 mm too deep. A is moved along a line near B's axis until the direction search says
-// it touches.
+// A cylinder touching (-2 mm to 2 mm) B at 20 m from the origin, its axis within 2e-3 rad of
+// an axis of B (a cylinder's or capsule's own, a box face's normal): cap against cap, end or
+// face, or a rim just tipped onto it. Along directions that close to the axis a cylinder's
+// projection once lost half its digits (sqrt(1 - c^2) in float), and the deepest point of
+// cylinder pairs came out up to 0.3 mm too deep. A is moved along a line near B's axis until
+// the direction search says it touches.
 template<typename B, typename MakeB>
 void random_nearly_coaxial_touching(MakeB &&make_b, unsigned seed) {
     std::mt19937 rng(seed + random_seed_offset);
@@ -468,6 +468,9 @@ void random_nearly_coaxial_touching(MakeB &&make_b, unsigned seed) {
         if constexpr (std::is_same_v<B, cylinder_shape>) {
             a.axis = b.axis;
             b_half = b.half_length;
+        } else if constexpr (std::is_same_v<B, capsule_shape>) {
+            a.axis = b.axis;
+            b_half = b.half_length + b.radius;
         } else {
             a.axis = coordinate_axis(pick_axis(rng));
             b_half = b.half_extents[coordinate_axis_index(a.axis)];
@@ -1097,6 +1100,10 @@ TEST(CollideCylinderCapsule, HemisphereOnTheCapAndOnTheRim) {
 TEST(CollideCylinderCapsule, RandomAgainstBruteForce) {
     random_against_brute_force<cylinder_shape, capsule_shape>(random_cylinder, random_capsule, scalar(1.6),
                                                               37);
+}
+
+TEST(CollideCylinderCapsule, RandomNearlyCoaxialTouching) {
+    random_nearly_coaxial_touching<capsule_shape>(random_capsule, 79);
 }
 
 TEST(CollideCylinderCapsule, RandomTouchingFarFromTheOrigin) {
