@@ -176,6 +176,7 @@ void island_manager::put_to_sleep(registry &registry, entity island_entity) {
 void island_manager::split(registry &registry, entity island_entity) {
     auto &isle = registry.get<island>(island_entity);
     isle.may_split = false;
+    isle.since_split = 0;
     auto nodes = std::move(isle.nodes);
     auto edges = std::move(isle.edges);
     isle.nodes.clear();
@@ -249,25 +250,48 @@ void island_manager::update_sleeping(registry &registry, const settings &setting
     candidates.clear();
     for (auto island_entity : registry.view<island>(exclude<sleeping_tag>))
         candidates.push_back(island_entity);
+    // Of the islands that may have come apart, were not split for time_to_sleep, and hold a body
+    // ready to sleep but also one that is not: the one whose ready body has waited longest (the
+    // first of equals).
+    entity sleepiest_island = null;
+    scalar sleepiest_time = 0;
     for (auto island_entity : candidates) {
         if (!registry.valid(island_entity) || registry.all_of<sleeping_tag>(island_entity)) continue;
         auto &isle = registry.get<island>(island_entity);
+        isle.since_split += dt;
+        bool splittable = isle.may_split && isle.since_split >= settings.time_to_sleep;
         bool can_sleep = !isle.nodes.empty();
+        bool any_ready = false;
+        scalar longest_ready = 0;
         for (auto node : isle.nodes) {
-            if (registry.get<sleep_timer>(node).time < settings.time_to_sleep ||
-                registry.all_of<sleeping_disabled_tag>(node)) {
+            auto time = registry.get<sleep_timer>(node).time;
+            if (time < settings.time_to_sleep || registry.all_of<sleeping_disabled_tag>(node)) {
                 can_sleep = false;
-                break;
+                // Only an island that may split now needs to know whether any body is ready.
+                if (!splittable) break;
+            } else if (!any_ready || time > longest_ready) {
+                any_ready = true;
+                longest_ready = time;
             }
         }
-        if (!can_sleep) continue;
-        if (isle.may_split) {
-            // The pieces are checked again next step, each on its own.
-            split(registry, island_entity);
-            continue;
+        if (can_sleep) {
+            if (isle.may_split) {
+                // The pieces are checked again next step, each on its own.
+                split(registry, island_entity);
+                continue;
+            }
+            put_to_sleep(registry, island_entity);
+        } else if (splittable && any_ready && (sleepiest_island == null || longest_ready > sleepiest_time)) {
+            sleepiest_island = island_entity;
+            sleepiest_time = longest_ready;
         }
-        put_to_sleep(registry, island_entity);
     }
+    // A body that left an island and never slows down (a ball rolling away) would keep every body
+    // it once touched awake if an island split only once all its bodies were ready. So an island
+    // that lost links and holds a body ready to sleep is split too: one a step, and each at most
+    // once per time_to_sleep, since a split walks the whole island and a heap that keeps moving
+    // loses links every step while it stays whole.
+    if (sleepiest_island != null) split(registry, sleepiest_island);
 }
 
 void island_manager::clear(registry &registry) {

@@ -158,5 +158,30 @@ TEST_F(sleeping, an_island_that_comes_apart_splits_and_sleeps_in_parts) {
     expect_contacts_are_island_edges();
 }
 
+// A ball rests against a box, in one island, then rolls away for good: with nothing to slow
+// its rolling it never gets slow enough to sleep. The box must still fall asleep: the island
+// splits once the box wants to sleep, not only once every body of the island does.
+TEST_F(sleeping, a_body_that_never_stops_does_not_keep_the_island_it_left_awake) {
+    auto box = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    auto ball = make_rigidbody(reg, sphere_def(0.5, {1, 0.5, 0}));
+    run_for(0.2);
+    if (simulates_here(reg)) {
+        ASSERT_EQ(reg.get<island_resident>(box).island_entity, reg.get<island_resident>(ball).island_entity);
+    }
+    // Rolling without slipping along +x: v = w x r with r = (0, -0.5, 0).
+    reg.patch<linvel>(ball, [](linvel &v) { v = vector3{3, 0, 0}; });
+    reg.patch<angvel>(ball, [](angvel &w) { w = vector3{0, 0, -6}; });
+    // The box's timer needs time_to_sleep (0.5 s) once the ball has left it.
+    run_for(2.0);
+    EXPECT_GT(pos(ball).x, 5) << "the ball rolled away";
+    EXPECT_GT(length(vel(ball)), get_settings(reg).sleep_linear_velocity) << "the ball still rolls";
+    EXPECT_FALSE(asleep(ball));
+    EXPECT_TRUE(asleep(box)) << "the ball that left keeps the box awake";
+    if (simulates_here(reg)) {
+        EXPECT_NE(reg.get<island_resident>(box).island_entity, reg.get<island_resident>(ball).island_entity);
+    }
+    expect_contacts_are_island_edges();
+}
+
 } // namespace
 } // namespace edyn::test

@@ -17,8 +17,12 @@ struct island {
     std::vector<entity> nodes; ///< The dynamic bodies in the island, in no particular order.
     std::vector<entity> edges; ///< The manifolds in contact and constraints linking them.
     /// Whether an edge or node left since the island was last split: it may have come apart.
-    /// The island is split when it is about to sleep.
+    /// The island is split once one of its bodies is ready to sleep.
     bool may_split{false};
+    /// Simulated seconds since the island was made or last split (s). An island where only some
+    /// bodies are ready to sleep is split at most once per settings::time_to_sleep: a heap that
+    /// keeps moving loses links every step and is found whole by most splits.
+    scalar since_split{0};
 };
 
 /// Component: on every node and linked edge, the island it belongs to and its place there.

@@ -12,8 +12,8 @@ struct settings;
 
 /// Keeps islands up to date as the graph changes.
 /// Merging is immediate (an edge joining two islands merges the smaller into the larger);
-/// splitting is deferred until an island that lost edges is about to sleep, since a split island
-/// would only matter then and splits cost a traversal. One lives in world_state; the registry
+/// splitting is deferred until a body of an island that lost edges is ready to sleep, since a
+/// split island would only matter then and splits cost a traversal. One lives in world_state; the registry
 /// listeners and the step call it. Programs do not call it directly (wake_up_entity wakes a
 /// body).
 class island_manager {
@@ -69,7 +69,10 @@ public:
     /// Advances the sleep timers of awake bodies by dt, then puts to sleep every island whose
     /// bodies have all been slow for settings.time_to_sleep.
     /// An island that may have come apart is split first instead, and its pieces are checked
-    /// on the next call. Islands with a sleeping_disabled_tag body never sleep. A sleeping
+    /// on the next call. So is, one a call, an island that may have come apart where only some
+    /// bodies are ready to sleep: the one whose ready body has waited longest (a body that left
+    /// and never slows down would otherwise keep the rest awake). Islands with a
+    /// sleeping_disabled_tag body never sleep, and such a body is never ready. A sleeping
     /// body's velocities are set to zero. Islands are visited in the island pool's order, which
     /// depends only on the sequence of operations, so the result is reproducible.
     /// @param registry The registry the islands live in.
