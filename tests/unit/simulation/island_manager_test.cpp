@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <edyn/edyn.hpp>
 #include <edyn/simulation/island_manager.hpp>
@@ -28,6 +29,16 @@ struct island_manager_test : ::testing::Test {
         auto edge = reg.create();
         islands.link_edge(reg, edge, a, b);
         return edge;
+    }
+
+    // a - b - c with the link b - c gone, a and b moving at `speed`, c with sleeping_disabled_tag.
+    // Returns a and c.
+    std::array<entity, 2> chain_without_its_last_link(scalar speed) {
+        auto a = body(speed), b = body(speed), c = body();
+        reg.emplace<sleeping_disabled_tag>(c);
+        link(a, b);
+        islands.unlink_edge(reg, link(b, c));
+        return {a, c};
     }
 
     entity island_of(entity e) const { return reg.get<island_resident>(e).island_entity; }
@@ -83,30 +94,19 @@ TEST_F(island_manager_test, an_island_found_whole_is_split_again_only_after_time
     EXPECT_LE(splits, total / steps_to_sleep() + 1);
 }
 
-// Without a lost link nothing is split, and a body with sleeping_disabled_tag is never ready:
-// the island of a b - c chain where c is disabled neither splits nor sleeps.
+// A body with sleeping_disabled_tag never sleeps and is never ready to: it cannot make its
+// island split, but bodies whose link to it has gone still sleep once another body splits it.
 TEST_F(island_manager_test, a_body_with_sleeping_disabled_is_never_ready) {
-    auto a = body(), b = body(), c = body();
-    reg.emplace<sleeping_disabled_tag>(c);
-    link(a, b);
-    auto bc = link(b, c);
-    islands.unlink_edge(reg, bc);
-    // Only c, disabled, is in its own part: a and b may sleep once split.
+    auto [resting, disabled] = chain_without_its_last_link(0);
+    auto [moving, disabled_too] = chain_without_its_last_link(1);
     for (int step = 0; step < 3 * steps_to_sleep(); ++step)
         islands.update_sleeping(reg, config, dt);
-    EXPECT_TRUE(asleep(a));
-    EXPECT_FALSE(asleep(c));
-
-    // A disabled body alone cannot trigger a split: with a and b moving, nothing splits.
-    auto d = body(1), e = body(1), f = body();
-    reg.emplace<sleeping_disabled_tag>(f);
-    link(d, e);
-    auto ef = link(e, f);
-    islands.unlink_edge(reg, ef);
-    for (int step = 0; step < 3 * steps_to_sleep(); ++step)
-        islands.update_sleeping(reg, config, dt);
-    EXPECT_EQ(island_of(d), island_of(f));
-    EXPECT_FALSE(asleep(f));
+    EXPECT_TRUE(asleep(resting));
+    EXPECT_FALSE(asleep(disabled));
+    EXPECT_NE(island_of(resting), island_of(disabled));
+    // No body of the other island is ready: it is not split.
+    EXPECT_EQ(island_of(moving), island_of(disabled_too));
+    EXPECT_FALSE(asleep(disabled_too));
 }
 
 } // namespace
