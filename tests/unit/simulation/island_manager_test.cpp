@@ -31,8 +31,8 @@ struct island_manager_test : ::testing::Test {
         return edge;
     }
 
-    // a - b - c with the link b - c gone, a and b moving at `speed`, c with sleeping_disabled_tag.
-    // Returns a and c.
+    // a - b - c with the link b - c gone, a and b moving at `speed`, c never allowed to sleep
+    // (rigidbody_def::sleeping_disabled). Returns a and c.
     std::array<entity, 2> chain_without_its_last_link(scalar speed) {
         auto a = body(speed), b = body(speed), c = body();
         reg.emplace<sleeping_disabled_tag>(c);
@@ -94,19 +94,19 @@ TEST_F(island_manager_test, an_island_found_whole_is_split_again_only_after_time
     EXPECT_LE(splits, total / steps_to_sleep() + 1);
 }
 
-// A body with sleeping_disabled_tag never sleeps and is never ready to: it cannot make its
+// A body that is never allowed to sleep is never ready to either: it cannot make its
 // island split, but bodies whose link to it has gone still sleep once another body splits it.
-TEST_F(island_manager_test, a_body_with_sleeping_disabled_is_never_ready) {
-    auto [resting, disabled] = chain_without_its_last_link(0);
-    auto [moving, disabled_too] = chain_without_its_last_link(1);
+TEST_F(island_manager_test, a_body_never_allowed_to_sleep_is_never_ready) {
+    auto [resting, insomniac] = chain_without_its_last_link(0);
+    auto [moving, insomniac_too] = chain_without_its_last_link(1);
     for (int step = 0; step < 3 * steps_to_sleep(); ++step)
         islands.update_sleeping(reg, config, dt);
     EXPECT_TRUE(asleep(resting));
-    EXPECT_FALSE(asleep(disabled));
-    EXPECT_NE(island_of(resting), island_of(disabled));
+    EXPECT_FALSE(asleep(insomniac));
+    EXPECT_NE(island_of(resting), island_of(insomniac));
     // No body of the other island is ready: it is not split.
-    EXPECT_EQ(island_of(moving), island_of(disabled_too));
-    EXPECT_FALSE(asleep(disabled_too));
+    EXPECT_EQ(island_of(moving), island_of(insomniac_too));
+    EXPECT_FALSE(asleep(insomniac_too));
 }
 
 } // namespace
