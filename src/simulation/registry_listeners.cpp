@@ -108,6 +108,12 @@ void on_destroy_manifold(registry &registry, entity e) {
     w.islands.unlink_edge(registry, e);
     auto &manifold = registry.get<contact_manifold>(e);
     if (manifold.num_points == 0) return;
+    // A body asleep against the other one (a static floor destroyed or cleared from under it)
+    // has lost its support: it wakes to fall. An awake body needs nothing: it is stepped anyway.
+    for (auto body : manifold.body) {
+        if (registry.valid(body) && registry.all_of<sleeping_tag>(body))
+            w.islands.wake_entity(registry, body);
+    }
     // Contact is lost with the manifold: say so while the entity still exists.
     auto &events = registry.ctx().get<contact_events>();
     using kind = contact_events::kind;

@@ -97,23 +97,6 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
 
 namespace {
 
-// Bodies resting against a moving kinematic body must not fall asleep, nor stay asleep.
-void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
-    auto moving = [&](entity e) {
-        return registry.all_of<kinematic_tag>(e) &&
-               (registry.get<linvel>(e) != vector3_zero || registry.get<angvel>(e) != vector3_zero);
-    };
-    auto kinematics = registry.view<kinematic_tag>();
-    if (std::none_of(kinematics.begin(), kinematics.end(), moving)) return;
-    for (auto manifold_entity : world.manifolds) {
-        auto &manifold = registry.get<contact_manifold>(manifold_entity);
-        if (manifold.num_points == 0) continue;
-        auto a = manifold.body[0], b = manifold.body[1];
-        if (moving(b)) world.islands.wake_entity(registry, a);
-        if (moving(a)) world.islands.wake_entity(registry, b);
-    }
-}
-
 // The solver bodies and point count of the contact an island edge stands for; no points when
 // the edge is not a contact to solve (a joint, a manifold without points, a sensor's, or one
 // between two bodies that do not move).
@@ -304,7 +287,6 @@ void place_contacts(world_state &world) {
 } // namespace
 
 void gather_contacts(registry &registry, world_state &world) {
-    wake_bodies_on_moving_kinematics(registry, world);
     find_island_contacts(registry, world);
     place_contacts(world);
 

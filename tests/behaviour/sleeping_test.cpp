@@ -183,5 +183,79 @@ TEST_F(sleeping, a_body_that_never_stops_does_not_keep_the_island_it_left_awake)
     expect_contacts_are_island_edges();
 }
 
+// A kinematic body is in no island: nothing but its motion tells the bodies resting on it that
+// they must move. A box asleep on a platform that starts to slide wakes, is dragged up to the
+// platform's speed by friction, and rides it. It slips v^2 / (2 mu g) behind on the way.
+TEST_F(sleeping, a_box_asleep_on_a_kinematic_platform_rides_it_once_it_moves) {
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_kinematic;
+    def.shape = box_shape{2, scalar(0.25), 2};
+    def.position = {0, 1, 0};
+    def.material->friction = scalar(0.5);
+    auto platform = make_rigidbody(reg, def);
+    auto box_on_top = box_def({0.25, 0.25, 0.25}, {0, 1.5, 0});
+    box_on_top.material->friction = scalar(0.5);
+    auto box = make_rigidbody(reg, box_on_top);
+    run_for(2.0);
+    ASSERT_TRUE(asleep(box));
+
+    scalar speed = 1;
+    reg.patch<linvel>(platform, [&](linvel &v) { v = vector3{speed, 0, 0}; });
+    run_for(1.5);
+    EXPECT_FALSE(asleep(box)) << "the box sleeps on a moving platform";
+    EXPECT_NEAR(vel(box).x, speed, scalar(0.01)) << "the box does not ride the platform";
+    EXPECT_NEAR(pos(box).y, 1.5, scalar(0.01));
+    // mu = 0.5 for both bodies, mixed to sqrt(0.5 * 0.5).
+    auto slip = speed * speed / (2 * scalar(0.5) * length(get_gravity(reg)));
+    EXPECT_NEAR(pos(platform).x - pos(box).x, slip, scalar(0.015));
+}
+
+// A platform rising slower than the sleep speed must not let what rests on it fall asleep: the
+// box would stay where it slept while the platform moved through it.
+TEST_F(sleeping, a_box_on_a_slowly_rising_kinematic_platform_stays_awake_and_rises) {
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_kinematic;
+    def.shape = box_shape{2, scalar(0.25), 2};
+    def.position = {0, 1, 0};
+    auto platform = make_rigidbody(reg, def);
+    auto box = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {0, 1.5, 0}));
+    run_for(2.0);
+    ASSERT_TRUE(asleep(box));
+
+    auto rate = get_settings(reg).sleep_linear_velocity / 2;
+    reg.patch<linvel>(platform, [&](linvel &v) { v = vector3{0, rate, 0}; });
+    run_for(3.0);
+    EXPECT_NEAR(pos(platform).y, 1 + 3 * rate, scalar(1e-3));
+    EXPECT_FALSE(asleep(box)) << "the box sleeps on a moving platform";
+    EXPECT_NEAR(pos(box).y - pos(platform).y, 0.5, scalar(0.01)) << "the box did not rise with the platform";
+    EXPECT_NEAR(vel(box).y, rate, scalar(0.005));
+}
+
+// A static or kinematic body is in no island either: when one that sleeping bodies rest on is
+// destroyed, or stops being a rigid body, they lose their support and must fall.
+TEST_F(sleeping, boxes_asleep_on_a_static_table_fall_when_it_is_destroyed_or_cleared) {
+    auto make_table = [&](scalar x) {
+        rigidbody_def def;
+        def.kind = rigidbody_kind::rb_static;
+        def.shape = box_shape{1, scalar(0.25), 1};
+        def.position = {x, 1, 0};
+        return make_rigidbody(reg, def);
+    };
+    auto destroyed = make_table(-3);
+    auto cleared = make_table(3);
+    auto left = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {-3, 1.5, 0}));
+    auto right = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {3, 1.5, 0}));
+    run_for(2.0);
+    ASSERT_TRUE(asleep(left));
+    ASSERT_TRUE(asleep(right));
+
+    reg.destroy(destroyed);
+    clear_rigidbody(reg, cleared);
+    // A fall of 1.25 m takes 0.5 s; the boxes then rest on the ground.
+    run_for(1.5);
+    EXPECT_NEAR(pos(left).y, 0.25, scalar(0.01)) << "the box stays where the destroyed table was";
+    EXPECT_NEAR(pos(right).y, 0.25, scalar(0.01)) << "the box stays where the cleared table was";
+}
+
 } // namespace
 } // namespace edyn::test

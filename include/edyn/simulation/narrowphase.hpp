@@ -6,6 +6,14 @@
 
 namespace edyn {
 
+/// Wakes the bodies touching a kinematic body that moves (a nonzero linvel or angvel), and
+/// resets their sleep timers: a kinematic body is in no island, so nothing else tells what
+/// rests on it that it must move, nor keeps it from falling asleep there. Called by run_step
+/// before the narrowphase, so that they are collided and solved in the same step.
+/// @param registry An attached registry.
+/// @param world The registry's world_state.
+void wake_bodies_on_moving_kinematics(registry &registry, world_state &world);
+
 /// Step phase 2: updates the contact points of every awake manifold.
 /// Closest points for every awake manifold whose pair has a dynamic body, merged into the
 /// manifold (points matched across steps for warm starting), with each point's mixed material;

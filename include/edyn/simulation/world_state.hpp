@@ -63,6 +63,8 @@ struct world_state {
         std::uint32_t num_points{0}; ///< The manifold's points; 0 when it is not solved.
         std::uint32_t slot{0};       ///< Where the manifold lies in its pool (`storage::value_at`).
     };
+    /// Scratch of wake_bodies_on_moving_kinematics: the bodies it wakes.
+    std::vector<entity> kinematic_touching;
     /// The edges of the awake islands, island by island, as gather_contacts visits them.
     std::vector<entity> island_edges;
     /// The contact of each of island_edges.
