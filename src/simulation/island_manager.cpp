@@ -1,4 +1,5 @@
 #include "edyn/simulation/island_manager.hpp"
+#include "edyn/constraints/constraint_links.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/simulation/settings.hpp"
@@ -158,6 +159,16 @@ void island_manager::wake_entity(registry &registry, entity e) {
     // Awake already, the body still starts its wait for sleep again: a change made just before
     // its island would have slept (a new centre of mass, a push) must get the steps to act.
     if (auto *timer = registry.try_get<sleep_timer>(e)) timer->time = 0;
+}
+
+void island_manager::wake_joined_to(registry &registry, entity e) {
+    auto *list = registry.try_get<constraint_list>(e);
+    for (auto constraint = list ? list->first : null; constraint != null;) {
+        auto &links = registry.get<constraint_links>(constraint);
+        auto side = links.body[0] == e ? 0 : 1;
+        wake_entity(registry, links.body[1 - side]);
+        constraint = links.next[side];
+    }
 }
 
 void island_manager::put_to_sleep(registry &registry, entity island_entity) {

@@ -350,13 +350,15 @@ void publish_changes(registry &registry, world_state &world) {
 } // namespace
 
 // What sleeps is not in the narrowphase's list of manifolds, and a kinematic body is in no
-// island: each moving kinematic body asks the broadphase for the bodies whose fat boxes overlap
-// its own (every pair with a manifold) and wakes those it touches.
+// island: each moving kinematic body wakes the bodies joined to it, and asks the broadphase for
+// the bodies whose fat boxes overlap its own (every pair with a manifold) to wake those it touches.
 void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
     auto &touching = world.kinematic_touching;
     touching.clear();
     for (auto [e, v, w] : registry.view<kinematic_tag, linvel, angvel>().each()) {
-        if ((v == vector3_zero && w == vector3_zero) || !world.broadphase.contains(e)) continue;
+        if (v == vector3_zero && w == vector3_zero) continue;
+        world.islands.wake_joined_to(registry, e);
+        if (!world.broadphase.contains(e)) continue;
         world.broadphase.query(world.broadphase.get_fat_aabb(e), [&](entity other) {
             auto manifold = other == e ? null : world.broadphase.get_manifold(e, other);
             if (manifold != null && registry.get<contact_manifold>(manifold).num_points > 0)

@@ -51,6 +51,9 @@ void on_construct_constraint(registry &registry, entity e) {
 }
 
 void on_destroy_constraint(registry &registry, entity e) {
+    // The bodies it held lose a force: if they sleep (a bob hanging from a rope that is cut),
+    // they wake to respond.
+    world(registry).islands.wake_entity(registry, e);
     world(registry).islands.unlink_edge(registry, e);
     release_constraint(registry, e);
 }
@@ -158,6 +161,8 @@ void on_update_transform(registry &registry, entity e) {
         *prev = {registry.get<position>(e), registry.get<orientation>(e)};
     }
     w.islands.wake_entity(registry, e);
+    // A static or kinematic body is in no island: what hangs from it wakes to follow.
+    if (!registry.all_of<dynamic_tag>(e)) w.islands.wake_joined_to(registry, e);
 }
 
 void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(registry, e); }

@@ -30,7 +30,7 @@ void run_step(registry &registry) {
     world.broadphase.update(registry, world.step_scheduler, estimate.estimator());
     //    Paged meshes load the pages bodies are over and near, and unload those left behind.
     update_paged_meshes(registry, world);
-    //    Bodies touching a kinematic body that moves wake, to move with it.
+    //    Bodies touching a kinematic body that moves, or joined to it, wake to move with it.
     wake_bodies_on_moving_kinematics(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.
     run_narrowphase(registry, world);

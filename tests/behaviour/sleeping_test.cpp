@@ -257,5 +257,72 @@ TEST_F(sleeping, boxes_asleep_on_a_static_table_fall_when_it_is_destroyed_or_cle
     EXPECT_NEAR(pos(right).y, 0.25, scalar(0.01)) << "the box stays where the cleared table was";
 }
 
+// A body hanging at rest from an anchor on a 2 m rope (a distance constraint), away from
+// everything else.
+struct hanging {
+    entity anchor, rope, bob;
+};
+
+hanging hang(registry &reg, rigidbody_kind kind, bool shaped, scalar z) {
+    rigidbody_def def;
+    def.kind = kind;
+    if (shaped) def.shape = box_shape{scalar(0.1), scalar(0.1), scalar(0.1)};
+    def.position = {0, 10, z};
+    auto anchor = make_rigidbody(reg, def);
+    auto bob = make_rigidbody(reg, sphere_def(scalar(0.2), {0, 8, z}));
+    auto rope = make_constraint<distance_constraint>(reg, anchor, bob, [](distance_constraint &c) {
+        c.pivot[0] = c.pivot[1] = vector3_zero;
+        c.distance = 2;
+    });
+    return {anchor, rope, bob};
+}
+
+// An anchor is static or kinematic, in no island: a bob asleep under it must still wake and
+// follow it when it moves, at its velocity or placed by the program.
+TEST_F(sleeping, bobs_asleep_on_ropes_follow_anchors_that_move) {
+    auto shaped = hang(reg, rigidbody_kind::rb_kinematic, true, -10);
+    auto amorphous = hang(reg, rigidbody_kind::rb_kinematic, false, 0);
+    auto placed = hang(reg, rigidbody_kind::rb_static, true, 10);
+    run_for(3.0);
+    for (auto *h : {&shaped, &amorphous, &placed})
+        ASSERT_TRUE(asleep(h->bob));
+
+    scalar v = 1;
+    for (auto *h : {&shaped, &amorphous})
+        reg.patch<linvel>(h->anchor, [&](linvel &vel) { vel = vector3{v, 0, 0}; });
+    reg.patch<position>(placed.anchor, [](position &p) { p.x += 1; });
+    scalar t = scalar(0.5);
+    run_for(t);
+    for (auto *h : {&shaped, &amorphous, &placed}) {
+        EXPECT_FALSE(asleep(h->bob));
+        EXPECT_NEAR(distance(pos(h->bob), pos(h->anchor)), 2, scalar(0.01)) << "the rope stretched";
+    }
+    // Seen from an anchor that starts moving at v, the bob swings from the bottom at -v: for
+    // small angles x = v t - (v / w) sin(w t), with w = sqrt(g / L).
+    auto w = std::sqrt(length(get_gravity(reg)) / 2);
+    for (auto *h : {&shaped, &amorphous})
+        EXPECT_NEAR(pos(h->bob).x, v * t - v / w * std::sin(w * t), scalar(0.01))
+            << "the bob did not follow its anchor";
+    // Moved 1 m aside, the anchor lets the bob swing from 30 degrees: it is well on its way.
+    EXPECT_GT(pos(placed.bob).x, scalar(0.3)) << "the bob did not follow its anchor";
+}
+
+// A bob asleep on a rope falls freely once the rope is cut, or its anchor destroyed or cleared.
+TEST_F(sleeping, a_bob_asleep_on_a_rope_falls_when_the_rope_or_its_anchor_goes) {
+    auto cut = hang(reg, rigidbody_kind::rb_static, true, -10);
+    auto destroyed = hang(reg, rigidbody_kind::rb_static, true, 0);
+    auto cleared = hang(reg, rigidbody_kind::rb_kinematic, true, 10);
+    run_for(3.0);
+    for (auto *h : {&cut, &destroyed, &cleared})
+        ASSERT_TRUE(asleep(h->bob));
+
+    reg.destroy(cut.rope);
+    reg.destroy(destroyed.anchor);
+    clear_rigidbody(reg, cleared.anchor);
+    run_for(1.0);
+    for (auto *h : {&cut, &destroyed, &cleared})
+        EXPECT_NEAR(pos(h->bob).y, 8 - fall(reg, 1), scalar(0.01)) << "the bob still hangs";
+}
+
 } // namespace
 } // namespace edyn::test

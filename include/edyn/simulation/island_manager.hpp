@@ -65,6 +65,11 @@ public:
     /// @param registry The registry the entity lives in.
     /// @param entity A body, manifold or constraint.
     void wake_entity(registry &registry, entity entity);
+    /// Wakes, as wake_entity does, every body joined to `entity` by a constraint.
+    /// A static or kinematic body is in no island: when it moves, what hangs from it must wake.
+    /// @param registry The registry the entity lives in.
+    /// @param entity A body or external entity; one without constraints wakes nothing.
+    void wake_joined_to(registry &registry, entity entity);
 
     /// Advances the sleep timers of awake bodies by dt, then puts to sleep every island whose
     /// bodies have all been slow for settings.time_to_sleep.

@@ -6,10 +6,10 @@
 
 namespace edyn {
 
-/// Wakes the bodies touching a kinematic body that moves (a nonzero linvel or angvel), and
-/// resets their sleep timers: a kinematic body is in no island, so nothing else tells what
-/// rests on it that it must move, nor keeps it from falling asleep there. Called by run_step
-/// before the narrowphase, so that they are collided and solved in the same step.
+/// Wakes the bodies touching a kinematic body that moves (a nonzero linvel or angvel), or joined
+/// to it by a constraint, and resets their sleep timers: a kinematic body is in no island, so
+/// nothing else tells what rests on it that it must move, nor keeps it from falling asleep there. Called by
+/// run_step before the narrowphase, so that they are collided and solved in the same step.
 /// @param registry An attached registry.
 /// @param world The registry's world_state.
 void wake_bodies_on_moving_kinematics(registry &registry, world_state &world);
