@@ -137,39 +137,72 @@ void wake_sleepers_near(registry &registry, world_state &w, entity e, const AABB
         w.islands.wake_entity(registry, other);
 }
 
-void on_update_transform(registry &registry, entity e) {
-    if (!registry.all_of<rigidbody_tag>(e)) return;
+// A static or kinematic body is in no island, so waking it wakes nothing: the bodies asleep
+// against it within `aabb` (grown by the contact distance), and those joined to it by a
+// constraint, wake instead.
+void wake_neighbours(registry &registry, world_state &w, entity e, const AABB &aabb) {
+    if (w.broadphase.contains(e)) wake_sleepers_near(registry, w, e, aabb);
+    w.islands.wake_joined_to(registry, e);
+}
+
+// The program moved a body or changed its shape: its AABB is computed again, and a static
+// body's proxy is put back where it now is (the broadphase never moves static proxies). What
+// lay against a static or kinematic body where it was, or is in its way where it is now, wakes.
+void refresh_placement(registry &registry, entity e) {
     auto &w = world(registry);
-    if (registry.all_of<dynamic_tag>(e)) update_inertia_world(registry, e);
+    bool dynamic = registry.all_of<dynamic_tag>(e);
     if (registry.all_of<AABB>(e)) {
         auto old_aabb = registry.get<AABB>(e);
         update_rigidbody_aabb(registry, e);
-        if (!registry.all_of<dynamic_tag>(e) && w.broadphase.contains(e)) {
-            // A static or kinematic body is in no island: waking it wakes nothing. Bodies asleep
-            // against it where it was, or in the way where it is now, must wake to respond.
-            wake_sleepers_near(registry, w, e, old_aabb);
-            wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
+        if (!dynamic) {
+            wake_neighbours(registry, w, e, old_aabb);
+            wake_neighbours(registry, w, e, registry.get<AABB>(e));
         }
         if (registry.all_of<static_tag>(e) && w.broadphase.contains(e)) {
-            // Static proxies are never moved by the broadphase: put it back where it is now.
             w.broadphase.remove(registry, e);
             w.broadphase.insert(e, registry.get<AABB>(e), true);
         }
+    } else if (!dynamic) {
+        w.islands.wake_joined_to(registry, e);
     }
+    w.islands.wake_entity(registry, e);
+}
+
+void on_update_transform(registry &registry, entity e) {
+    if (!registry.all_of<rigidbody_tag>(e)) return;
+    if (registry.all_of<dynamic_tag>(e)) update_inertia_world(registry, e);
     if (auto *prev = registry.try_get<previous_transform>(e)) {
         // A teleport is not interpolated.
         *prev = {registry.get<position>(e), registry.get<orientation>(e)};
     }
-    w.islands.wake_entity(registry, e);
-    // A static or kinematic body is in no island: what hangs from it wakes to follow.
-    if (!registry.all_of<dynamic_tag>(e)) w.islands.wake_joined_to(registry, e);
+    refresh_placement(registry, e);
 }
 
 void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(registry, e); }
 
-void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
+// A change the simulation must respond to (a velocity, a mass, a material, a shape). A static or
+// kinematic body's new friction or velocity acts on what rests on it: that wakes.
+void on_update_wake(registry &registry, entity e) {
+    auto &w = world(registry);
+    w.islands.wake_entity(registry, e);
+    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e)) {
+        if (auto *aabb = registry.try_get<AABB>(e)) {
+            wake_neighbours(registry, w, e, *aabb);
+        } else {
+            w.islands.wake_joined_to(registry, e);
+        }
+    }
+}
 
-void on_update_shape(registry &registry, entity e) { ++registry.get_or_emplace<shape_epoch>(e).value; }
+void on_update_shape(registry &registry, entity e) {
+    ++registry.get_or_emplace<shape_epoch>(e).value;
+    // A dynamic body's box follows its shape every step; a static or kinematic one's is computed
+    // when it moves, so now.
+    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e)) refresh_placement(registry, e);
+}
+
+// A constraint's settings changed: the bodies it joins respond, asleep or not.
+void on_update_constraint(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);
@@ -209,12 +242,14 @@ template<typename... Constraints>
 void connect_constraints(registry &registry, constraint_type_list<Constraints...>) {
     (registry.on_construct<Constraints>().template connect<&on_construct_constraint<Constraints>>(), ...);
     (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint>(), ...);
+    (registry.on_update<Constraints>().template connect<&on_update_constraint>(), ...);
 }
 
 template<typename... Constraints>
 void disconnect_constraints(registry &registry, constraint_type_list<Constraints...>) {
     (registry.on_construct<Constraints>().template disconnect<&on_construct_constraint<Constraints>>(), ...);
     (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint>(), ...);
+    (registry.on_update<Constraints>().template disconnect<&on_update_constraint>(), ...);
 }
 
 // Constraints stay on the program's entities as plain components when edyn lets go.

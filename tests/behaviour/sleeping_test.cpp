@@ -324,5 +324,55 @@ TEST_F(sleeping, a_bob_asleep_on_a_rope_falls_when_the_rope_or_its_anchor_goes) 
         EXPECT_NEAR(pos(h->bob).y, 8 - fall(reg, 1), scalar(0.01)) << "the bob still hangs";
 }
 
+// A bob asleep on its rope rises with it when the program shortens the rope.
+TEST_F(sleeping, a_bob_asleep_on_a_rope_rises_when_the_rope_is_shortened) {
+    auto rope = hang(reg, rigidbody_kind::rb_static, true, 0);
+    run_for(3.0);
+    ASSERT_TRUE(asleep(rope.bob));
+    reg.patch<distance_constraint>(rope.rope, [](distance_constraint &c) { c.distance = 1; });
+    run_for(1.0);
+    EXPECT_NEAR(pos(rope.bob).y, 9, scalar(0.01)) << "the bob stays where the longer rope held it";
+}
+
+// Boxes asleep on static bodies respond when the program changes those bodies: one on a ramp
+// slides once the ramp loses its friction, at g sin(angle); one on a table falls once the table
+// is made too narrow to hold it.
+TEST_F(sleeping, boxes_asleep_on_static_bodies_respond_when_their_material_or_shape_changes) {
+    auto angle = scalar(0.35);
+    auto tilt = quaternion_axis_angle(vector3_z, angle);
+    rigidbody_def ramp_def;
+    ramp_def.kind = rigidbody_kind::rb_static;
+    ramp_def.shape = box_shape{3, scalar(0.25), 3};
+    ramp_def.orientation = tilt;
+    ramp_def.position = {0, 3, -5};
+    ramp_def.material->friction = scalar(0.8);
+    auto ramp = make_rigidbody(reg, ramp_def);
+    auto on_ramp_def = box_def({0.25, 0.25, 0.25}, ramp_def.position + rotate(tilt, vector3{0, 0.5, 0}));
+    on_ramp_def.orientation = tilt;
+    on_ramp_def.material->friction = scalar(0.8);
+    auto on_ramp = make_rigidbody(reg, on_ramp_def);
+
+    rigidbody_def table_def;
+    table_def.kind = rigidbody_kind::rb_static;
+    table_def.shape = box_shape{1, scalar(0.25), 1};
+    table_def.position = {0, 1, 5};
+    auto table = make_rigidbody(reg, table_def);
+    // Its centre 0.6 m from the table's, over the table until the table is 0.6 m wide.
+    auto on_table = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {scalar(0.6), 1.5, 5}));
+    run_for(3.0);
+    ASSERT_TRUE(asleep(on_ramp));
+    ASSERT_TRUE(asleep(on_table));
+    auto start = pos(on_ramp);
+
+    reg.patch<material>(ramp, [](material &m) { m.friction = 0; });
+    reg.patch<box_shape>(table, [](box_shape &b) { b.half_extents.x = scalar(0.3); });
+    scalar t = 1;
+    run_for(t);
+    auto slid = length(pos(on_ramp) - start);
+    auto a = length(get_gravity(reg)) * std::sin(angle);
+    EXPECT_NEAR(slid, a * t * t / 2, scalar(0.02)) << "the box stays on the ramp without friction";
+    EXPECT_NEAR(pos(on_table).y, 0.25, scalar(0.01)) << "the box stays over the narrowed table";
+}
+
 } // namespace
 } // namespace edyn::test
