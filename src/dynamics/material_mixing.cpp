@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace edyn {
 
@@ -35,6 +36,14 @@ void insert_material_mixing(registry &registry, material_id_type id0, material_i
     validate_material("insert_material_mixing", "mixed", mixed);
     if (id0 > id1) std::swap(id0, id1);
     registry.ctx().emplace<material_mix_table>().pairs[{id0, id1}] = mixed;
+    // Bodies at rest on each other sleep with their contacts: each body with one of the two ids
+    // is told that its material changed, which wakes it (and in asynchronous mode sends it).
+    std::vector<entity> changed;
+    for (auto [e, mat] : registry.view<material>().each()) {
+        if (mat.id == id0 || mat.id == id1) changed.push_back(e);
+    }
+    for (auto e : changed)
+        registry.patch<material>(e);
 }
 
 material_base get_mixed_material(const registry &registry, const material &a, const material &b) {

@@ -374,5 +374,36 @@ TEST_F(sleeping, boxes_asleep_on_static_bodies_respond_when_their_material_or_sh
     EXPECT_NEAR(pos(on_table).y, 0.25, scalar(0.01)) << "the box stays over the narrowed table";
 }
 
+// A pair of material ids given a frictionless mixing at run time: a box asleep on a ramp, each
+// with one of the ids, slides at g sin(angle).
+TEST_F(sleeping, a_box_asleep_on_a_ramp_slides_once_their_materials_mix_without_friction) {
+    auto angle = scalar(0.35);
+    auto tilt = quaternion_axis_angle(vector3_z, angle);
+    rigidbody_def ramp_def;
+    ramp_def.kind = rigidbody_kind::rb_static;
+    ramp_def.shape = box_shape{3, scalar(0.25), 3};
+    ramp_def.orientation = tilt;
+    ramp_def.position = {0, 3, 0};
+    ramp_def.material->friction = scalar(0.8);
+    ramp_def.material->id = 1;
+    make_rigidbody(reg, ramp_def);
+    auto box_on_ramp = box_def({0.25, 0.25, 0.25}, ramp_def.position + rotate(tilt, vector3{0, 0.5, 0}));
+    box_on_ramp.orientation = tilt;
+    box_on_ramp.material->friction = scalar(0.8);
+    box_on_ramp.material->id = 2;
+    auto box = make_rigidbody(reg, box_on_ramp);
+    run_for(3.0);
+    ASSERT_TRUE(asleep(box));
+    auto start = pos(box);
+
+    material_base ice;
+    ice.friction = 0;
+    insert_material_mixing(reg, 2, 1, ice);
+    scalar t = 1;
+    run_for(t);
+    auto a = length(get_gravity(reg)) * std::sin(angle);
+    EXPECT_NEAR(length(pos(box) - start), a * t * t / 2, scalar(0.02)) << "the box stays on the ramp";
+}
+
 } // namespace
 } // namespace edyn::test

@@ -78,9 +78,10 @@ struct material_mix_table {
 
 /// Makes bodies whose materials have ids id0 and id1 (in either order) use `mixed` when they
 /// touch, instead of the default mixing.
-/// A later call for the same pair replaces the entry. An id may be paired with itself. In
-/// asynchronous mode the table reaches the simulation worker with the next update(),
-/// step_simulation() or wait_for_simulation().
+/// A later call for the same pair replaces the entry. An id may be paired with itself. Bodies
+/// with either id are patched (`registry.patch<material>`), which wakes those asleep, so that
+/// contacts at rest take the new values too. In asynchronous mode the table reaches the
+/// simulation worker with the next update(), step_simulation() or wait_for_simulation().
 /// @param registry The registry the bodies live in.
 /// @param id0 One material id (material::id).
 /// @param id1 The other material id.
