@@ -1,4 +1,6 @@
 #include "behaviour/behaviour_support.hpp"
+#include <algorithm>
+#include <initializer_list>
 
 namespace edyn::test {
 namespace {
@@ -277,15 +279,19 @@ hanging hang(registry &reg, rigidbody_kind kind, bool shaped, scalar z) {
     return {anchor, rope, bob};
 }
 
+// Steps 3 s, long enough for bobs hanging at rest to fall asleep: whether all of them did.
+bool bobs_fall_asleep(sleeping &test, std::initializer_list<hanging> bobs) {
+    test.run_for(3.0);
+    return std::all_of(bobs.begin(), bobs.end(), [&](const hanging &h) { return test.asleep(h.bob); });
+}
+
 // An anchor is static or kinematic, in no island: a bob asleep under it must still wake and
 // follow it when it moves, at its velocity or placed by the program.
 TEST_F(sleeping, bobs_asleep_on_ropes_follow_anchors_that_move) {
     auto shaped = hang(reg, rigidbody_kind::rb_kinematic, true, -10);
     auto amorphous = hang(reg, rigidbody_kind::rb_kinematic, false, 0);
     auto placed = hang(reg, rigidbody_kind::rb_static, true, 10);
-    run_for(3.0);
-    for (auto *h : {&shaped, &amorphous, &placed})
-        ASSERT_TRUE(asleep(h->bob));
+    ASSERT_TRUE(bobs_fall_asleep(*this, {shaped, amorphous, placed}));
 
     scalar v = 1;
     for (auto *h : {&shaped, &amorphous})
@@ -312,9 +318,7 @@ TEST_F(sleeping, a_bob_asleep_on_a_rope_falls_when_the_rope_or_its_anchor_goes) 
     auto cut = hang(reg, rigidbody_kind::rb_static, true, -10);
     auto destroyed = hang(reg, rigidbody_kind::rb_static, true, 0);
     auto cleared = hang(reg, rigidbody_kind::rb_kinematic, true, 10);
-    run_for(3.0);
-    for (auto *h : {&cut, &destroyed, &cleared})
-        ASSERT_TRUE(asleep(h->bob));
+    ASSERT_TRUE(bobs_fall_asleep(*this, {cut, destroyed, cleared}));
 
     reg.destroy(cut.rope);
     reg.destroy(destroyed.anchor);
@@ -334,23 +338,42 @@ TEST_F(sleeping, a_bob_asleep_on_a_rope_rises_when_the_rope_is_shortened) {
     EXPECT_NEAR(pos(rope.bob).y, 9, scalar(0.01)) << "the bob stays where the longer rope held it";
 }
 
+// A static ramp tilted 0.35 rad about z and a box resting on it, both of friction 0.8 (enough to
+// hold it), each with the given material id.
+struct ramp_with_box {
+    static constexpr scalar angle = scalar(0.35);
+    entity ramp, box;
+
+    ramp_with_box(registry &reg, const vector3 &position, material_id_type ramp_id = invalid_material_id,
+                  material_id_type box_id = invalid_material_id) {
+        auto tilt = quaternion_axis_angle(vector3_z, angle);
+        rigidbody_def def;
+        def.kind = rigidbody_kind::rb_static;
+        def.shape = box_shape{3, scalar(0.25), 3};
+        def.orientation = tilt;
+        def.position = position;
+        def.material->friction = scalar(0.8);
+        def.material->id = ramp_id;
+        ramp = make_rigidbody(reg, def);
+        auto on_top = box_def({0.25, 0.25, 0.25}, position + rotate(tilt, vector3{0, 0.5, 0}));
+        on_top.orientation = tilt;
+        on_top.material->friction = scalar(0.8);
+        on_top.material->id = box_id;
+        box = make_rigidbody(reg, on_top);
+    }
+
+    // How far a box sliding freely down the ramp from rest goes in t seconds: g sin(angle) t^2 / 2.
+    static scalar free_slide(const registry &reg, scalar t) {
+        return length(get_gravity(reg)) * std::sin(angle) * t * t / 2;
+    }
+};
+
 // Boxes asleep on static bodies respond when the program changes those bodies: one on a ramp
 // slides once the ramp loses its friction, at g sin(angle); one on a table falls once the table
 // is made too narrow to hold it.
 TEST_F(sleeping, boxes_asleep_on_static_bodies_respond_when_their_material_or_shape_changes) {
-    auto angle = scalar(0.35);
-    auto tilt = quaternion_axis_angle(vector3_z, angle);
-    rigidbody_def ramp_def;
-    ramp_def.kind = rigidbody_kind::rb_static;
-    ramp_def.shape = box_shape{3, scalar(0.25), 3};
-    ramp_def.orientation = tilt;
-    ramp_def.position = {0, 3, -5};
-    ramp_def.material->friction = scalar(0.8);
-    auto ramp = make_rigidbody(reg, ramp_def);
-    auto on_ramp_def = box_def({0.25, 0.25, 0.25}, ramp_def.position + rotate(tilt, vector3{0, 0.5, 0}));
-    on_ramp_def.orientation = tilt;
-    on_ramp_def.material->friction = scalar(0.8);
-    auto on_ramp = make_rigidbody(reg, on_ramp_def);
+    ramp_with_box slope(reg, {0, 3, -5});
+    auto on_ramp = slope.box;
 
     rigidbody_def table_def;
     table_def.kind = rigidbody_kind::rb_static;
@@ -364,45 +387,30 @@ TEST_F(sleeping, boxes_asleep_on_static_bodies_respond_when_their_material_or_sh
     ASSERT_TRUE(asleep(on_table));
     auto start = pos(on_ramp);
 
-    reg.patch<material>(ramp, [](material &m) { m.friction = 0; });
+    reg.patch<material>(slope.ramp, [](material &m) { m.friction = 0; });
     reg.patch<box_shape>(table, [](box_shape &b) { b.half_extents.x = scalar(0.3); });
     scalar t = 1;
     run_for(t);
-    auto slid = length(pos(on_ramp) - start);
-    auto a = length(get_gravity(reg)) * std::sin(angle);
-    EXPECT_NEAR(slid, a * t * t / 2, scalar(0.02)) << "the box stays on the ramp without friction";
+    EXPECT_NEAR(length(pos(on_ramp) - start), ramp_with_box::free_slide(reg, t), scalar(0.02))
+        << "the box stays on the ramp without friction";
     EXPECT_NEAR(pos(on_table).y, 0.25, scalar(0.01)) << "the box stays over the narrowed table";
 }
 
 // A pair of material ids given a frictionless mixing at run time: a box asleep on a ramp, each
 // with one of the ids, slides at g sin(angle).
 TEST_F(sleeping, a_box_asleep_on_a_ramp_slides_once_their_materials_mix_without_friction) {
-    auto angle = scalar(0.35);
-    auto tilt = quaternion_axis_angle(vector3_z, angle);
-    rigidbody_def ramp_def;
-    ramp_def.kind = rigidbody_kind::rb_static;
-    ramp_def.shape = box_shape{3, scalar(0.25), 3};
-    ramp_def.orientation = tilt;
-    ramp_def.position = {0, 3, 0};
-    ramp_def.material->friction = scalar(0.8);
-    ramp_def.material->id = 1;
-    make_rigidbody(reg, ramp_def);
-    auto box_on_ramp = box_def({0.25, 0.25, 0.25}, ramp_def.position + rotate(tilt, vector3{0, 0.5, 0}));
-    box_on_ramp.orientation = tilt;
-    box_on_ramp.material->friction = scalar(0.8);
-    box_on_ramp.material->id = 2;
-    auto box = make_rigidbody(reg, box_on_ramp);
+    ramp_with_box slope(reg, {0, 3, 0}, 1, 2);
     run_for(3.0);
-    ASSERT_TRUE(asleep(box));
-    auto start = pos(box);
+    ASSERT_TRUE(asleep(slope.box));
+    auto start = pos(slope.box);
 
     material_base ice;
     ice.friction = 0;
     insert_material_mixing(reg, 2, 1, ice);
     scalar t = 1;
     run_for(t);
-    auto a = length(get_gravity(reg)) * std::sin(angle);
-    EXPECT_NEAR(length(pos(box) - start), a * t * t / 2, scalar(0.02)) << "the box stays on the ramp";
+    EXPECT_NEAR(length(pos(slope.box) - start), ramp_with_box::free_slide(reg, t), scalar(0.02))
+        << "the box stays on the ramp";
 }
 
 } // namespace
