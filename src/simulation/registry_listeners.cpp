@@ -207,20 +207,19 @@ void on_update_constraint(registry &registry, entity e) { world(registry).island
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);
     if (!w.broadphase.contains(e)) return;
-    // Refiltering may destroy manifolds that sleeping bodies rest on, this body's or the other
-    // one's (a static floor filtered out from under them): those bodies must wake to fall.
-    // Filters change rarely, so looking through all manifolds is affordable.
-    std::vector<std::pair<entity, contact_manifold>> touching;
-    for (auto m : registry.view<contact_manifold>()) {
-        auto &manifold = registry.get<contact_manifold>(m);
-        if (manifold.body[0] == e || manifold.body[1] == e) touching.emplace_back(m, manifold);
-    }
+    // Pairs the new filter refuses lose their manifolds, which wakes what slept on them
+    // (on_destroy_manifold); pairs it now allows are searched at the next step. The body wakes so
+    // that those are collided (a pair of sleeping bodies is not), and so do the bodies asleep
+    // against it when it is static or kinematic.
     w.broadphase.refilter(registry, e);
-    for (auto &[m, manifold] : touching) {
-        if (registry.valid(m)) continue;
-        w.islands.wake_entity(registry, manifold.body[0]);
-        w.islands.wake_entity(registry, manifold.body[1]);
-    }
+    w.islands.wake_entity(registry, e);
+    if (!registry.all_of<dynamic_tag>(e)) wake_neighbours(registry, w, e, registry.get<AABB>(e));
+}
+
+// A removed exclusion list lets its pairs collide again (the search runs at the next step, once
+// it is gone), unless the entity itself is going.
+void on_destroy_exclusion(registry &registry, entity e) {
+    if (!registry.destroying(e)) on_change_filter(registry, e);
 }
 
 // Every component edyn puts on the program's entities.
@@ -307,6 +306,7 @@ void connect_registry_listeners(registry &registry) {
     registry.on_update<collision_filter>().connect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
+    registry.on_destroy<collision_exclusion>().connect<&on_destroy_exclusion>();
     connect_constraints(registry, constraint_types{});
     registry.on_destroy<constraint_links>().connect<&on_destroy_constraint_links>();
     registry.on_destroy<constraint_list>().connect<&on_destroy_constraint_list>();
@@ -331,6 +331,7 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_update<collision_filter>().disconnect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();
+    registry.on_destroy<collision_exclusion>().disconnect<&on_destroy_exclusion>();
     disconnect_constraints(registry, constraint_types{});
     registry.on_destroy<constraint_links>().disconnect<&on_destroy_constraint_links>();
     registry.on_destroy<constraint_list>().disconnect<&on_destroy_constraint_list>();

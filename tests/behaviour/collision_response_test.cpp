@@ -223,6 +223,33 @@ TEST_F(filtering, a_new_should_collide_applies_to_resting_pairs_and_the_default_
     EXPECT_GT(pos(ball).y, sunk + scalar(0.2)) << "ball at " << pos(ball).y << ", from " << sunk;
 }
 
+// Two boxes excluded from each other rest on the ground overlapping by 40 cm and fall asleep.
+// Taking the exclusion away, by removing the component or by emptying it, must let them collide:
+// they push apart.
+TEST_F(filtering, boxes_asleep_inside_each_other_push_apart_once_their_exclusion_goes) {
+    auto overlapping_pair = [&](scalar z) {
+        auto a = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {0, scalar(0.5), z}));
+        auto b = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {scalar(0.6), scalar(0.5), z}));
+        exclude_collision(reg, a, b);
+        return std::pair{a, b};
+    };
+    auto removed = overlapping_pair(-3);
+    auto emptied = overlapping_pair(3);
+    run_for(2);
+    ASSERT_TRUE(reg.all_of<sleeping_tag>(removed.first));
+    ASSERT_TRUE(reg.all_of<sleeping_tag>(emptied.first));
+
+    for (auto e : {removed.first, removed.second})
+        reg.remove<collision_exclusion>(e);
+    for (auto e : {emptied.first, emptied.second})
+        reg.patch<collision_exclusion>(e, [](collision_exclusion &ex) { ex = {}; });
+    run_for(1);
+    for (auto [a, b] : {removed, emptied}) {
+        EXPECT_GT(pos(b).x - pos(a).x, scalar(0.99)) << "the boxes still overlap";
+        EXPECT_EQ(manifold_count(a), 2u) << "the box touches the ground and the other box";
+    }
+}
+
 TEST_F(filtering, excluding_a_resting_pair_at_run_time_drops_it_through) {
     auto ball = drop_ball(0);
     run_for(2);
