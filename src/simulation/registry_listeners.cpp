@@ -180,18 +180,14 @@ void on_update_transform(registry &registry, entity e) {
 
 void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(registry, e); }
 
-// A change the simulation must respond to (a velocity, a mass, a material, a shape). A static or
-// kinematic body's new friction or velocity acts on what rests on it: that wakes.
-void on_update_wake(registry &registry, entity e) {
+void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
+
+// A static or kinematic body's new friction or restitution acts on what rests on it: that wakes.
+// (Its new velocity needs nothing here: each step wakes what a moving kinematic body touches.)
+void on_update_material(registry &registry, entity e) {
+    if (!registry.all_of<rigidbody_tag>(e) || registry.all_of<dynamic_tag>(e)) return;
     auto &w = world(registry);
-    w.islands.wake_entity(registry, e);
-    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e)) {
-        if (auto *aabb = registry.try_get<AABB>(e)) {
-            wake_neighbours(registry, w, e, *aabb);
-        } else {
-            w.islands.wake_joined_to(registry, e);
-        }
-    }
+    if (auto *aabb = registry.try_get<AABB>(e)) wake_neighbours(registry, w, e, *aabb);
 }
 
 void on_update_shape(registry &registry, entity e) {
@@ -303,6 +299,7 @@ void connect_registry_listeners(registry &registry) {
     registry.on_update<orientation>().connect<&on_update_transform>();
     connect_update<&on_update_wake>(registry, waking_components{});
     connect_update<&on_update_shape>(registry, shape_components{});
+    registry.on_update<material>().connect<&on_update_material>();
     registry.on_update<collision_filter>().connect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
@@ -328,6 +325,7 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_update<orientation>().disconnect<&on_update_transform>();
     disconnect_update<&on_update_wake>(registry, waking_components{});
     disconnect_update<&on_update_shape>(registry, shape_components{});
+    registry.on_update<material>().disconnect<&on_update_material>();
     registry.on_update<collision_filter>().disconnect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();

@@ -212,6 +212,29 @@ TEST_F(sleeping, a_box_asleep_on_a_kinematic_platform_rides_it_once_it_moves) {
     EXPECT_NEAR(pos(platform).x - pos(box).x, slip, scalar(0.015));
 }
 
+// A game sets a kinematic body's velocity every frame, zero while it waits. A box resting on the
+// ground inside the bounding box of a plank turned 45 degrees, but 2.5 m from the plank itself,
+// must still fall asleep: only what a kinematic body touches follows its velocity.
+TEST_F(sleeping, a_box_near_a_kinematic_body_whose_velocity_is_set_every_step_falls_asleep) {
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_kinematic;
+    def.shape = box_shape{3, scalar(0.1), scalar(0.1)};
+    def.orientation = quaternion_axis_angle(vector3_y, pi / 4);
+    def.position = {0, scalar(0.3), 0};
+    auto plank = make_rigidbody(reg, def);
+    auto box = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {scalar(1.8), scalar(0.25), scalar(1.8)}));
+    ASSERT_TRUE(intersect(reg.get<AABB>(plank), reg.get<AABB>(box)))
+        << "the box is not where the test needs it";
+    // Asleep within a second, it must stay asleep: the patch in each step must not wake it.
+    int awake_steps = 0;
+    for (int i = 0; i < 120; ++i) {
+        reg.patch<linvel>(plank, [](linvel &v) { v = vector3_zero; });
+        edyn::test::step(reg);
+        if (i >= 60 && !asleep(box)) ++awake_steps;
+    }
+    EXPECT_EQ(awake_steps, 0) << "of the last 60 steps, the box was awake in " << awake_steps;
+}
+
 // A platform rising slower than the sleep speed must not let what rests on it fall asleep: the
 // box would stay where it slept while the platform moved through it.
 TEST_F(sleeping, a_box_on_a_slowly_rising_kinematic_platform_stays_awake_and_rises) {
