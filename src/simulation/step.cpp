@@ -28,10 +28,10 @@ void run_step(registry &registry) {
     //    every body's fat box covers where its velocities take it in this step.
     const body_motion_estimate estimate(settings, registry);
     world.broadphase.update(registry, world.step_scheduler, estimate.estimator());
-    //    Paged meshes load the pages bodies are over and near, and unload those left behind.
-    update_paged_meshes(registry, world);
     //    Bodies touching a kinematic body that moves, or joined to it, wake to move with it.
     wake_bodies_on_moving_kinematics(registry, world);
+    //    Paged meshes load the pages bodies are over and near, and unload those left behind.
+    update_paged_meshes(registry, world);
     // 2. Narrowphase: closest points, contact points created and destroyed, events recorded.
     run_narrowphase(registry, world);
     // 3. External forces: gravity becomes each body's acceleration for the sub-steps.

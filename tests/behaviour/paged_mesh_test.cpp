@@ -15,9 +15,9 @@ std::optional<scalar> surface_under(const paged_mesh_shape &shape, scalar x, sca
     return 100 - hit.fraction * 200;
 }
 
-entity make_paged_terrain(registry &reg, unsigned cells, std::size_t page_size) {
-    auto mesh =
-        scenes::make_grid_mesh(cells, 1, [](scalar x, scalar z) { return scenes::terrain_height(x, z, 2); });
+entity make_paged_terrain(registry &reg, unsigned cells, std::size_t page_size, scalar hill_height = 2) {
+    auto mesh = scenes::make_grid_mesh(
+        cells, 1, [&](scalar x, scalar z) { return scenes::terrain_height(x, z, hill_height); });
     auto v = mesh->get_vertices();
     auto i = mesh->get_indices();
     rigidbody_def def;
@@ -90,4 +90,34 @@ TEST_F(world_fixture, pages_load_where_bodies_are_and_unload_when_they_leave) {
         reg.destroy(e);
     run_for(1);
     EXPECT_EQ(paged.num_loaded_triangles(), 0u);
+}
+
+// A body asleep holds no page, so the pages under a box asleep on the terrain unload. When a
+// kinematic body the box rests against starts to move, the step that wakes the box must load
+// them before it collides the box: the box is pushed along the ground without sinking into it.
+TEST_F(world_fixture, a_box_asleep_over_unloaded_pages_pushed_by_a_kinematic_body_does_not_sink) {
+    auto terrain = make_paged_terrain(reg, 40, 50, 0);
+    auto &paged = *reg.get<paged_mesh_shape>(terrain).trimesh;
+    auto box = make_rigidbody(reg, edyn::test::box_def(test::unit_half, {0, scalar(0.5), 0}));
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_kinematic;
+    def.shape = box_shape{test::unit_half};
+    // Touching the box's side, 1 cm above the ground: kinematic and static bodies do not meet.
+    def.position = {-1, scalar(0.51), 0};
+    auto pusher = make_rigidbody(reg, def);
+    // Asleep after 0.5 s; its pages unload unload_delay steps later.
+    run_for(3);
+    ASSERT_TRUE(reg.all_of<sleeping_tag>(box));
+    if (edyn::test::simulates_here(reg)) {
+        ASSERT_EQ(paged.num_loaded_triangles(), 0u);
+    }
+
+    reg.patch<linvel>(pusher, [](linvel &v) { v = vector3{1, 0, 0}; });
+    auto lowest = pos(box).y;
+    for (int i = 0; i < 30; ++i) {
+        edyn::test::step(reg);
+        lowest = std::min(lowest, pos(box).y);
+    }
+    EXPECT_GT(pos(box).x, scalar(0.3)) << "the box was not pushed";
+    EXPECT_GT(lowest, scalar(0.5) - scalar(0.002)) << "the box sank into the ground while its pages loaded";
 }

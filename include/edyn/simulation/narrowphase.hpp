@@ -8,8 +8,10 @@ namespace edyn {
 
 /// Wakes the bodies touching a kinematic body that moves (a nonzero linvel or angvel), or joined
 /// to it by a constraint, and resets their sleep timers: a kinematic body is in no island, so
-/// nothing else tells what rests on it that it must move, nor keeps it from falling asleep there. Called by
-/// run_step before the narrowphase, so that they are collided and solved in the same step.
+/// nothing else tells what rests on it that it must move, nor keeps it from falling asleep
+/// there. Called by run_step after the broadphase and before paged meshes load their pages and
+/// the narrowphase runs, so that the bodies it wakes hold their pages, and are collided and
+/// solved, in the same step.
 /// @param registry An attached registry.
 /// @param world The registry's world_state.
 void wake_bodies_on_moving_kinematics(registry &registry, world_state &world);
