@@ -137,33 +137,25 @@ void wake_sleepers_near(registry &registry, world_state &w, entity e, const AABB
         w.islands.wake_entity(registry, other);
 }
 
-// A static or kinematic body is in no island, so waking it wakes nothing: the bodies asleep
-// against it within `aabb` (grown by the contact distance), and those joined to it by a
-// constraint, wake instead.
-void wake_neighbours(registry &registry, world_state &w, entity e, const AABB &aabb) {
-    if (w.broadphase.contains(e)) wake_sleepers_near(registry, w, e, aabb);
-    w.islands.wake_joined_to(registry, e);
-}
-
 // The program moved a body or changed its shape: its AABB is computed again, and a static
-// body's proxy is put back where it now is (the broadphase never moves static proxies). What
-// lay against a static or kinematic body where it was, or is in its way where it is now, wakes.
+// body's proxy is put back where it now is (the broadphase never moves static proxies). A static
+// or kinematic body is in no island, so waking it wakes nothing: what lay against it where it
+// was, or is in its way where it is now, and what it holds by a constraint, wake instead.
 void refresh_placement(registry &registry, entity e) {
     auto &w = world(registry);
     bool dynamic = registry.all_of<dynamic_tag>(e);
+    if (!dynamic) w.islands.wake_joined_to(registry, e);
     if (registry.all_of<AABB>(e)) {
         auto old_aabb = registry.get<AABB>(e);
         update_rigidbody_aabb(registry, e);
-        if (!dynamic) {
-            wake_neighbours(registry, w, e, old_aabb);
-            wake_neighbours(registry, w, e, registry.get<AABB>(e));
+        if (!dynamic && w.broadphase.contains(e)) {
+            wake_sleepers_near(registry, w, e, old_aabb);
+            wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
         }
         if (registry.all_of<static_tag>(e) && w.broadphase.contains(e)) {
             w.broadphase.remove(registry, e);
             w.broadphase.insert(e, registry.get<AABB>(e), true);
         }
-    } else if (!dynamic) {
-        w.islands.wake_joined_to(registry, e);
     }
     w.islands.wake_entity(registry, e);
 }
@@ -180,6 +172,8 @@ void on_update_transform(registry &registry, entity e) {
 
 void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(registry, e); }
 
+// A change the simulation must respond to: a body's velocity, mass, material or shape, or a
+// constraint's settings (its island wakes, asleep or not).
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
 // A static or kinematic body's new friction or restitution acts on what rests on it: that wakes.
@@ -187,7 +181,7 @@ void on_update_wake(registry &registry, entity e) { world(registry).islands.wake
 void on_update_material(registry &registry, entity e) {
     if (!registry.all_of<rigidbody_tag>(e) || registry.all_of<dynamic_tag>(e)) return;
     auto &w = world(registry);
-    if (auto *aabb = registry.try_get<AABB>(e)) wake_neighbours(registry, w, e, *aabb);
+    if (w.broadphase.contains(e)) wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
 }
 
 void on_update_shape(registry &registry, entity e) {
@@ -196,9 +190,6 @@ void on_update_shape(registry &registry, entity e) {
     // when it moves, so now.
     if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e)) refresh_placement(registry, e);
 }
-
-// A constraint's settings changed: the bodies it joins respond, asleep or not.
-void on_update_constraint(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);
@@ -209,7 +200,7 @@ void on_change_filter(registry &registry, entity e) {
     // against it when it is static or kinematic.
     w.broadphase.refilter(registry, e);
     w.islands.wake_entity(registry, e);
-    if (!registry.all_of<dynamic_tag>(e)) wake_neighbours(registry, w, e, registry.get<AABB>(e));
+    if (!registry.all_of<dynamic_tag>(e)) wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
 }
 
 // A removed exclusion list lets its pairs collide again (the search runs at the next step, once
@@ -237,14 +228,14 @@ template<typename... Constraints>
 void connect_constraints(registry &registry, constraint_type_list<Constraints...>) {
     (registry.on_construct<Constraints>().template connect<&on_construct_constraint<Constraints>>(), ...);
     (registry.on_destroy<Constraints>().template connect<&on_destroy_constraint>(), ...);
-    (registry.on_update<Constraints>().template connect<&on_update_constraint>(), ...);
+    (registry.on_update<Constraints>().template connect<&on_update_wake>(), ...);
 }
 
 template<typename... Constraints>
 void disconnect_constraints(registry &registry, constraint_type_list<Constraints...>) {
     (registry.on_construct<Constraints>().template disconnect<&on_construct_constraint<Constraints>>(), ...);
     (registry.on_destroy<Constraints>().template disconnect<&on_destroy_constraint>(), ...);
-    (registry.on_update<Constraints>().template disconnect<&on_update_constraint>(), ...);
+    (registry.on_update<Constraints>().template disconnect<&on_update_wake>(), ...);
 }
 
 // Constraints stay on the program's entities as plain components when edyn lets go.
