@@ -172,15 +172,22 @@ void adopt_main_side(registry &registry, constraint_type_list<Constraints...>) {
     (link_all(static_cast<Constraints *>(nullptr)), ...);
 }
 
-// The settings, filter and material table as they are now on the main side.
-worker_op settings_op(registry &registry) {
+// The settings and filter as they are now on the main side, and the material table when it
+// differs from `sent`, the one the worker has (which it then becomes): the table is copied only
+// when the program changed it.
+worker_op settings_op(registry &registry, std::optional<material_mix_table> &sent) {
     auto s = get_settings(registry);
     auto paused = is_paused(registry);
     auto filter = get_should_collide(registry);
     auto events = registry.ctx().get<contact_events>().has_listeners();
+    auto *now = registry.ctx().find<material_mix_table>();
+    auto table_changed = now ? !sent || sent->pairs != now->pairs : sent.has_value();
     std::optional<material_mix_table> table;
-    if (auto *t = registry.ctx().find<material_mix_table>()) table = *t;
-    return [s, paused, filter, events, table = std::move(table)](worker_context &w) {
+    if (table_changed) {
+        if (now) table = *now;
+        sent = table;
+    }
+    return [s, paused, filter, events, table_changed, table = std::move(table)](worker_context &w) mutable {
         w.send_events(events);
         auto &reg = w.reg;
         auto &current = reg.ctx().get<settings>();
@@ -195,8 +202,9 @@ worker_op settings_op(registry &registry) {
             reset_should_collide(reg);
         else
             set_should_collide(reg, filter);
+        if (!table_changed) return;
         if (table)
-            reg.ctx().emplace_or_replace<material_mix_table>(*table);
+            reg.ctx().emplace_or_replace<material_mix_table>(std::move(*table));
         else
             reg.ctx().erase<material_mix_table>();
     };
@@ -301,7 +309,7 @@ bool async_execution::pending_after(entity e, std::uint64_t ops_applied) const n
 void async_execution::send_batch(registry &registry, worker_op last, std::optional<double> time) {
     // The actions made since the last batch go with it, to the worker's next step.
     detail::consume_actions(registry);
-    push(settings_op(registry));
+    push(settings_op(registry, sent_table));
     if (last) push(std::move(last));
     last_batch = worker->send(ops, time);
 }

@@ -2,6 +2,7 @@
 #define EDYN_SRC_SIMULATION_ASYNC_EXECUTION_HPP
 
 #include "async_protocol.hpp"
+#include "edyn/dynamics/material_mixing.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/simulation/replication.hpp"
 #include <cstdint>
@@ -79,6 +80,8 @@ private:
     std::vector<detail::replicated_type> types;
     std::vector<detail::replicated_type> external_types;
     std::vector<std::exception_ptr> errors;
+    // The material table the worker has, to send it again only when the program changes it.
+    std::optional<material_mix_table> sent_table;
     scalar alpha{1};
 };
 

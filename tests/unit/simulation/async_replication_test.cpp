@@ -225,6 +225,29 @@ TEST_F(async_world, settings_reach_the_worker) {
     EXPECT_EQ(mixed_friction, scalar(0.123));
     EXPECT_EQ(reg.get<position>(ball), (vector3{0, 5, 0})) << "the ball fell without gravity";
 
+    // The table is sent when it changes: the worker keeps it through batches that do not carry
+    // it, and takes a changed entry and a new one.
+    step();
+    EXPECT_EQ(mixed_friction, scalar(0.123)) << "the worker lost the table it was sent before";
+    mixed.friction = scalar(0.25);
+    insert_material_mixing(reg, 4, 5, mixed);
+    mixed.friction = scalar(0.75);
+    insert_material_mixing(reg, 6, 4, mixed);
+    scalar new_pair_friction = 0;
+    probe = [&](registry &worker) {
+        material a, b, c;
+        a.id = 4;
+        b.id = 5;
+        c.id = 6;
+        mixed_friction = get_mixed_material(worker, a, b).friction;
+        new_pair_friction = get_mixed_material(worker, c, a).friction;
+    };
+    step();
+    EXPECT_EQ(mixed_friction, scalar(0.25));
+    EXPECT_EQ(new_pair_friction, scalar(0.75));
+    step();
+    EXPECT_EQ(new_pair_friction, scalar(0.75));
+
     // Paused, time passes and no step runs.
     update(reg, 0);
     wait_for_simulation(reg);
