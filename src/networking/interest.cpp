@@ -1,4 +1,5 @@
 #include "interest.hpp"
+#include "edyn/constraints/constraint_links.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
@@ -30,8 +31,35 @@ void recentre_on_owned(registry &registry, remote_client &rc) {
     rc.aabb_of_interest = {centre - half, centre + half};
 }
 
+namespace {
+
+// Adds the networked constraints that join `e`, the bodies they hold, and so on through the
+// moving ones: the joints of a registry whose islands live in an asynchronous worker (the
+// islands of this one hold them already). A static body joins what hangs from it to nothing.
+void add_joined(const registry &registry, entity e, entity_set &out) {
+    auto pending = std::vector<entity>{e};
+    auto joints = std::vector<constraint_ref>{};
+    while (!pending.empty()) {
+        auto body = pending.back();
+        pending.pop_back();
+        joints.clear();
+        constraints_of(registry, body, joints);
+        for (auto &joint : joints) {
+            if (!registry.all_of<networked_tag>(joint.constraint) || !out.insert(joint.constraint)) continue;
+            for (auto other : joint.body) {
+                if (!registry.valid(other) || !registry.all_of<networked_tag>(other) || !out.insert(other))
+                    continue;
+                if (!registry.all_of<static_tag>(other)) pending.push_back(other);
+            }
+        }
+    }
+}
+
+} // namespace
+
 void add_with_island(const registry &registry, entity e, entity_set &out) {
     out.insert(e);
+    add_joined(registry, e, out);
     auto *resident = registry.try_get<island_resident>(e);
     if (!resident || !registry.valid(resident->island_entity)) return;
     auto *isl = registry.try_get<island>(resident->island_entity);

@@ -19,7 +19,8 @@ namespace edyn::detail {
 void recentre_on_owned(registry &registry, remote_client &rc);
 
 /// Adds `e` and, for a body in an island, the whole island: its bodies and the networked
-/// constraints among them, and the bodies those constraints hold.
+/// constraints among them, and the bodies those constraints hold. The networked constraints
+/// joined to `e` through moving bodies come with it too (where islands are not kept).
 void add_with_island(const registry &registry, entity e, entity_set &out);
 
 /// Each networked entity with a position and the box the AABBs of interest are tested against

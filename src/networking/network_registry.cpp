@@ -1,11 +1,15 @@
 #include "network_registry.hpp"
 #include "body_def.hpp"
+#include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/make_constraint.hpp"
+#include "edyn/dynamics/mass.hpp"
+#include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/orientation.hpp"
 #include "edyn/dynamics/position.hpp"
 #include "edyn/dynamics/rigidbody.hpp"
+#include "edyn/dynamics/shape_index.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/networking/asset_ref.hpp"
@@ -16,6 +20,7 @@
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world.hpp"
 #include "network_motion.hpp"
+#include "value_bytes.hpp"
 #include <exception>
 
 namespace edyn {
@@ -50,8 +55,13 @@ struct decoded_bodies : detail::typed_decoded_pool<rigidbody_def> {
                const detail::entity_mapper &) override {
         for (std::size_t i = 0; i < positions.size(); ++i) {
             auto e = entities[positions[i]];
-            // A body sent again (a create_entity repeated) is already there.
-            if (e == null || !registry.valid(e) || registry.all_of<rigidbody_tag>(e)) continue;
+            if (e == null || !registry.valid(e)) continue;
+            // A body the program changed, or sent again (a create_entity repeated), is updated
+            // where it differs.
+            if (registry.all_of<rigidbody_tag>(e)) {
+                update(registry, e, values[i]);
+                continue;
+            }
             if (has_constraint(registry, e, constraint_types{}) || has_other_edyn_role(registry, e)) {
                 count_conflict(registry);
                 continue;
@@ -67,6 +77,20 @@ struct decoded_bodies : detail::typed_decoded_pool<rigidbody_def> {
                 // A definition this end refuses makes no body; the entity stays empty.
                 count_invalid(registry);
             }
+        }
+    }
+
+    static void update(registry &registry, entity e, const rigidbody_def &def) {
+        try {
+            validate_rigidbody_def(def);
+            if (!within_network_range(def)) {
+                count_invalid(registry);
+                return;
+            }
+            update_rigidbody(registry, e, def);
+        } catch (const std::exception &) {
+            // A change this end refuses leaves the body as it was, or as far as it got.
+            count_invalid(registry);
         }
     }
 };
@@ -95,8 +119,11 @@ struct decoded_constraint : detail::typed_decoded_pool<T> {
                const detail::entity_mapper &map) override {
         for (std::size_t i = 0; i < this->positions.size(); ++i) {
             auto e = entities[this->positions[i]];
-            // A constraint sent again (a create_entity repeated) is already there.
-            if (e == null || !registry.valid(e) || registry.all_of<T>(e)) continue;
+            if (e == null || !registry.valid(e)) continue;
+            if (auto *current = registry.try_get<T>(e)) {
+                update(registry, e, *current, this->values[i], map);
+                continue;
+            }
             if (registry.all_of<rigidbody_tag>(e) || has_constraint(registry, e, constraint_types{}) ||
                 has_other_edyn_role(registry, e)) {
                 count_conflict(registry);
@@ -114,6 +141,24 @@ struct decoded_constraint : detail::typed_decoded_pool<T> {
             }
             registry.emplace<T>(e, con);
         }
+    }
+
+    // A constraint the program changed, or sent again (a create_entity repeated): replaced when
+    // its value differs, on the same bodies.
+    static void update(registry &registry, entity e, const T &current, T con,
+                       const detail::entity_mapper &map) {
+        if (map) map_entity_members(con, map);
+        if (con.body[0] != current.body[0] || con.body[1] != current.body[1]) {
+            count_conflict(registry);
+            return;
+        }
+        try {
+            validate_constraint(con);
+        } catch (const std::exception &) {
+            count_invalid(registry);
+            return;
+        }
+        if (value_bytes(con) != value_bytes(current)) registry.replace<T>(e, con);
     }
 };
 
@@ -134,10 +179,41 @@ std::unique_ptr<detail::decoded_pool> read_pool(const std::vector<std::uint8_t> 
     return pool;
 }
 
+// A change the program made to what defines a body (the engine's own writes go through
+// neither patch nor replace); made by make_rigidbody, before the body's tag, it is not one.
+void on_body_change(registry &registry, entity e) {
+    if (!registry.all_of<rigidbody_tag>(e)) return;
+    if (auto *types = registry.ctx().find<network_registry>()) types->mark_redefined(e);
+}
+
+// A static body does not send motion: its move is a change of its definition.
+void on_static_move(registry &registry, entity e) {
+    if (registry.all_of<static_tag>(e)) on_body_change(registry, e);
+}
+
+template<typename... Shapes>
+void connect_shape_changes(registry &registry, std::tuple<Shapes...> *) {
+    (registry.on_update<Shapes>().template connect<&on_body_change>(), ...);
+}
+
+template<typename... Components>
+void connect_body_changes(registry &registry) {
+    (registry.on_construct<Components>().template connect<&on_body_change>(), ...);
+    (registry.on_update<Components>().template connect<&on_body_change>(), ...);
+    (registry.on_destroy<Components>().template connect<&on_body_change>(), ...);
+}
+
 detail::networked_type body_type() {
     detail::networked_type t;
     t.type = type_index<rigidbody_def>();
-    t.connect = [](registry &) {};
+    // What get_rigidbody_def reads, but for motion, which snapshots carry.
+    t.connect = [](registry &r) {
+        connect_body_changes<shape_index, material, mass, inertia, center_of_mass, gravity, collision_filter,
+                             static_tag, kinematic_tag, dynamic_tag, sleeping_disabled_tag>(r);
+        connect_shape_changes(r, static_cast<shapes_tuple_t *>(nullptr));
+        r.on_update<position>().connect<&on_static_move>();
+        r.on_update<orientation>().connect<&on_static_move>();
+    };
     t.has = [](const registry &r, entity e) { return r.all_of<rigidbody_tag>(e); };
     t.write = [](const registry &r, entity e, const detail::entity_mapper &, memory_output_archive &archive) {
         archive(get_rigidbody_def(r, e));
@@ -179,11 +255,16 @@ detail::networked_type motion_type() {
     return t;
 }
 
+void on_constraint_change(registry &registry, entity e) {
+    if (auto *types = registry.ctx().find<network_registry>()) types->mark_redefined(e);
+}
+
 template<typename T>
 detail::networked_type constraint_type() {
     auto t = detail::make_networked_type<T>();
-    // Constraints are sent whole when created; the solver's changes to them are its own.
-    t.connect = [](registry &) {};
+    // Constraints are sent whole when created, and again when the program changes them; the
+    // solver's changes to them are its own.
+    t.connect = [](registry &r) { r.on_update<T>().template connect<&on_constraint_change>(); };
     t.read = &read_pool<decoded_constraint<T>, T>;
     return t;
 }
@@ -213,6 +294,10 @@ void network_registry::mark(std::size_t type, entity e) {
     auto i = to_index(e);
     if (i >= list.size()) list.resize(std::size_t(i) + 1);
     list[i] = {e, now};
+}
+
+void network_registry::mark_redefined(entity e) {
+    if (track_redefined && !muted) redefined.push_back(e);
 }
 
 double network_registry::changed_at(std::uint16_t index, entity e) const noexcept {

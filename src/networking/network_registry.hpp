@@ -44,11 +44,18 @@ struct network_registry {
     double now{0};
     // While set, changes are not recorded (values being applied from the other end).
     bool muted{false};
+    // Bodies whose definition (shape, material, mass, kind, ...) and constraints whose values the
+    // program changed since the server last sent them, in the order of the changes (an entity
+    // may appear more than once). Kept only when `track_redefined` (a server) is set.
+    std::vector<entity> redefined;
+    bool track_redefined{false};
 
     int index_of(std::size_t type) const noexcept {
         return type < index_of_type.size() ? index_of_type[type] : -1;
     }
     void mark(std::size_t type, entity e);
+    // Records that the program changed `e`'s definition (a body) or value (a constraint).
+    void mark_redefined(entity e);
     // When `e`'s value of `index` last changed (-inf when it never did).
     double changed_at(std::uint16_t index, entity e) const noexcept;
     void forget(entity e);

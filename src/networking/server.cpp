@@ -118,6 +118,9 @@ struct server_context {
     bool boxes_ready{false};
     // Counts the clients' inputs received and the snapshots sent, in the order they happen.
     std::uint64_t sequence{0};
+    // The bodies and constraints the program changed since the last update, each once, in the
+    // order of their first change; kept to reuse its memory.
+    entity_set redefined;
 };
 
 server_context &get_server(registry &registry, const char *function) {
@@ -469,7 +472,7 @@ void init_network_server(registry &registry) {
         throw std::invalid_argument(
             "init_network_server: the registry is not attached (call edyn::attach first)");
     if (registry.ctx().contains<server_context>()) return;
-    ensure_network_registry(registry);
+    ensure_network_registry(registry).track_redefined = true;
     auto &ctx = registry.ctx().emplace<server_context>();
     ctx.settings_sent = current_settings(registry);
     registry.on_destroy<networked_tag>().connect<&on_networked_destroyed>();
@@ -478,6 +481,9 @@ void init_network_server(registry &registry) {
 void deinit_network_server(registry &registry) {
     if (!registry.ctx().contains<server_context>()) return;
     registry.on_destroy<networked_tag>().disconnect<&on_networked_destroyed>();
+    auto &types = registry.ctx().get<network_registry>();
+    types.track_redefined = false;
+    types.redefined.clear();
     registry.clear<server_client_state>();
     registry.ctx().erase<server_context>();
 }
@@ -579,6 +585,12 @@ void update_network_server(registry &registry) {
     ctx.boxes_ready = false;
     auto destroyed = std::move(ctx.destroyed);
     ctx.destroyed.clear();
+    // What the program changed in bodies and constraints the clients have goes to them once,
+    // reliably, as their values in a create_entity (a client updates what it has).
+    ctx.redefined.clear();
+    for (auto e : types.redefined)
+        if (registry.valid(e) && registry.all_of<networked_tag>(e)) ctx.redefined.insert(e);
+    types.redefined.clear();
 
     for (auto [client, rc, state] : registry.view<remote_client, server_client_state>().each()) {
         if (!state.greeted) {
@@ -593,6 +605,12 @@ void update_network_server(registry &registry) {
             for (auto e : destroyed)
                 if (state.known.erase(e)) packet.entities.push_back(e);
             if (!packet.entities.empty()) send(registry, ctx, client, {std::move(packet)});
+        }
+        if (ctx.redefined.size() > 0) {
+            auto known = std::vector<entity>{};
+            for (auto e : ctx.redefined.entities())
+                if (state.known.contains(e)) known.push_back(e);
+            send_create(registry, ctx, types, client, known);
         }
         // Actions among them go into the entities' action_lists, for the next step.
         apply_due_snapshots(registry, state, now);

@@ -8,7 +8,9 @@
 namespace edyn::packet {
 
 /// Server to client: entities to instantiate with all their networked components: whole islands
-/// that entered a client's AABB of interest, or the reply to an entity_request.
+/// that entered a client's AABB of interest, or the reply to an entity_request. Also the new
+/// values of bodies and constraints the server's program changed: the client updates the
+/// entities it has already.
 struct create_entity {
     double timestamp{};               ///< Server simulation time of the state, in seconds.
     std::vector<entity> entities;     ///< The server's entities to create, by position.
