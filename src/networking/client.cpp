@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -126,10 +127,46 @@ void keep_forwarded(registry &registry, client_context &ctx, const packet::regis
         kept.erase(kept.begin(), kept.end() - std::ptrdiff_t(max_kept_forwarded));
 }
 
+// Whether the value or removal of the type at `index` that a snapshot of `time` has for local
+// entity `e` is not older than the one `e` has; then `time` becomes the one it has.
+bool newer_value(client_context &ctx, std::uint16_t index, entity e, double time) {
+    if (index >= ctx.value_times.size()) ctx.value_times.resize(std::size_t(index) + 1);
+    auto &times = ctx.value_times[index];
+    auto i = to_index(e);
+    if (i >= times.size()) times.resize(std::size_t(i) + 1, {null, 0.0});
+    auto &slot = times[i];
+    if (slot.first == e && slot.second > time) return false;
+    slot = {e, time};
+    return true;
+}
+
+// The removals of a snapshot, decoded: per pool, its network index and the positions of the
+// entities that lost it. Empty when one names a type that is not the program's (or an action),
+// or a position past the entities.
+std::optional<std::vector<std::pair<std::uint16_t, std::vector<std::uint32_t>>>>
+decode_removals(const network_registry &types, const packet::registry_snapshot &snapshot) {
+    auto result = std::vector<std::pair<std::uint16_t, std::vector<std::uint32_t>>>{};
+    for (auto &pool : snapshot.removed) {
+        auto index = pool.component_index;
+        if (index < types.first_program_type || index >= types.types.size() || types.types[index].action ||
+            snapshot.entities.empty())
+            return std::nullopt;
+        auto &positions = result.emplace_back(index, std::vector<std::uint32_t>{}).second;
+        auto archive = memory_input_archive(pool.data.data(), pool.data.size());
+        while (archive.remaining() > 0) {
+            auto position = archive.read_size(snapshot.entities.size() - 1);
+            if (archive.failed() || positions.size() >= snapshot.entities.size()) return std::nullopt;
+            positions.push_back(std::uint32_t(position));
+        }
+    }
+    return result;
+}
+
 void receive_snapshot(registry &registry, client_context &ctx, const packet::registry_snapshot &snapshot) {
     auto &types = registry.ctx().get<network_registry>();
     auto pools = decode_pools(types, snapshot.pools, snapshot.entities.size());
-    if (!pools || !std::isfinite(snapshot.timestamp)) return;
+    auto removals = decode_removals(types, snapshot);
+    if (!pools || !removals || !std::isfinite(snapshot.timestamp)) return;
     auto forwarded = check_forwarded(types, snapshot);
     if (forwarded == forwarded_check::malformed) return;
     if (forwarded == forwarded_check::out_of_range || !plausible_server_time(snapshot.timestamp) ||
@@ -140,17 +177,27 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
     request_unknown(registry, ctx, snapshot.entities);
     auto local = to_local(ctx, snapshot.entities);
 
-    // Components other than motion are applied now; the client's own inputs are its own.
+    // Components other than motion are applied now, and removals, unless the entity has a newer
+    // value; the client's own inputs are its own.
     {
         auto muted = muted_scope(types);
+        auto takes = [&](std::uint16_t index, entity e) {
+            return e != null && !(types.types[index].input && ctx.authored.contains(e)) &&
+                   newer_value(ctx, index, e, snapshot.timestamp);
+        };
         for (auto &pool : *pools) {
-            if (pool->component_index == network_index::motion) continue;
-            auto entities = local;
-            if (types.types[pool->component_index].input) {
-                for (auto &e : entities)
-                    if (ctx.authored.contains(e)) e = null;
-            }
+            auto index = pool->component_index;
+            if (index == network_index::motion) continue;
+            auto entities = std::vector<entity>(local.size(), entity{null});
+            for (auto position : pool->positions)
+                if (takes(index, local[position])) entities[position] = local[position];
             pool->apply(registry, entities, remote_to_local_map(ctx));
+        }
+        for (auto &[index, positions] : *removals) {
+            for (auto position : positions) {
+                auto e = local[position];
+                if (takes(index, e) && registry.valid(e)) types.types[index].remove(registry, e);
+            }
         }
     }
     // Motion waits for the next extrapolation, body by body: the newest value of each.
@@ -265,7 +312,8 @@ void send_inputs(client_context &ctx) {
     for (auto &entry : ctx.inputs) {
         if (entry.sends_left <= 0) continue;
         --entry.sends_left;
-        ctx.packet_signal.publish({packet::registry_snapshot{entry.time, entry.entities, entry.pools, {}}});
+        ctx.packet_signal.publish(
+            {packet::registry_snapshot{entry.time, entry.entities, entry.pools, {}, {}}});
     }
 }
 

@@ -94,6 +94,10 @@ struct client_context {
         network_motion motion;
     };
     std::vector<server_motion> motions;
+    // Per network index of the program's types, by local entity index: the time of the snapshot
+    // whose value (or removal) the entity has, so that an older snapshot arriving late does not
+    // undo a newer one.
+    std::vector<std::vector<std::pair<entity, double>>> value_times;
     // Whether a snapshot newer than the last extrapolation's start arrived, and its time.
     bool has_pending{false};
     double pending_time{-std::numeric_limits<double>::infinity()};

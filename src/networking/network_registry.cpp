@@ -286,14 +286,34 @@ std::unique_ptr<detail::typed_decoded_pool<network_motion>> make_motion_pool() {
     return pool;
 }
 
-void network_registry::mark(std::size_t type, entity e) {
-    if (muted) return;
-    auto index = this->index_of(type);
-    if (index < 0) return;
-    auto &list = changes[std::size_t(index)];
+namespace {
+void record(std::vector<network_registry::change> &list, entity e, double now) {
     auto i = to_index(e);
     if (i >= list.size()) list.resize(std::size_t(i) + 1);
     list[i] = {e, now};
+}
+
+double recorded_at(const std::vector<network_registry::change> &list, entity e) noexcept {
+    auto i = to_index(e);
+    if (i >= list.size() || list[i].e != e) return -std::numeric_limits<double>::infinity();
+    return list[i].time;
+}
+} // namespace
+
+void network_registry::mark(std::size_t type, entity e) {
+    if (muted) return;
+    auto index = this->index_of(type);
+    if (index >= 0) record(changes[std::size_t(index)], e, now);
+}
+
+void network_registry::mark_removed(std::size_t type, entity e) {
+    if (muted) return;
+    auto index = this->index_of(type);
+    if (index >= 0) record(removals[std::size_t(index)], e, now);
+}
+
+double network_registry::removed_at(std::uint16_t index, entity e) const noexcept {
+    return recorded_at(removals[index], e);
 }
 
 void network_registry::mark_redefined(entity e) {
@@ -301,16 +321,15 @@ void network_registry::mark_redefined(entity e) {
 }
 
 double network_registry::changed_at(std::uint16_t index, entity e) const noexcept {
-    auto &list = changes[index];
-    auto i = to_index(e);
-    if (i >= list.size() || list[i].e != e) return -std::numeric_limits<double>::infinity();
-    return list[i].time;
+    return recorded_at(changes[index], e);
 }
 
 void network_registry::forget(entity e) {
-    for (auto &list : changes) {
-        auto i = to_index(e);
-        if (i < list.size() && list[i].e == e) list[i] = {};
+    auto i = to_index(e);
+    for (auto *lists : {&changes, &removals}) {
+        for (auto &list : *lists) {
+            if (i < list.size() && list[i].e == e) list[i] = {};
+        }
     }
 }
 
@@ -333,12 +352,17 @@ void detail::register_networked_types(registry &registry, std::vector<networked_
         types.index_of_type[t.type] = int(types.types.size());
         types.types.push_back(t);
         types.changes.emplace_back();
+        types.removals.emplace_back();
         t.connect(registry);
     }
 }
 
 void detail::mark_network_change(registry &registry, std::size_t type, entity e) {
     if (auto *types = registry.ctx().find<network_registry>()) types->mark(type, e);
+}
+
+void detail::mark_network_removal(registry &registry, std::size_t type, entity e) {
+    if (auto *types = registry.ctx().find<network_registry>()) types->mark_removed(type, e);
 }
 
 std::optional<std::vector<std::unique_ptr<detail::decoded_pool>>>
@@ -398,15 +422,31 @@ void pool_writer::add_encoded(entity e, std::uint16_t index, const std::vector<s
     archive.write_bytes(bytes.data(), bytes.size());
 }
 
+void pool_writer::remove(entity e, std::uint16_t index) {
+    if (index >= removed_data.size()) removed_data.resize(std::size_t(index) + 1);
+    auto archive = memory_output_archive(removed_data[index]);
+    archive.write_size(position_of(e));
+}
+
 void pool_writer::finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out) {
+    auto removed = std::vector<packet::pool_snapshot>{};
+    finish(entities_out, pools_out, removed);
+}
+
+void pool_writer::finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out,
+                         std::vector<packet::pool_snapshot> &removed_out) {
     entities_out = std::move(entities);
-    for (std::size_t i = 0; i < pool_data.size(); ++i) {
-        if (pool_data[i].empty()) continue;
-        pools_out.push_back({std::uint16_t(i), std::move(pool_data[i])});
-    }
+    auto collect = [](std::vector<std::vector<std::uint8_t>> &data, std::vector<packet::pool_snapshot> &out) {
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            if (data[i].empty()) continue;
+            out.push_back({std::uint16_t(i), std::move(data[i])});
+        }
+        data.clear();
+    };
+    collect(pool_data, pools_out);
+    collect(removed_data, removed_out);
     entities.clear();
     positions.clear();
-    pool_data.clear();
 }
 
 } // namespace edyn

@@ -40,6 +40,8 @@ struct network_registry {
         double time{-std::numeric_limits<double>::infinity()};
     };
     std::vector<std::vector<change>> changes;
+    // The same for removals: per network index, per entity index, when the program removed it.
+    std::vector<std::vector<change>> removals;
     // Simulation time changes are recorded at (set by the server's and client's updates).
     double now{0};
     // While set, changes are not recorded (values being applied from the other end).
@@ -58,6 +60,9 @@ struct network_registry {
     void mark_redefined(entity e);
     // When `e`'s value of `index` last changed (-inf when it never did).
     double changed_at(std::uint16_t index, entity e) const noexcept;
+    void mark_removed(std::size_t type, entity e);
+    // When `index` was last removed from `e` (-inf when it never was).
+    double removed_at(std::uint16_t index, entity e) const noexcept;
     void forget(entity e);
 };
 
@@ -93,8 +98,13 @@ public:
     void add_encoded(entity e, std::uint16_t index, const std::vector<std::uint8_t> &bytes);
     // Puts `e` in the entity list without a value.
     void include(entity e) { position_of(e); }
+    // Records that `e` lost the type at `index`; `e` joins the entity list the first time.
+    void remove(entity e, std::uint16_t index);
     bool empty() const noexcept { return entities.empty(); }
     void finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out);
+    // The same, with the removals as pools of positions.
+    void finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out,
+                std::vector<packet::pool_snapshot> &removed_out);
 
 private:
     std::uint32_t position_of(entity e);
@@ -105,6 +115,7 @@ private:
     std::vector<entity> entities;
     std::vector<std::pair<entity, std::uint32_t>> positions; // by entity index
     std::vector<std::vector<std::uint8_t>> pool_data;        // by network index
+    std::vector<std::vector<std::uint8_t>> removed_data;     // positions, by network index
 };
 
 } // namespace edyn

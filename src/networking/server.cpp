@@ -307,12 +307,17 @@ void send_snapshot(registry &registry, server_context &ctx, const network_regist
         }
         for (auto i = types.first_program_type; i < types.types.size(); ++i) {
             auto &t = types.types[i];
-            if (!t.action && t.has(registry, e) && types.changed_at(i, e) >= since) writer.add(e, i);
+            if (t.action) continue;
+            if (t.has(registry, e)) {
+                if (types.changed_at(i, e) >= since) writer.add(e, i);
+            } else if (types.removed_at(i, e) >= since) {
+                writer.remove(e, i);
+            }
         }
     }
     auto snapshot = packet::registry_snapshot{};
     snapshot.timestamp = now;
-    writer.finish(snapshot.entities, snapshot.pools);
+    writer.finish(snapshot.entities, snapshot.pools, snapshot.removed);
     forward_inputs(registry, client, state, snapshot);
     std::shift_left(state.recent_sends.begin(), state.recent_sends.end(), 1);
     state.recent_sends.back() = ++ctx.sequence;
@@ -384,8 +389,8 @@ void send_asset_state(registry &registry, server_context &ctx, entity client, re
 
 void receive_snapshot(registry &registry, entity client, remote_client &rc, server_client_state &state,
                       const packet::registry_snapshot &snapshot) {
-    // Forwarded inputs are the server's to send.
-    if (!std::isfinite(snapshot.timestamp) || !snapshot.inputs.empty()) {
+    // Forwarded inputs and removals are the server's to send.
+    if (!std::isfinite(snapshot.timestamp) || !snapshot.inputs.empty() || !snapshot.removed.empty()) {
         rc.rejected.malformed += 1;
         return;
     }

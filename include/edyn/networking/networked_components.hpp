@@ -43,6 +43,8 @@ struct networked_type {
     // Connects the listeners that record its changes (snapshots carry recent changes).
     void (*connect)(registry &){};
     bool (*has)(const registry &, entity){};
+    // Removes the component from `e` (which may lack it): a removal the other end sent.
+    void (*remove)(registry &, entity){};
     // Writes the value of `e` (which has it), with the entities it holds translated by `map`.
     void (*write)(const registry &, entity, const entity_mapper &map, memory_output_archive &){};
     // Reads values until the end of the pool's bytes; null when they are malformed or name a
@@ -101,12 +103,19 @@ struct typed_decoded_pool<action_history<Action>> : decoded_pool {
     }
 };
 
-// Records that `e`'s component changed (networking/network_changes.hpp).
+// Records that `e`'s component changed, in the registry's list of networked types.
 void mark_network_change(registry &registry, std::size_t type, entity e);
+// Records that `e`'s component was removed.
+void mark_network_removal(registry &registry, std::size_t type, entity e);
 
 template<typename Component>
 void on_networked_change(registry &registry, entity e) {
     mark_network_change(registry, type_index<Component>(), e);
+}
+
+template<typename Component>
+void on_networked_removal(registry &registry, entity e) {
+    mark_network_removal(registry, type_index<Component>(), e);
 }
 
 template<typename Action>
@@ -131,8 +140,10 @@ networked_type make_networked_type() {
     t.connect = [](registry &r) {
         r.on_construct<Component>().template connect<&on_networked_change<Component>>();
         r.on_update<Component>().template connect<&on_networked_change<Component>>();
+        r.on_destroy<Component>().template connect<&on_networked_removal<Component>>();
     };
     t.has = [](const registry &r, entity e) { return r.all_of<Component>(e); };
+    t.remove = [](registry &r, entity e) { r.remove<Component>(e); };
     t.write = [](const registry &r, entity e, const entity_mapper &map, memory_output_archive &archive) {
         if constexpr (!std::is_empty_v<Component>) {
             auto value = r.get<Component>(e);

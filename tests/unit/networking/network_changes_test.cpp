@@ -33,6 +33,29 @@ entity box(registry &registry, const vector3 &pos, scalar half = 0.5) {
     return networked_body(registry, def);
 }
 
+// The program's components: a value and a tag, networked both.
+struct hit_points {
+    int value{100};
+};
+template<typename Archive>
+void serialize(Archive &archive, hit_points &h) {
+    archive(h.value);
+}
+struct on_fire {};
+
+void program_components(registry &registry) {
+    register_external_components<hit_points, on_fire>(registry);
+    register_networked_components<hit_points, on_fire>(registry);
+}
+
+// A box with hit points, resting on the ground.
+entity box_with_hit_points(registry &server, int value) {
+    ground(server);
+    auto body = box(server, {0, 0.5, 0});
+    server.emplace<hit_points>(body, hit_points{value});
+    return body;
+}
+
 // Counts the create_entity packets the server sends, by client.
 struct create_counter {
     std::map<entity, int> sent;
@@ -158,6 +181,55 @@ TEST_P(network_changes, a_change_goes_once_and_only_to_the_clients_that_have_the
     EXPECT_EQ(counter.sent[a.server_entity], before_a + 1) << "two changes in one update make one packet";
     EXPECT_EQ(counter.sent[b.server_entity], before_b) << "a client without the body heard of it";
     EXPECT_EQ(a.reg.get<material>(client_local_entity(a.reg, near)).restitution, scalar(0.2));
+}
+
+TEST_P(network_changes, components_the_server_removes_are_removed_in_the_client) {
+    net_harness h(&program_components, GetParam());
+    auto &s = h.server;
+    auto body = box_with_hit_points(s, 42);
+    s.emplace<on_fire>(body);
+    auto &c = h.add_client({.latency = 0.05, .jitter = 0.02, .loss = 0.2, .reordering = 0.2, .seed = 11});
+    h.run(1);
+    auto local = client_local_entity(c.reg, body);
+    ASSERT_TRUE(c.reg.valid(local));
+    ASSERT_TRUE(c.reg.all_of<on_fire>(local));
+    ASSERT_EQ(c.reg.get<hit_points>(local).value, 42);
+
+    s.remove<on_fire>(body);
+    s.patch<hit_points>(body, [](hit_points &hp) { hp.value = 7; });
+    h.run(1);
+    EXPECT_FALSE(c.reg.all_of<on_fire>(local));
+    EXPECT_EQ(c.reg.get<hit_points>(local).value, 7);
+    s.remove<hit_points>(body);
+    s.emplace<on_fire>(body);
+    h.run(1);
+    EXPECT_FALSE(c.reg.all_of<hit_points>(local));
+    EXPECT_TRUE(c.reg.all_of<on_fire>(local)) << "a component put back after its removal did not come back";
+}
+
+TEST_P(network_changes, a_late_snapshot_does_not_undo_a_newer_value) {
+    // Snapshots held back longer than a change is repeated (three snapshots, 0.1 s at 30 a
+    // second) arrive after copies of the newer value. The value only grows on the server, so
+    // the client's must never go down.
+    net_harness h(&program_components, GetParam());
+    auto &s = h.server;
+    auto body = box_with_hit_points(s, 0);
+    auto &c = h.add_client({.latency = 0.05, .reordering = 0.2, .reorder_delay = 0.25, .seed = 2});
+    h.run(0.5);
+    auto local = client_local_entity(c.reg, body);
+    ASSERT_TRUE(c.reg.all_of<hit_points>(local));
+    auto frames = 0;
+    auto highest = 0;
+    auto went_down = 0;
+    h.run(4, [&] {
+        if (++frames % 7 == 0) s.patch<hit_points>(body, [](hit_points &hp) { hp.value += 1; });
+        auto value = c.reg.get<hit_points>(local).value;
+        if (value < highest) ++went_down;
+        highest = std::max(highest, value);
+    });
+    h.run(1);
+    EXPECT_EQ(went_down, 0);
+    EXPECT_EQ(c.reg.get<hit_points>(local).value, s.get<hit_points>(body).value);
 }
 
 } // namespace

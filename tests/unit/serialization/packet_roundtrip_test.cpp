@@ -25,7 +25,7 @@ auto fields(const packet::pool_snapshot &p) { return std::tie(p.component_index,
 auto fields(const packet::entered_asset &p) { return std::tie(p.asset_entity, p.id, p.members); }
 auto fields(const packet::timed_inputs &p) { return std::tie(p.timestamp, p.entities, p.pools); }
 auto fields(const packet::registry_snapshot &p) {
-    return std::tie(p.timestamp, p.entities, p.pools, p.inputs);
+    return std::tie(p.timestamp, p.entities, p.pools, p.inputs, p.removed);
 }
 auto fields(const packet::create_entity &p) { return std::tie(p.timestamp, p.entities, p.pools); }
 auto fields(const packet::destroy_entity &p) { return std::tie(p.timestamp, p.entities); }
@@ -166,6 +166,9 @@ TEST(packet_roundtrip, registry_snapshot_fields) {
     ASSERT_EQ(snapshot->inputs[0].pools.size(), 1u);
     EXPECT_EQ(snapshot->inputs[0].pools[0].component_index, 4);
     EXPECT_EQ(snapshot->inputs[1].pools.size(), 3u);
+    ASSERT_EQ(snapshot->removed.size(), 2u);
+    EXPECT_EQ(snapshot->removed[1].component_index, 600);
+    EXPECT_EQ(snapshot->removed[0].data, (std::vector<std::uint8_t>{0, 3}));
 }
 
 TEST(packet_roundtrip, settings_and_assets_fields) {

@@ -30,6 +30,7 @@ inline void fill(packet::registry_snapshot &p) {
     p.entities = sample_entities();
     p.pools = sample_pools();
     p.inputs = {{12.75, {make_entity(9, 3)}, {{4, {0, 17, 250}}}}, {13.5, sample_entities(), sample_pools()}};
+    p.removed = {{9, {0, 3}}, {600, {1}}};
 }
 
 inline void fill(packet::create_entity &p) {

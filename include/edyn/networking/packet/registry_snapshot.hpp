@@ -36,6 +36,10 @@ struct registry_snapshot {
     /// their times instead of holding those clients' inputs at their values at `timestamp`.
     /// A client must leave it empty.
     std::vector<timed_inputs> inputs;
+    /// Server to client only: the program's components removed recently, one pool per component
+    /// type whose data are the positions (in `entities`) of the entities that lost it. A client
+    /// must leave it empty.
+    std::vector<pool_snapshot> removed;
 };
 
 /// Writes or reads a registry_snapshot.
@@ -43,7 +47,7 @@ struct registry_snapshot {
 /// @param snapshot The packet to write from or read into.
 template<typename Archive>
 void serialize(Archive &archive, registry_snapshot &snapshot) {
-    archive(snapshot.timestamp, snapshot.entities, snapshot.pools, snapshot.inputs);
+    archive(snapshot.timestamp, snapshot.entities, snapshot.pools, snapshot.inputs, snapshot.removed);
 }
 
 } // namespace edyn::packet
