@@ -280,6 +280,12 @@ void forget_destroyed(registry &registry, entity e) {
 
 } // namespace
 
+std::unique_ptr<detail::typed_decoded_pool<rigidbody_def>> make_body_pool() {
+    auto pool = std::make_unique<decoded_bodies>();
+    pool->component_index = network_index::body;
+    return pool;
+}
+
 std::unique_ptr<detail::typed_decoded_pool<network_motion>> make_motion_pool() {
     auto pool = std::make_unique<decoded_motion>();
     pool->component_index = network_index::motion;
@@ -420,6 +426,35 @@ void pool_writer::add_encoded(entity e, std::uint16_t index, const std::vector<s
     auto archive = memory_output_archive(pool_data[index]);
     archive.write_size(position);
     archive.write_bytes(bytes.data(), bytes.size());
+}
+
+std::size_t pool_writer::bytes() const noexcept {
+    auto total = std::size_t{0};
+    for (auto &data : pool_data)
+        total += data.size();
+    return total;
+}
+
+std::size_t pool_writer::largest_pool() const noexcept {
+    auto largest = std::size_t{0};
+    for (auto &data : pool_data)
+        largest = std::max(largest, data.size());
+    return largest;
+}
+
+void pool_writer::clear() noexcept {
+    for (auto &data : pool_data)
+        data.clear();
+    for (auto &data : removed_data)
+        data.clear();
+    // The list holds the entities as mapped; without a map, only their slots need emptying.
+    if (map) {
+        positions.clear();
+    } else {
+        for (auto e : entities)
+            positions[to_index(e)] = {null, 0};
+    }
+    entities.clear();
 }
 
 void pool_writer::remove(entity e, std::uint16_t index) {

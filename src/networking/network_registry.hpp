@@ -5,6 +5,7 @@
 // list both ends share (edyn's own first, then the program's in registration order), and when
 // each entity's value of each type last changed.
 
+#include "edyn/dynamics/rigidbody_def.hpp"
 #include "edyn/networking/networked_components.hpp"
 #include "edyn/networking/packet/pool_snapshot.hpp"
 #include "network_motion.hpp"
@@ -84,6 +85,10 @@ void apply_pools(registry &registry, const network_registry &types,
 // bodies' transforms and velocities.
 std::unique_ptr<detail::typed_decoded_pool<network_motion>> make_motion_pool();
 
+// An empty decoded pool of bodies (network_index::body), to fill with definitions: applying it
+// makes the bodies, or updates those that exist, as a received one does.
+std::unique_ptr<detail::typed_decoded_pool<rigidbody_def>> make_body_pool();
+
 // Builds the entity list and pools of a packet, one value at a time.
 class pool_writer {
 public:
@@ -101,6 +106,11 @@ public:
     // Records that `e` lost the type at `index`; `e` joins the entity list the first time.
     void remove(entity e, std::uint16_t index);
     bool empty() const noexcept { return entities.empty(); }
+    // The bytes of its values so far, in all pools, and in the largest one.
+    std::size_t bytes() const noexcept;
+    std::size_t largest_pool() const noexcept;
+    // Starts over, keeping the memory.
+    void clear() noexcept;
     void finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out);
     // The same, with the removals as pools of positions.
     void finish(std::vector<entity> &entities_out, std::vector<packet::pool_snapshot> &pools_out,

@@ -40,6 +40,10 @@ constexpr std::size_t max_forwarded_inputs = 256;
 // the input arrived (rather than in every one while it waits), so that one lost packet loses
 // none of them: the clients keep the inputs they were forwarded until the server applies them.
 constexpr std::size_t forward_repeats = 2;
+// A create_entity packet is cut before its values reach this many bytes (unless it holds one
+// entity): a client decodes at most max_archive_count bytes in a pool, and transports carry
+// smaller packets more easily.
+constexpr std::size_t max_create_bytes = std::size_t{256} * 1024;
 // Most entities one entity_request may ask for.
 constexpr std::size_t max_requested_entities = 1024;
 // Lost packets in a row that an input survives: its copies go a frame apart, and the playout
@@ -179,22 +183,42 @@ packet::entered_asset describe_asset(const registry &registry, entity asset) {
     return entered;
 }
 
+// Adds `e` and every networked value of its but motion (which snapshots carry).
+void add_whole(const registry &registry, const network_registry &types, pool_writer &writer, entity e) {
+    writer.include(e);
+    for (std::uint16_t i = 0; i < types.types.size(); ++i) {
+        auto &t = types.types[i];
+        if (i == network_index::motion || t.action) continue;
+        if (t.has(registry, e)) writer.add(e, i);
+    }
+}
+
+// Sends the entities in create_entity packets of at most about max_create_bytes each, so that no
+// pool exceeds what a client decodes (max_archive_count bytes). An entity too large for one
+// alone is left out and counted.
 void send_create(registry &registry, server_context &ctx, const network_registry &types, entity client,
                  const std::vector<entity> &entities) {
-    if (entities.empty()) return;
     auto writer = pool_writer(types, registry);
+    auto flush = [&] {
+        if (writer.empty()) return;
+        auto create = packet::create_entity{};
+        create.timestamp = get_simulation_time(registry);
+        writer.finish(create.entities, create.pools);
+        send(registry, ctx, client, {std::move(create)});
+    };
+    auto alone = pool_writer(types, registry);
     for (auto e : entities) {
-        writer.include(e);
-        for (std::uint16_t i = 0; i < types.types.size(); ++i) {
-            auto &t = types.types[i];
-            if (i == network_index::motion || t.action) continue;
-            if (t.has(registry, e)) writer.add(e, i);
+        alone.clear();
+        add_whole(registry, types, alone, e);
+        auto size = alone.bytes();
+        if (alone.largest_pool() > max_archive_count) {
+            registry.get<remote_client>(client).entities_too_large += 1;
+            continue;
         }
+        if (!writer.empty() && writer.bytes() + size > max_create_bytes) flush();
+        add_whole(registry, types, writer, e);
     }
-    auto create = packet::create_entity{};
-    create.timestamp = get_simulation_time(registry);
-    writer.finish(create.entities, create.pools);
-    send(registry, ctx, client, {std::move(create)});
+    flush();
 }
 
 void update_interest(registry &registry, server_context &ctx, const network_registry &types, entity client,

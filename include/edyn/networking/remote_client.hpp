@@ -64,6 +64,10 @@ struct remote_client {
     remote_client_rejections rejected;
     /// Packets the server handed to the packet sink for this client.
     std::uint64_t packets_sent{0};
+    /// Entities the server could not send the client: one of their values takes more bytes than
+    /// a packet's pool may hold (max_archive_count), as a triangle mesh of more than about 58,000
+    /// triangles does. Make such an entity an asset, which the client loads from its own files.
+    std::uint64_t entities_too_large{0};
 };
 
 } // namespace edyn
