@@ -53,6 +53,27 @@ void destroy_local(registry &registry, client_context &ctx, const std::vector<en
     }
 }
 
+// Whether the value or removal of the type at `index` that a snapshot of `time` has for local
+// entity `e` is not older than the one `e` has; then `time` becomes the one it has.
+bool newer_value(client_context &ctx, std::uint16_t index, entity e, double time) {
+    if (index >= ctx.value_times.size()) ctx.value_times.resize(std::size_t(index) + 1);
+    auto &times = ctx.value_times[index];
+    auto i = to_index(e);
+    if (i >= times.size()) times.resize(std::size_t(i) + 1, {null, 0.0});
+    auto &slot = times[i];
+    if (slot.first == e && slot.second > time) return false;
+    slot = {e, time};
+    return true;
+}
+
+// Whether local entity `e` takes the value (or removal) of the type at `index` that a packet of
+// `time` carries: not over the client's own inputs, nor over a value from a newer snapshot.
+bool takes_value(const network_registry &types, client_context &ctx, std::uint16_t index, entity e,
+                 double time) {
+    return e != null && !(types.types[index].input && ctx.authored.contains(e)) &&
+           newer_value(ctx, index, e, time);
+}
+
 void receive_create(registry &registry, client_context &ctx, const packet::create_entity &create) {
     auto &types = registry.ctx().get<network_registry>();
     auto pools = decode_pools(types, create.pools, create.entities.size());
@@ -66,8 +87,19 @@ void receive_create(registry &registry, client_context &ctx, const packet::creat
     }
     auto local = to_local(ctx, create.entities);
     auto muted = muted_scope(types);
-    for (auto &pool : *pools)
-        pool->apply(registry, local, remote_to_local_map(ctx));
+    for (auto &pool : *pools) {
+        // The program's values follow the rule of snapshots (a create_entity also updates
+        // entities the client has, and may arrive after newer snapshots); edyn's own are whole
+        // definitions, applied where they differ.
+        auto index = pool->component_index;
+        auto entities = local;
+        if (index >= types.first_program_type) {
+            for (auto position : pool->positions)
+                if (!takes_value(types, ctx, index, local[position], create.timestamp))
+                    entities[position] = null;
+        }
+        pool->apply(registry, entities, remote_to_local_map(ctx));
+    }
 }
 
 void request_unknown(registry &registry, client_context &ctx, const std::vector<entity> &remote) {
@@ -127,19 +159,6 @@ void keep_forwarded(registry &registry, client_context &ctx, const packet::regis
         kept.erase(kept.begin(), kept.end() - std::ptrdiff_t(max_kept_forwarded));
 }
 
-// Whether the value or removal of the type at `index` that a snapshot of `time` has for local
-// entity `e` is not older than the one `e` has; then `time` becomes the one it has.
-bool newer_value(client_context &ctx, std::uint16_t index, entity e, double time) {
-    if (index >= ctx.value_times.size()) ctx.value_times.resize(std::size_t(index) + 1);
-    auto &times = ctx.value_times[index];
-    auto i = to_index(e);
-    if (i >= times.size()) times.resize(std::size_t(i) + 1, {null, 0.0});
-    auto &slot = times[i];
-    if (slot.first == e && slot.second > time) return false;
-    slot = {e, time};
-    return true;
-}
-
 // The removals of a snapshot, decoded: per pool, its network index and the positions of the
 // entities that lost it. Empty when one names a type that is not the program's (or an action),
 // or a position past the entities.
@@ -182,8 +201,7 @@ void receive_snapshot(registry &registry, client_context &ctx, const packet::reg
     {
         auto muted = muted_scope(types);
         auto takes = [&](std::uint16_t index, entity e) {
-            return e != null && !(types.types[index].input && ctx.authored.contains(e)) &&
-                   newer_value(ctx, index, e, snapshot.timestamp);
+            return takes_value(types, ctx, index, e, snapshot.timestamp);
         };
         for (auto &pool : *pools) {
             auto index = pool->component_index;

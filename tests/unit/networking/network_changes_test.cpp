@@ -42,10 +42,18 @@ void serialize(Archive &archive, hit_points &h) {
     archive(h.value);
 }
 struct on_fire {};
+// A client's input.
+struct throttle : network_input {
+    int level{0};
+};
+template<typename Archive>
+void serialize(Archive &archive, throttle &t) {
+    archive(t.level);
+}
 
 void program_components(registry &registry) {
-    register_external_components<hit_points, on_fire>(registry);
-    register_networked_components<hit_points, on_fire>(registry);
+    register_external_components<hit_points, on_fire, throttle>(registry);
+    register_networked_components<hit_points, on_fire, throttle>(registry);
 }
 
 // A box with hit points, resting on the ground.
@@ -230,6 +238,26 @@ TEST_P(network_changes, a_late_snapshot_does_not_undo_a_newer_value) {
     h.run(1);
     EXPECT_EQ(went_down, 0);
     EXPECT_EQ(c.reg.get<hit_points>(local).value, s.get<hit_points>(body).value);
+}
+
+TEST_P(network_changes, a_changed_definition_does_not_undo_the_client_s_own_input) {
+    net_harness h(&program_components, GetParam());
+    auto &s = h.server;
+    auto body = box_with_hit_points(s, 1);
+    s.emplace<throttle>(body);
+    auto &c = h.add_client({.latency = 0.05});
+    s.get<remote_client>(c.server_entity).owned_entities.push_back(body);
+    h.run(1);
+    auto local = client_local_entity(c.reg, body);
+    ASSERT_TRUE(c.reg.valid(local));
+    c.reg.patch<throttle>(local, [](throttle &t) { t.level = 5; });
+    // Changed on the server before the input reaches it: the body's definition goes to the
+    // client with the server's values of the moment, the input's older one among them.
+    s.patch<material>(body, [](material &m) { m.friction = scalar(0.2); });
+    h.run(1);
+    EXPECT_EQ(c.reg.get<material>(local).friction, scalar(0.2));
+    EXPECT_EQ(c.reg.get<throttle>(local).level, 5) << "the client's input was put back";
+    EXPECT_EQ(s.get<throttle>(body).level, 5);
 }
 
 } // namespace
