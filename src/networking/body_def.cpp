@@ -87,9 +87,8 @@ void update_rigidbody(registry &registry, entity e, const rigidbody_def &def) {
             update_inertia_world(registry, e);
         }
     }
-    // A body's material may change, not whether it has one (a sensor is made as one).
-    if (current.material && def.material && *current.material != *def.material)
-        registry.replace<material>(e, *def.material);
+    // A body without a material is a sensor (the simulation's listeners keep sensor_tag).
+    if (current.material != def.material) set_optional<material>(registry, e, def.material);
     if (dynamic && current.gravity != def.gravity) set_optional<gravity>(registry, e, def.gravity);
     if (auto *filter = registry.try_get<collision_filter>(e);
         filter && (filter->group != def.collision_group || filter->mask != def.collision_mask))

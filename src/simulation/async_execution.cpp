@@ -94,6 +94,19 @@ void main_on_update_transform(registry &registry, entity e) {
     main_on_update_wake(registry, e);
 }
 
+// A body that gains or loses its material stops or starts being a sensor (the worker does the
+// same, and wakes it).
+void main_on_construct_material(registry &registry, entity e) {
+    if (!registry.all_of<rigidbody_tag>(e)) return;
+    registry.remove<sensor_tag>(e);
+    main_on_update_wake(registry, e);
+}
+void main_on_destroy_material(registry &registry, entity e) {
+    if (!registry.all_of<rigidbody_tag>(e) || registry.destroying(e)) return;
+    registry.emplace_or_replace<sensor_tag>(e);
+    main_on_update_wake(registry, e);
+}
+
 template<typename... Components>
 void connect_wake(registry &registry, component_list<Components...>, bool connect) {
     if (connect)
@@ -126,6 +139,8 @@ void connect_main_listeners(registry &registry, constraint_type_list<Constraints
         registry.on_destroy<static_tag>().connect<&main_on_destroy_static>();
         registry.on_update<position>().connect<&main_on_update_transform>();
         registry.on_update<orientation>().connect<&main_on_update_transform>();
+        registry.on_construct<material>().connect<&main_on_construct_material>();
+        registry.on_destroy<material>().connect<&main_on_destroy_material>();
         (registry.on_construct<Constraints>().template connect<&main_on_construct_constraint<Constraints>>(),
          ...);
         (registry.on_destroy<Constraints>().template connect<&main_on_destroy_constraint>(), ...);
@@ -142,6 +157,8 @@ void connect_main_listeners(registry &registry, constraint_type_list<Constraints
         registry.on_destroy<static_tag>().disconnect<&main_on_destroy_static>();
         registry.on_update<position>().disconnect<&main_on_update_transform>();
         registry.on_update<orientation>().disconnect<&main_on_update_transform>();
+        registry.on_construct<material>().disconnect<&main_on_construct_material>();
+        registry.on_destroy<material>().disconnect<&main_on_destroy_material>();
         (registry.on_construct<Constraints>()
              .template disconnect<&main_on_construct_constraint<Constraints>>(),
          ...);

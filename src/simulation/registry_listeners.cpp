@@ -184,6 +184,24 @@ void on_update_material(registry &registry, entity e) {
     if (w.broadphase.contains(e)) wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
 }
 
+// A body that gains or loses its material stops or starts being a sensor: its contacts are
+// solved, or no longer, from the next step. It wakes, and so does what rests on it, or against
+// it when a sensor becomes solid. (A body being made gets its material before it is a body; one
+// being cleared or destroyed loses it after.)
+void on_change_has_material(registry &registry, entity e, bool has_material) {
+    if (!registry.all_of<rigidbody_tag>(e) || registry.destroying(e)) return;
+    if (has_material)
+        registry.remove<sensor_tag>(e);
+    else
+        registry.emplace_or_replace<sensor_tag>(e);
+    world(registry).islands.wake_entity(registry, e);
+    on_update_material(registry, e);
+}
+
+void on_construct_material(registry &registry, entity e) { on_change_has_material(registry, e, true); }
+
+void on_destroy_material(registry &registry, entity e) { on_change_has_material(registry, e, false); }
+
 void on_update_shape(registry &registry, entity e) {
     ++registry.get_or_emplace<shape_epoch>(e).value;
     // A dynamic body's box follows its shape every step; a static or kinematic one's is computed
@@ -291,6 +309,8 @@ void connect_registry_listeners(registry &registry) {
     connect_update<&on_update_wake>(registry, waking_components{});
     connect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<material>().connect<&on_update_material>();
+    registry.on_construct<material>().connect<&on_construct_material>();
+    registry.on_destroy<material>().connect<&on_destroy_material>();
     registry.on_update<collision_filter>().connect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().connect<&on_change_filter>();
     registry.on_update<collision_exclusion>().connect<&on_change_filter>();
@@ -317,6 +337,8 @@ void disconnect_registry_listeners(registry &registry) {
     disconnect_update<&on_update_wake>(registry, waking_components{});
     disconnect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<material>().disconnect<&on_update_material>();
+    registry.on_construct<material>().disconnect<&on_construct_material>();
+    registry.on_destroy<material>().disconnect<&on_destroy_material>();
     registry.on_update<collision_filter>().disconnect<&on_change_filter>();
     registry.on_construct<collision_exclusion>().disconnect<&on_change_filter>();
     registry.on_update<collision_exclusion>().disconnect<&on_change_filter>();

@@ -238,6 +238,53 @@ TEST_F(events, a_dynamic_sensor_falls_through_the_ground_reporting_the_contact) 
     EXPECT_EQ(log().count(kind::started), 1u);
 }
 
+// Removing a body's material makes it a sensor at run time, and emplacing one makes it solid
+// again; bodies asleep on it, or it asleep on them, wake to respond.
+TEST_F(events, removing_or_emplacing_the_material_makes_a_body_a_sensor_or_solid_at_run_time) {
+    scenes::make_ground(reg, scalar(0.5), 0);
+    auto half = vector3{scalar(0.5), scalar(0.5), scalar(0.5)};
+    auto box = make_rigidbody(reg, edyn::test::box_def(half, {0, scalar(0.5), 0}));
+    // A static platform 2 m up with a box on it, far from the first.
+    auto platform_def = edyn::test::box_def(vector3{2, scalar(0.25), 2}, {10, scalar(1.75), 0});
+    platform_def.kind = rigidbody_kind::rb_static;
+    auto platform = make_rigidbody(reg, platform_def);
+    auto rider = make_rigidbody(reg, edyn::test::box_def(half, {10, scalar(2.5), 0}));
+    run_for(3);
+    ASSERT_TRUE(reg.all_of<sleeping_tag>(box));
+    ASSERT_TRUE(reg.all_of<sleeping_tag>(rider));
+    ASSERT_NEAR(pos(rider).y, scalar(2.5), scalar(0.01));
+
+    // The sleeping box becomes a sensor: it wakes and falls freely through the ground.
+    reg.remove<material>(box);
+    EXPECT_TRUE(reg.all_of<sensor_tag>(box));
+    run_for(1);
+    EXPECT_NEAR(pos(box).y, scalar(0.5) - fall(reg, 1), scalar(0.02)) << "the ground still held the sensor";
+
+    // The static platform becomes a sensor: the box asleep on it wakes and falls through it onto
+    // the ground, where it rests.
+    reg.remove<material>(platform);
+    EXPECT_TRUE(reg.all_of<sensor_tag>(platform));
+    run_for(2);
+    EXPECT_NEAR(pos(rider).y, scalar(0.5), scalar(0.01)) << "the rider did not fall through the platform";
+
+    // Solid again: a ball dropped on it rests on it.
+    reg.emplace<material>(platform);
+    EXPECT_FALSE(reg.all_of<sensor_tag>(platform));
+    auto ball = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.25), {10, 3, 0}));
+    run_for(2);
+    EXPECT_NEAR(pos(ball).y, scalar(2.25), scalar(0.01)) << "the ball fell through the solid platform";
+
+    // A dynamic sensor made solid while it falls lands on the ground and rests there.
+    auto def = edyn::test::sphere_def(scalar(0.25), {-10, 3, 0});
+    def.material.reset();
+    auto ghost = make_rigidbody(reg, def);
+    run_for(0.5);
+    reg.emplace<material>(ghost);
+    EXPECT_FALSE(reg.all_of<sensor_tag>(ghost));
+    run_for(2);
+    EXPECT_NEAR(pos(ghost).y, scalar(0.25), scalar(0.01)) << "the ball made solid fell through the ground";
+}
+
 namespace {
 // The stacks below settle in 0.25 s and fall asleep after 0.5 s more at rest.
 constexpr scalar settle_awake = scalar(0.25);

@@ -130,6 +130,34 @@ TEST_P(network_changes, a_body_s_new_definition_reaches_the_client) {
     EXPECT_EQ(get_network_client_rejections(c.reg).invalid_value, 0u);
 }
 
+// A body the server's program makes a sensor (by removing its material) is one on the client,
+// and solid again when the material comes back.
+TEST_P(network_changes, a_body_made_a_sensor_or_solid_again_is_one_on_the_client) {
+    net_harness h({}, GetParam());
+    auto &s = h.server;
+    auto floor = ground(s);
+    auto body = box(s, {0, 0.5, 0});
+    auto &c = h.add_client({.latency = 0.05, .jitter = 0.01, .loss = 0.2, .seed = 5});
+    h.run(1.5);
+    auto local_floor = client_local_entity(c.reg, floor), local_body = client_local_entity(c.reg, body);
+    ASSERT_TRUE(c.reg.valid(local_floor));
+    ASSERT_TRUE(c.reg.valid(local_body));
+
+    s.remove<material>(floor);
+    h.run(0.5);
+    EXPECT_TRUE(c.reg.all_of<sensor_tag>(local_floor));
+    EXPECT_FALSE(c.reg.all_of<material>(local_floor));
+    // The box falls through the floor on both ends (0.5 s of free fall is 1.2 m).
+    EXPECT_LT(s.get<position>(body).y, -0.5);
+    EXPECT_LT(c.reg.get<present_position>(local_body).y, -0.5);
+
+    s.emplace<material>(floor);
+    h.run(0.5);
+    EXPECT_FALSE(c.reg.all_of<sensor_tag>(local_floor));
+    ASSERT_TRUE(c.reg.all_of<material>(local_floor));
+    EXPECT_EQ(c.reg.get<material>(local_floor), s.get<material>(floor));
+}
+
 TEST_P(network_changes, constraints_made_or_changed_after_entry_reach_the_client) {
     net_harness h({}, GetParam());
     auto &s = h.server;
