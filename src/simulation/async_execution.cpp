@@ -107,12 +107,27 @@ void main_on_destroy_material(registry &registry, entity e) {
     main_on_update_wake(registry, e);
 }
 
+void main_on_presence_wake(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag>(e) && !registry.destroying(e)) main_on_update_wake(registry, e);
+}
+
 template<typename... Components>
 void connect_wake(registry &registry, component_list<Components...>, bool connect) {
     if (connect)
         (registry.on_update<Components>().template connect<&main_on_update_wake>(), ...);
     else
         (registry.on_update<Components>().template disconnect<&main_on_update_wake>(), ...);
+}
+
+template<typename... Components>
+void connect_presence_wake(registry &registry, component_list<Components...>, bool connect) {
+    if (connect) {
+        (registry.on_construct<Components>().template connect<&main_on_presence_wake>(), ...);
+        (registry.on_destroy<Components>().template connect<&main_on_presence_wake>(), ...);
+    } else {
+        (registry.on_construct<Components>().template disconnect<&main_on_presence_wake>(), ...);
+        (registry.on_destroy<Components>().template disconnect<&main_on_presence_wake>(), ...);
+    }
 }
 
 template<typename T>
@@ -149,8 +164,10 @@ void connect_main_listeners(registry &registry, constraint_type_list<Constraints
         registry.on_destroy<external_tag>().connect<&destroy_constraints_of>();
         registry.on_destroy<replicated_tag>().connect<&on_destroy_replicated>();
         connect_wake(registry, waking_components{}, true);
+        connect_presence_wake(registry, waking_presence_components{}, true);
     } else {
         connect_wake(registry, waking_components{}, false);
+        connect_presence_wake(registry, waking_presence_components{}, false);
         registry.on_construct<rigidbody_tag>().disconnect<&on_construct_body>();
         registry.on_destroy<rigidbody_tag>().disconnect<&on_destroy_body>();
         registry.on_construct<static_tag>().disconnect<&main_on_construct_static>();

@@ -4,6 +4,7 @@
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/shape_index.hpp"
+#include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/shapes/shapes.hpp"
 
@@ -20,6 +21,10 @@ struct component_list {};
 using waking_components = component_list<linvel, angvel, gravity, mass, inertia, material, shape_index,
                                          plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
                                          polyhedron_shape, compound_shape, mesh_shape, paged_mesh_shape>;
+
+// Components whose arrival or removal wakes a body: its own gravity, and sleeping_disabled_tag
+// (a body that may not sleep is awake). A material's is handled with the sensor_tag it decides.
+using waking_presence_components = component_list<gravity, sleeping_disabled_tag>;
 
 } // namespace edyn
 

@@ -176,6 +176,12 @@ void on_destroy_external(registry &registry, entity e) { destroy_constraints_of(
 // constraint's settings (its island wakes, asleep or not).
 void on_update_wake(registry &registry, entity e) { world(registry).islands.wake_entity(registry, e); }
 
+// A component that wakes a body by coming or going (waking_presence_components); a body being
+// made gets it before it is a body, one being destroyed needs nothing.
+void on_presence_wake(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag>(e) && !registry.destroying(e)) on_update_wake(registry, e);
+}
+
 // A static or kinematic body's new friction or restitution acts on what rests on it: that wakes.
 // (Its new velocity needs nothing here: each step wakes what a moving kinematic body touches.)
 void on_update_material(registry &registry, entity e) {
@@ -286,6 +292,17 @@ void disconnect_update(registry &registry, component_list<Components...>) {
     (registry.on_update<Components>().template disconnect<Fn>(), ...);
 }
 
+template<auto Fn, typename... Components>
+void connect_presence(registry &registry, component_list<Components...>, bool connect) {
+    if (connect) {
+        (registry.on_construct<Components>().template connect<Fn>(), ...);
+        (registry.on_destroy<Components>().template connect<Fn>(), ...);
+    } else {
+        (registry.on_construct<Components>().template disconnect<Fn>(), ...);
+        (registry.on_destroy<Components>().template disconnect<Fn>(), ...);
+    }
+}
+
 // Changes after which contact points computed with the old geometry must not be reused.
 using shape_components =
     component_list<shape_index, plane_shape, sphere_shape, cylinder_shape, capsule_shape, box_shape,
@@ -307,6 +324,7 @@ void connect_registry_listeners(registry &registry) {
     registry.on_update<position>().connect<&on_update_transform>();
     registry.on_update<orientation>().connect<&on_update_transform>();
     connect_update<&on_update_wake>(registry, waking_components{});
+    connect_presence<&on_presence_wake>(registry, waking_presence_components{}, true);
     connect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<material>().connect<&on_update_material>();
     registry.on_construct<material>().connect<&on_construct_material>();
@@ -335,6 +353,7 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_update<position>().disconnect<&on_update_transform>();
     registry.on_update<orientation>().disconnect<&on_update_transform>();
     disconnect_update<&on_update_wake>(registry, waking_components{});
+    connect_presence<&on_presence_wake>(registry, waking_presence_components{}, false);
     disconnect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<material>().disconnect<&on_update_material>();
     registry.on_construct<material>().disconnect<&on_construct_material>();

@@ -121,6 +121,45 @@ TEST_F(sleeping, changes_through_the_registry_or_edyns_functions_wake_a_body) {
     EXPECT_GT(pos(box).y, 1) << "the box falls up under the new gravity";
 }
 
+// Components a program emplaces or removes (not only replaces) wake the body: its own gravity,
+// and sleeping_disabled_tag, which a sleeping body cannot keep.
+TEST_F(sleeping, emplacing_or_removing_a_body_s_gravity_or_sleeping_disabled_wakes_it) {
+    auto box = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    run_for(2.0);
+    ASSERT_TRUE(asleep(box));
+
+    reg.emplace<gravity>(box, vector3{0, 9.8, 0});
+    EXPECT_FALSE(asleep(box));
+    run_for(0.5);
+    EXPECT_GT(pos(box).y, 1) << "the box's own upward gravity did not lift it";
+
+    // Back under the world's gravity: it falls to the ground and sleeps there.
+    reg.remove<gravity>(box);
+    run_for(4.0);
+    EXPECT_NEAR(pos(box).y, 0.5, 0.02);
+    ASSERT_TRUE(asleep(box));
+    // Removed while it sleeps, with the world's gravity now pointing up: it wakes and rises.
+    reg.emplace<gravity>(box, vector3{0, -9.8, 0});
+    set_gravity(reg, {0, 9.8, 0});
+    run_for(4.0);
+    ASSERT_TRUE(asleep(box)) << "its own gravity holds it on the ground";
+    reg.remove<gravity>(box);
+    EXPECT_FALSE(asleep(box));
+    run_for(0.5);
+    EXPECT_GT(pos(box).y, 1) << "the box did not follow the world's gravity once its own went";
+    set_gravity(reg, {0, -9.8, 0});
+    run_for(4.0);
+    ASSERT_TRUE(asleep(box));
+
+    reg.emplace<sleeping_disabled_tag>(box);
+    EXPECT_FALSE(asleep(box));
+    run_for(3.0);
+    EXPECT_FALSE(asleep(box));
+    reg.remove<sleeping_disabled_tag>(box);
+    run_for(3.0);
+    EXPECT_TRUE(asleep(box));
+}
+
 TEST_F(sleeping, separate_islands_sleep_independently) {
     auto resting = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
     // A dropped rolling away on the ground, far off: never slow enough to sleep.
