@@ -61,6 +61,21 @@ struct scoped_mute {
     scoped_mute &operator=(const scoped_mute &) = delete;
 };
 
+// The program's code run while the worker's results are applied (contact listeners, query
+// replies) is heard: a body it destroys or a velocity it sets reaches the worker.
+struct scoped_unmute {
+    worker_calls &c;
+    int saved;
+    explicit scoped_unmute(registry &registry)
+        : c(calls(registry))
+        , saved(c.muted) {
+        c.muted = 0;
+    }
+    ~scoped_unmute() { c.muted = saved; }
+    scoped_unmute(const scoped_unmute &) = delete;
+    scoped_unmute &operator=(const scoped_unmute &) = delete;
+};
+
 // Main-side bookkeeping the sequential listeners do as well: the previous transform for
 // interpolation, and constraint lists, so that a body's constraints go with it on this side.
 void on_construct_body(registry &registry, entity e) {
@@ -435,6 +450,7 @@ void async_execution::apply(registry &registry, worker_message &message, bool mo
     }
     for (auto &reply : message.replies) {
         try {
+            scoped_unmute heard(registry);
             reply(registry);
         } catch (...) {
             errors.push_back(std::current_exception());
@@ -499,6 +515,9 @@ void async_execution::apply_records(registry &registry, const std::vector<worker
     for (auto &record : records) {
         switch (record.type) {
         case kind::manifold_created: {
+            // The worker, a step or more ahead, found a contact of a body the program has
+            // destroyed since: the destruction is on its way there, the contact is not shown.
+            if (!registry.valid(record.manifold.body[0]) || !registry.valid(record.manifold.body[1])) break;
             auto m = registry.create();
             registry.emplace<contact_manifold>(m, record.manifold);
             manifolds.insert(record.worker_entity, m);
@@ -513,8 +532,15 @@ void async_execution::apply_records(registry &registry, const std::vector<worker
         case kind::contact_event: {
             auto m = manifolds.find(record.worker_entity);
             if (m == null || !registry.valid(m)) break;
-            registry.get<contact_manifold>(m) = record.manifold;
+            auto &manifold = registry.get<contact_manifold>(m);
+            manifold = record.manifold;
+            // What ends is told whatever became of the bodies (a listener keeps its count);
+            // what begins with a body the program has destroyed is not.
+            auto begins = record.event.type == contact_events::kind::started ||
+                          record.event.type == contact_events::kind::point_created;
+            if (begins && (!registry.valid(manifold.body[0]) || !registry.valid(manifold.body[1]))) break;
             try {
+                scoped_unmute heard(registry);
                 events.publish({record.event.type, m, record.event.id});
             } catch (...) {
                 errors.push_back(std::current_exception());

@@ -291,6 +291,59 @@ constexpr scalar settle_awake = scalar(0.25);
 constexpr scalar settle_asleep = 2;
 } // namespace
 
+namespace {
+// Bodies a contact_started listener destroys when they touch anything (a projectile that hits).
+struct doomed_bodies {
+    std::vector<entity> bodies;
+    int destroyed{0};
+};
+void destroy_doomed_on_contact(registry &reg, entity manifold) {
+    auto &doomed = reg.ctx().get<doomed_bodies>();
+    for (auto body : reg.get<contact_manifold>(manifold).body) {
+        if (reg.valid(body) &&
+            std::find(doomed.bodies.begin(), doomed.bodies.end(), body) != doomed.bodies.end()) {
+            reg.destroy(body);
+            ++doomed.destroyed;
+        }
+    }
+}
+} // namespace
+
+// A body a contact listener destroys leaves the simulation (in asynchronous mode the listener
+// runs on the calling thread while the worker's results are applied: the destruction must reach
+// the worker all the same). No event names it after, no manifold outlives it, and a ball dropped
+// where it lay falls to the ground instead of landing on what is left of it.
+TEST_F(events, bodies_destroyed_by_a_contact_listener_leave_the_simulation) {
+    auto ground = scenes::make_ground(reg, scalar(0.5), 0);
+    auto &doomed = reg.ctx().emplace<doomed_bodies>();
+    for (int i = 0; i < 3; ++i)
+        doomed.bodies.push_back(
+            make_rigidbody(reg, edyn::test::sphere_def(scalar(0.25), {scalar(i) * 2, 1, 0})));
+    on_contact_started(reg).connect<&destroy_doomed_on_contact>(reg);
+    run_for(1);
+    EXPECT_EQ(doomed.destroyed, 3);
+    for (auto body : doomed.bodies)
+        EXPECT_FALSE(reg.valid(body));
+    // Every contact that started ended once, and none is left (the asynchronous worker hears of
+    // a destruction made while its results were applied at the next update).
+    run_for(0.25);
+    EXPECT_EQ(log().count(kind::started), 3u);
+    EXPECT_EQ(log().count(kind::ended), 3u);
+    EXPECT_TRUE(reg.view<contact_manifold>().empty());
+
+    on_contact_started(reg).disconnect<&destroy_doomed_on_contact>(reg);
+    std::vector<entity> dropped;
+    for (int i = 0; i < 3; ++i)
+        dropped.push_back(make_rigidbody(reg, edyn::test::sphere_def(scalar(0.25), {scalar(i) * 2, 2, 0})));
+    run_for(2);
+    for (auto ball : dropped) {
+        EXPECT_NEAR(pos(ball).y, scalar(0.25), scalar(0.01)) << "the ball landed on a destroyed body";
+        for (auto manifold : manifolds_of(ball))
+            for (auto body : reg.get<contact_manifold>(manifold).body)
+                EXPECT_TRUE(body == ball || body == ground) << "a manifold with a destroyed body";
+    }
+}
+
 TEST_F(events, destroying_the_top_box_of_a_stack_cleans_its_manifolds) {
     scenes::make_ground(reg, scalar(0.6), 0);
     auto half = vector3{scalar(0.5), scalar(0.5), scalar(0.5)};
