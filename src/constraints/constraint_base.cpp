@@ -81,6 +81,13 @@ joint_anchor make_joint_anchor(const registry &registry, const entity (&body)[2]
     return anchor;
 }
 
+void check_joint_axis(const char *function, const char *name, const vector3 &axis) {
+    if (!isfinite(axis) || !(length_sqr(axis) >= scalar(1e-12))) {
+        throw std::invalid_argument(std::string(function) + ": " + name +
+                                    " must be finite and not zero, got " + concat(axis));
+    }
+}
+
 matrix3x3 frame_from_axis(const vector3 &axis) {
     vector3 p, q;
     auto a = normalize(axis);

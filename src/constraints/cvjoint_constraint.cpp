@@ -7,6 +7,8 @@
 namespace edyn {
 
 void cvjoint_constraint::set_axes(const vector3 &axisA, const vector3 &axisB) {
+    check_joint_axis("cvjoint_constraint::set_axes", "axisA", axisA);
+    check_joint_axis("cvjoint_constraint::set_axes", "axisB", axisB);
     frame[0] = frame_from_axis(axisA);
     frame[1] = frame_from_axis(axisB);
 }

@@ -119,6 +119,13 @@ joint_anchor make_joint_anchor(const registry &registry, const entity (&body)[2]
 /// @return The frame with each column in world space.
 matrix3x3 world_frame(const registry &registry, entity body, const matrix3x3 &frame);
 
+/// The check of the joints' set_axes(): an axis must be finite and not zero to give a frame.
+/// @param function The function checking, for the message (e.g. "hinge_constraint::set_axes").
+/// @param name The argument checked, for the message (e.g. "axisA").
+/// @param axis The axis given.
+/// @throws std::invalid_argument When `axis` is not finite or its length is below 1e-6.
+void check_joint_axis(const char *function, const char *name, const vector3 &axis);
+
 /// The joint frame whose first column is `axis`, normalised, completed by plane_space(): what
 /// the joints' set_axes() give each body.
 /// @param axis The joint's axis in one body's object space; not zero.

@@ -75,9 +75,10 @@ struct cvjoint_constraint {
     /// orthonormal basis.
     /// The completions come from plane_space(), so twist limits and `twist_rest_angle` are
     /// measured from a direction that depends on the axis; set `frame` instead to choose it.
-    /// Nothing is validated here: a zero axis gives frames that make_constraint() rejects.
     /// @param axisA The twist axis in body[0]'s object space; need not be unit length.
     /// @param axisB The twist axis in body[1]'s object space; need not be unit length.
+    /// @throws std::invalid_argument When an axis is not finite or is zero; the frames are left
+    /// as they were.
     void set_axes(const vector3 &axisA, const vector3 &axisB);
 };
 

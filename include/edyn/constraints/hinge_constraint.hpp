@@ -71,10 +71,11 @@ struct hinge_constraint {
     /// Sets both frames from the hinge axis in each body's object space, completing each into an
     /// orthonormal basis. The angle is then measured between those completions.
     /// The completions come from plane_space(), so limits and `rest_angle` are measured from a
-    /// direction that depends on the axis; set `frame` instead to choose it. Nothing is
-    /// validated here: a zero axis gives frames that make_constraint() rejects.
+    /// direction that depends on the axis; set `frame` instead to choose it.
     /// @param axisA The hinge axis in body[0]'s object space; need not be unit length.
     /// @param axisB The hinge axis in body[1]'s object space; need not be unit length.
+    /// @throws std::invalid_argument When an axis is not finite or is zero; the frames are left
+    /// as they were.
     void set_axes(const vector3 &axisA, const vector3 &axisB);
 };
 

@@ -112,6 +112,28 @@ TEST_F(make_constraint_test, rejects_non_finite_pivots_and_negative_distance) {
         {"distance", "-1"});
 }
 
+// A zero or non-finite axis has no frame: set_axes says so, naming itself and the argument,
+// in every build (normalising it would assert, or give NaN frames).
+TEST_F(make_constraint_test, set_axes_refuses_a_zero_or_non_finite_axis) {
+    expect_rejected(
+        [&] {
+            make_constraint<hinge_constraint>(
+                reg, a, b, [](hinge_constraint &c) { c.set_axes(vector3_zero, vector3_x); });
+        },
+        {"hinge_constraint::set_axes", "axisA", "(0, 0, 0)"});
+    expect_rejected(
+        [&] {
+            make_constraint<cvjoint_constraint>(reg, a, b, [](cvjoint_constraint &c) {
+                c.set_axes(vector3_y, vector3{std::numeric_limits<scalar>::infinity(), 0, 0});
+            });
+        },
+        {"cvjoint_constraint::set_axes", "axisB", "finite"});
+    // A short axis that is not zero is normalised.
+    auto hinge = hinge_constraint{};
+    hinge.set_axes(vector3{0, 0, scalar(1e-3)}, vector3_z);
+    EXPECT_EQ(hinge.frame[0].column(0), vector3_z);
+}
+
 TEST_F(make_constraint_test, destroying_or_clearing_a_body_destroys_its_constraints) {
     auto c0 = make_constraint<point_constraint>(reg, a, b);
     auto c1 = make_constraint<distance_constraint>(reg, b, a);
