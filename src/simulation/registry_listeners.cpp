@@ -1,4 +1,5 @@
 #include "edyn/simulation/registry_listeners.hpp"
+#include "../shapes/invalid_argument.hpp"
 #include "component_list.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
@@ -160,8 +161,15 @@ void refresh_placement(registry &registry, entity e) {
     w.islands.wake_entity(registry, e);
 }
 
+void note_written_motion(registry &registry, entity e) { world(registry).written_motion.push_back(e); }
+
+void on_update_velocity(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag>(e)) note_written_motion(registry, e);
+}
+
 void on_update_transform(registry &registry, entity e) {
     if (!registry.all_of<rigidbody_tag>(e)) return;
+    note_written_motion(registry, e);
     if (registry.all_of<dynamic_tag>(e)) update_inertia_world(registry, e);
     if (auto *prev = registry.try_get<previous_transform>(e)) {
         // A teleport is not interpolated.
@@ -323,6 +331,8 @@ void connect_registry_listeners(registry &registry) {
     registry.on_destroy<island_resident>().connect<&on_destroy_resident>();
     registry.on_update<position>().connect<&on_update_transform>();
     registry.on_update<orientation>().connect<&on_update_transform>();
+    registry.on_update<linvel>().connect<&on_update_velocity>();
+    registry.on_update<angvel>().connect<&on_update_velocity>();
     connect_update<&on_update_wake>(registry, waking_components{});
     connect_presence<&on_presence_wake>(registry, waking_presence_components{}, true);
     connect_update<&on_update_shape>(registry, shape_components{});
@@ -352,6 +362,8 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_destroy<island_resident>().disconnect<&on_destroy_resident>();
     registry.on_update<position>().disconnect<&on_update_transform>();
     registry.on_update<orientation>().disconnect<&on_update_transform>();
+    registry.on_update<linvel>().disconnect<&on_update_velocity>();
+    registry.on_update<angvel>().disconnect<&on_update_velocity>();
     disconnect_update<&on_update_wake>(registry, waking_components{});
     connect_presence<&on_presence_wake>(registry, waking_presence_components{}, false);
     disconnect_update<&on_update_shape>(registry, shape_components{});
@@ -366,6 +378,29 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_destroy<constraint_links>().disconnect<&on_destroy_constraint_links>();
     registry.on_destroy<constraint_list>().disconnect<&on_destroy_constraint_list>();
     registry.on_destroy<external_tag>().disconnect<&on_destroy_external>();
+}
+
+void check_written_motion(registry &registry) {
+    auto &written = world(registry).written_motion;
+    for (auto e : written) {
+        if (!registry.valid(e) || !registry.all_of<rigidbody_tag>(e)) continue;
+        auto refuse = [&](const char *component, const std::string &value, const char *what) {
+            throw detail::entity_refusal(e, "step: body entity ",
+                                         std::string(", changed after it was made: ") + component +
+                                             " must be " + what + ", got " + value);
+        };
+        auto &pos = registry.get<position>(e);
+        if (!isfinite(pos)) refuse("position", detail::concat(static_cast<const vector3 &>(pos)), "finite");
+        auto &orn = registry.get<orientation>(e);
+        if (!isfinite(orn) || !(length_sqr(orn) > scalar(1e-12)))
+            refuse("orientation", detail::concat(static_cast<const quaternion &>(orn)),
+                   "finite and not zero");
+        if (auto *v = registry.try_get<linvel>(e); v && !isfinite(*v))
+            refuse("linvel", detail::concat(static_cast<const vector3 &>(*v)), "finite");
+        if (auto *w = registry.try_get<angvel>(e); w && !isfinite(*w))
+            refuse("angvel", detail::concat(static_cast<const vector3 &>(*w)), "finite");
+    }
+    written.clear();
 }
 
 void adopt_existing_bodies(registry &registry) {

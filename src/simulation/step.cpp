@@ -5,6 +5,7 @@
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/narrowphase.hpp"
 #include "edyn/simulation/paged_mesh_loading.hpp"
+#include "edyn/simulation/registry_listeners.hpp"
 #include "edyn/simulation/solve_step.hpp"
 #include "edyn/simulation/world.hpp"
 #include "edyn/simulation/world_state.hpp"
@@ -18,6 +19,9 @@ void run_step(registry &registry) {
     auto settings = get_settings(registry);
 
     if (settings.pre_step_callback) settings.pre_step_callback(registry);
+    // What the program wrote into bodies' motion since the last step is checked first: a NaN
+    // would spread through contacts to every body it touches.
+    check_written_motion(registry);
 
     // 0. The worker threads take the step's phases only when the world is big enough for them to
     //    pay; otherwise it is stepped on the calling thread, to the same result.

@@ -1,6 +1,8 @@
 // Centre of mass shifts, and changing a body's kind and shape at run time.
 #include "behaviour_support.hpp"
 #include <edyn_scenes/scenes.hpp>
+#include <limits>
+#include <string>
 
 using namespace edyn;
 using edyn::test::fall;
@@ -298,4 +300,50 @@ TEST_F(plane_body, bodies_rest_and_sleep_on_a_plane_whose_body_is_moved_and_turn
     }
     // Resting, not drifting: the box stayed where it landed.
     EXPECT_LT(std::hypot(pos(box).x, pos(box).z), scalar(0.01));
+}
+
+using written_motion = world_fixture;
+
+// A position, orientation or velocity the program writes that is not finite (or an orientation
+// of zero) is refused before the step that would use it, naming the body: integrated, it would
+// spread through the contacts to every body touching it. The world steps on once it is mended.
+TEST_F(written_motion, motion_that_is_not_finite_is_refused_before_the_step_naming_the_body) {
+    scenes::make_ground(reg);
+    auto half = vector3{scalar(0.5), scalar(0.5), scalar(0.5)};
+    auto bottom = make_rigidbody(reg, edyn::test::box_def(half, {0, scalar(0.5), 0}));
+    auto top = make_rigidbody(reg, edyn::test::box_def(half, {0, scalar(1.5), 0}));
+    run_for(0.5);
+    auto nan = std::numeric_limits<scalar>::quiet_NaN();
+    auto inf = std::numeric_limits<scalar>::infinity();
+
+    auto expect_refused = [&](const char *component, const char *value) {
+        try {
+            run_for(0.1);
+            ADD_FAILURE() << component << ": the step took it";
+        } catch (const std::invalid_argument &e) {
+            auto expected = "step: body entity " + std::to_string(to_index(bottom)) +
+                            ", changed after it was made: " + component;
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(value), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(isfinite(pos(top))) << component << " spread to the box on top";
+    };
+    auto resting = pos(bottom);
+    reg.replace<linvel>(bottom, vector3{nan, 0, 0});
+    expect_refused("linvel must be finite", "(nan, 0, 0)");
+    reg.replace<linvel>(bottom, vector3_zero);
+    reg.patch<angvel>(bottom, [&](angvel &w) { w.y = inf; });
+    expect_refused("angvel must be finite", "(0, inf, 0)");
+    reg.replace<angvel>(bottom, vector3_zero);
+    reg.replace<orientation>(bottom, quaternion{0, 0, 0, 0});
+    expect_refused("orientation must be finite and not zero", "(0, 0, 0, 0)");
+    reg.replace<orientation>(bottom, quaternion_identity);
+    reg.patch<position>(bottom, [&](position &p) { p.x = -inf; });
+    expect_refused("position must be finite", "(-inf");
+
+    // Mended, the stack steps on and rests where it was.
+    reg.replace<position>(bottom, resting);
+    run_for(1);
+    EXPECT_NEAR(pos(bottom).y, scalar(0.5), scalar(0.01));
+    EXPECT_NEAR(pos(top).y, scalar(1.5), scalar(0.01));
 }

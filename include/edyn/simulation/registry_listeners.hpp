@@ -17,6 +17,14 @@ void connect_registry_listeners(registry &registry);
 /// @param registry The registry.
 void disconnect_registry_listeners(registry &registry);
 
+/// Checks the motion the program wrote (replace or patch of position, orientation, linvel or
+/// angvel) into bodies since the last step, before the step uses it.
+/// A NaN or infinite value would spread through contacts to every body it touches.
+/// @param registry A registry whose listeners are connected.
+/// @throws std::invalid_argument Naming the first body whose written position, velocity or
+/// orientation is not finite, or whose orientation is zero; the bodies stay to be checked again.
+void check_written_motion(registry &registry);
+
 /// Makes the bodies and constraints created before attach() join the simulation, oldest first.
 /// @param registry A registry whose listeners were just connected.
 void adopt_existing_bodies(registry &registry);
