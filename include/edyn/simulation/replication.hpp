@@ -56,6 +56,14 @@ struct replication_sink {
 };
 replication_sink *find_replication_sink(registry &registry) noexcept;
 
+// An entity member naming an entity the program has destroyed (an exclusion list keeps the
+// bodies it names) is sent as null: the worker would map it to a new entity of its own, in the
+// place of the live entity that now has its index.
+template<typename Component>
+void forget_destroyed_members(const registry &registry, Component &value) {
+    map_entity_members(value, [&](entity m) { return registry.valid(m) ? m : entity{null}; });
+}
+
 template<typename Component, bool EdynComponent>
 void send_value(registry &registry, entity e) {
     auto *sink = find_replication_sink(registry);
@@ -65,8 +73,10 @@ void send_value(registry &registry, entity e) {
             if (!worker.all_of<Component>(local)) worker.emplace<Component>(local);
         });
     } else {
-        sink->send(e, [value = registry.get<Component>(e)](edyn::registry &worker, entity local,
-                                                           const std::function<entity(entity)> &to_worker) {
+        auto value = registry.get<Component>(e);
+        forget_destroyed_members(registry, value);
+        sink->send(e, [value = std::move(value)](edyn::registry &worker, entity local,
+                                                 const std::function<entity(entity)> &to_worker) {
             auto copy = value;
             map_entity_members(copy, to_worker);
             if (auto *current = worker.try_get<Component>(local)) {
@@ -123,14 +133,18 @@ action_type make_action_type() {
             [](registry &r, replication_sink &sink) {
                 for (auto [e, list] : r.view<action_list<Action>>().each()) {
                     if (list.actions.empty() || !sink.accepts(r, e, false)) continue;
-                    sink.send(e, [actions = list.actions](registry &worker, entity local,
-                                                          const std::function<entity(entity)> &to_worker) {
-                        auto &target = worker.get_or_emplace<action_list<Action>>(local).actions;
-                        for (auto action : actions) {
-                            map_entity_members(action, to_worker);
-                            target.push_back(std::move(action));
-                        }
-                    });
+                    auto actions = list.actions;
+                    for (auto &action : actions)
+                        forget_destroyed_members(r, action);
+                    sink.send(e,
+                              [actions = std::move(actions)](registry &worker, entity local,
+                                                             const std::function<entity(entity)> &to_worker) {
+                                  auto &target = worker.get_or_emplace<action_list<Action>>(local).actions;
+                                  for (auto action : actions) {
+                                      map_entity_members(action, to_worker);
+                                      target.push_back(std::move(action));
+                                  }
+                              });
                 }
             }};
 }

@@ -169,6 +169,34 @@ TEST_F(async_world, entity_valued_members_name_the_workers_entities) {
     EXPECT_EQ(seen, (vector3{5, 1, 0})) << "link_to names another body in the worker";
 }
 
+// An exclusion list keeps naming a body the program destroyed. Sent again (a new exclusion),
+// that stale entity must not take, in the worker, the place of the live body that now has its
+// index: the live body's later changes would go to an empty entity of the worker's.
+TEST_F(async_world, a_destroyed_entity_named_in_a_component_does_not_displace_the_one_with_its_index) {
+    set_gravity(reg, vector3_zero);
+    auto a = make_ball({0, 0, 0});
+    auto gone = make_ball({5, 0, 0});
+    exclude_collision(reg, a, gone);
+    step();
+    reg.destroy(gone);
+    step();
+    auto successor = make_ball({10, 0, 0});
+    ASSERT_EQ(to_index(successor), to_index(gone)) << "the test needs the index reused";
+    auto other = make_ball({-5, 0, 0});
+    exclude_collision(reg, a, other); // sends a's list, which still names `gone`
+    step();
+    reg.replace<linvel>(successor, vector3{1, 0, 0});
+    for (int i = 0; i < 30; ++i)
+        step();
+    EXPECT_NEAR(reg.get<position>(successor).x, scalar(10.5), scalar(1e-3))
+        << "the successor's velocity went to another entity in the worker";
+    std::size_t worker_entities_with_shape = 0;
+    probe = [&](registry &worker) { worker_entities_with_shape = worker.view<shape_index>().size(); };
+    step();
+    probe = nullptr;
+    EXPECT_EQ(worker_entities_with_shape, 3u);
+}
+
 TEST_F(async_world, merge_component_specialisations_decide_how_values_merge) {
     register_external_components<log_list>(reg);
     auto ball = make_ball({0, 5, 0});
