@@ -27,7 +27,8 @@ namespace edyn {
 namespace {
 
 // On every main entity the worker has a counterpart of. Only destroy() removes it (detach
-// clears it with the listeners gone), so its removal means the entity is going away.
+// clears it with the listeners gone, and an entity the worker destroyed loses it unsent), so
+// its removal means the entity is going away.
 struct replicated_tag {};
 
 // edyn's components that travel to the worker, in an order in which a body's parts arrive
@@ -548,8 +549,14 @@ void async_execution::apply_records(registry &registry, const std::vector<worker
             break;
         }
         case kind::entity_destroyed:
-            // Destroyed in the worker (by a step callback, or by an operation from here).
-            if (registry.valid(record.main_entity)) registry.destroy(record.main_entity);
+            // Destroyed in the worker (by a step callback, or by an operation from here): the
+            // tag goes first, unsent, so that its destruction is not sent back, while what the
+            // program's own listeners do as it goes (a body made in its place) is.
+            if (registry.valid(record.main_entity)) {
+                registry.remove<replicated_tag>(record.main_entity);
+                scoped_unmute heard(registry);
+                registry.destroy(record.main_entity);
+            }
             break;
         }
     }

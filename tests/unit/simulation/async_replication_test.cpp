@@ -401,6 +401,42 @@ void act_on_hit(ray_action &a, raycast_id_type, const raycast_result &result, ve
         a.reg->replace<linvel>(result.entity, vector3{0, 5, 0});
 }
 
+// The program's listener puts a ball where a destroyed body was.
+struct debris_maker {
+    entity target{null}, made{null};
+};
+void make_debris(registry &reg, entity e) {
+    auto &maker = reg.ctx().get<debris_maker>();
+    if (e != maker.target) return;
+    rigidbody_def def;
+    def.mass = 1;
+    def.shape = sphere_shape{scalar(0.25)};
+    def.position = {5, 5, 0};
+    maker.made = make_rigidbody(reg, def);
+}
+
+// A body the worker destroys (here, from a step callback) is destroyed in the program's registry
+// at the next update. What the program's listeners do as it goes reaches the worker.
+TEST_F(async_world, what_destroy_listeners_do_for_a_body_the_worker_destroyed_reaches_it) {
+    make_ground();
+    reg.ctx().emplace<debris_maker>().target = make_ball({0, 5, 0});
+    reg.on_destroy<rigidbody_tag>().connect<&make_debris>();
+    probe = [](registry &worker) {
+        std::vector<entity> dynamic(worker.view<dynamic_tag>().begin(), worker.view<dynamic_tag>().end());
+        for (auto e : dynamic)
+            worker.destroy(e);
+    };
+    step();
+    probe = nullptr;
+    step();
+    auto debris = reg.ctx().get<debris_maker>().made;
+    ASSERT_NE(debris, entity{null}) << "the ball was not destroyed here";
+    for (int i = 0; i < 30; ++i)
+        step();
+    EXPECT_LT(reg.get<position>(debris).y, 4) << "the debris never reached the worker";
+    reg.on_destroy<rigidbody_tag>().disconnect<&make_debris>();
+}
+
 // A query's reply runs on the calling thread while the worker's results are applied; what it
 // changes reaches the worker like any other change of the program's.
 TEST_F(async_world, what_a_query_reply_changes_reaches_the_worker) {
