@@ -351,7 +351,7 @@ void solve_constraints(world_state &world, const settings &settings) {
         warm_start_contacts(contacts, bodies, queue);
         solve_joint_constraints(world.joints, bodies, biased, queue);
         solve_contacts(contacts, bodies, h, settings.contact, true, queue);
-        integrate_positions(bodies, h, queue);
+        integrate_positions(bodies, h, settings.max_linear_speed, queue);
         project_joint_positions(world.joints, bodies, settings.joint, queue);
         // Only integration and projection move bodies: the joints' rows measured now serve
         // every velocity pass until the next sub-step's integration.
@@ -370,6 +370,9 @@ void solve_constraints(world_state &world, const settings &settings) {
     } else if (bounces) {
         bounce_without_restitution_solver(contacts, bodies, settings.contact);
     }
+    // The passes after the last integration (relax, restitution) may have sped bodies up again.
+    limit_speeds(bodies, h, settings.max_linear_speed, queue);
+    queue.run(scheduler);
 }
 
 namespace {

@@ -337,6 +337,16 @@ void set_max_steps_per_update(registry &registry, unsigned steps) {
     mutable_settings(registry, "set_max_steps_per_update").max_steps_per_update = steps;
 }
 
+void set_max_linear_speed(registry &registry, scalar speed) {
+    if (!(speed > 0 && speed <= max_linear_speed_limit))
+        invalid("set_max_linear_speed",
+                "speed must be in (0, " + concat(max_linear_speed_limit) + "] m/s, got " + concat(speed));
+    mutable_settings(registry, "set_max_linear_speed").max_linear_speed = speed;
+}
+scalar get_max_linear_speed(const registry &registry) {
+    return settings_of(registry, "get_max_linear_speed").max_linear_speed;
+}
+
 void set_pre_step_callback(registry &registry, step_callback_t callback) {
     mutable_settings(registry, "set_pre_step_callback").pre_step_callback = callback;
 }

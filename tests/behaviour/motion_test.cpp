@@ -31,6 +31,29 @@ TEST_F(free_fall, per_body_gravity_overrides_the_world) {
     EXPECT_NEAR(vel(sideways).y, 0, 1e-6);
 }
 
+TEST_F(free_fall, no_body_moves_faster_than_the_speed_limit) {
+    set_gravity(reg, vector3_zero);
+    // With a limit of 50 m/s, a 1,000 m/s throw and a 100 m/s one both move at 50 m/s, each in
+    // its own direction: 50 m in a second.
+    auto fast = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, 10, 0}));
+    rigidbody_apply_impulse(reg, fast, {600, 800, 0}, vector3_zero);
+    set_max_linear_speed(reg, 50);
+    EXPECT_EQ(get_max_linear_speed(reg), 50);
+    auto slowed = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, -10, 0}));
+    reg.replace<linvel>(slowed, vector3{0, 0, 100});
+    run_for(1);
+    EXPECT_NEAR(vel(fast).x, 30, 1e-3);
+    EXPECT_NEAR(vel(fast).y, 40, 1e-3);
+    EXPECT_NEAR(pos(fast).y, 10 + 40, 1e-3);
+    EXPECT_NEAR(vel(slowed).z, 50, 1e-3);
+    EXPECT_NEAR(pos(slowed).z, 50, 1e-3);
+    // Back at the default, the same throw keeps 400 m/s.
+    set_max_linear_speed(reg, 400);
+    rigidbody_apply_impulse(reg, fast, {600, 800, 0}, vector3_zero);
+    run_for(1);
+    EXPECT_NEAR(length(vel(fast)), 400, 1e-2);
+}
+
 namespace {
 
 // A ball of restitution `e` dropped from `height` (its bottom) on the ground, with the

@@ -17,16 +17,38 @@ namespace edyn {
 /// @param queue Where the work is queued.
 void integrate_velocities(std::span<solver_body> bodies, scalar h, stage_queue &queue);
 
+/// The fastest a body may turn in one sub-step of length `h`, in rad/s: a quarter turn per
+/// sub-step (π/4 radians), beyond which its orientation would alias.
+/// @param h Length of the sub-step, in seconds.
+scalar max_angular_speed(scalar h) noexcept;
+
+/// Lowers a body's speeds to the limits, keeping their directions: its linear speed to
+/// `max_linear_speed` and its angular speed to `max_angular`.
+/// @param body A solver body.
+/// @param max_linear_speed The fastest linear speed, in m/s (settings::max_linear_speed).
+/// @param max_angular The fastest angular speed, in rad/s (max_angular_speed()).
+void limit_speed(solver_body &body, scalar max_linear_speed, scalar max_angular) noexcept;
+
 /// Queues advancing each body's accumulated motion over the sub-step `h`.
 /// Semi-implicit Euler: the velocities just solved move the bodies, adding to
 /// `solver_body::delta_position` and `solver_body::delta_rotation` (the registry is written
-/// later, by write_back). Index 0, the shared static body, is left alone. Angular speed is
-/// capped so that no body turns more than π/4 radians in one sub-step, which would alias its
-/// orientation; the cap lowers the body's `angvel` itself.
+/// later, by write_back). Index 0, the shared static body, is left alone. The speeds are first
+/// lowered to the limits (limit_speed): no body moves faster than `max_linear_speed` nor turns
+/// more than π/4 radians in one sub-step, which would alias its orientation.
 /// @param bodies The solver's body array, as gathered for this step (index 0 is the static body).
 /// @param h Length of the sub-step, in seconds.
+/// @param max_linear_speed The fastest linear speed, in m/s (settings::max_linear_speed).
 /// @param queue Where the work is queued.
-void integrate_positions(std::span<solver_body> bodies, scalar h, stage_queue &queue);
+void integrate_positions(std::span<solver_body> bodies, scalar h, scalar max_linear_speed,
+                         stage_queue &queue);
+
+/// Queues lowering every body's speeds to the limits (limit_speed), as integrate_positions
+/// does. The step queues it last, so that no body leaves a step faster than the limits.
+/// @param bodies The solver's body array, as gathered for this step (index 0 is the static body).
+/// @param h Length of the sub-step, in seconds.
+/// @param max_linear_speed The fastest linear speed, in m/s (settings::max_linear_speed).
+/// @param queue Where the work is queued.
+void limit_speeds(std::span<solver_body> bodies, scalar h, scalar max_linear_speed, stage_queue &queue);
 
 } // namespace edyn
 

@@ -25,6 +25,8 @@ inline constexpr unsigned max_solver_substeps = 64;
 /// Most relax, position, restitution and individual restitution iterations their setters
 /// accept.
 inline constexpr unsigned max_solver_iterations = 64;
+/// Fastest speed set_max_linear_speed accepts, in m/s (a hundred kilometres per second).
+inline constexpr scalar max_linear_speed_limit = scalar(1e5);
 /// Most steps per update() set_max_steps_per_update accepts.
 inline constexpr unsigned max_steps_per_update_limit = 1000;
 
@@ -63,6 +65,13 @@ struct settings {
     /// Joint solver settings, including the position projection passes
     /// (set_solver_position_iterations).
     constraint_solver_settings joint{};
+    /// The fastest a body moves, in m/s; default 400 (set_max_linear_speed).
+    /// The solver lowers a faster body's velocity to it, keeping its direction, before every
+    /// sub-step's integration and at the end of the step; a body's rotation is likewise held to
+    /// a quarter turn per sub-step. Contacts and joints that cannot all hold (a bridge whose
+    /// anchors lie farther apart than its length) can throw bodies about, and a huge impulse
+    /// can be applied: the limits keep such bodies within the range of a float.
+    scalar max_linear_speed{400};
     /// Linear speed below which a body counts as at rest, in m/s; default 0.05.
     /// A body whose speeds stay below these for time_to_sleep seconds may sleep with its island.
     scalar sleep_linear_velocity{scalar(0.05)};

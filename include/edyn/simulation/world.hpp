@@ -232,6 +232,19 @@ unsigned get_solver_individual_restitution_iterations(const registry &registry);
 /// @throws std::invalid_argument Naming the function and the value, when `steps` is outside
 /// that range, or when the registry is not attached.
 void set_max_steps_per_update(registry &registry, unsigned steps);
+/// Sets the fastest a body moves (settings::max_linear_speed): the solver lowers a faster
+/// body's velocity to it, keeping its direction, so that constraints that cannot all hold, or a
+/// huge impulse, cannot drive a body out of the range of a float.
+/// @param registry An attached registry.
+/// @param speed The speed in m/s, in (0, `max_linear_speed_limit`]; default 400.
+/// @throws std::invalid_argument Naming the function and the value, when `speed` is outside
+/// that range (or not a number), or when the registry is not attached.
+void set_max_linear_speed(registry &registry, scalar speed);
+/// The fastest a body moves (set_max_linear_speed).
+/// @param registry An attached registry.
+/// @return The speed in m/s.
+/// @throws std::invalid_argument When the registry is not attached.
+scalar get_max_linear_speed(const registry &registry);
 
 /// Sets a function to run at the start of every step, before the broadphase.
 /// In asynchronous mode it runs in the simulation worker's thread, with the worker's registry,

@@ -278,12 +278,20 @@ TEST(world, settings_are_bounded) {
                    [&] { set_solver_individual_restitution_iterations(reg, 4000000000u); });
     expect_refused("set_max_steps_per_update", "4000000000",
                    [&] { set_max_steps_per_update(reg, 4000000000u); });
+    expect_refused("set_max_linear_speed", "0", [&] { set_max_linear_speed(reg, 0); });
+    expect_refused("set_max_linear_speed", "-3", [&] { set_max_linear_speed(reg, -3); });
+    expect_refused("set_max_linear_speed", "100001", [&] { set_max_linear_speed(reg, 100001); });
+    expect_refused("set_max_linear_speed", "nan",
+                   [&] { set_max_linear_speed(reg, std::numeric_limits<scalar>::quiet_NaN()); });
+    expect_refused("set_max_linear_speed", "inf",
+                   [&] { set_max_linear_speed(reg, std::numeric_limits<scalar>::infinity()); });
     auto &after = get_settings(reg);
     EXPECT_EQ(after.fixed_dt, before.fixed_dt);
     EXPECT_EQ(after.gravity, before.gravity);
     EXPECT_EQ(after.num_substeps, before.num_substeps);
     EXPECT_EQ(after.num_relax_iterations, before.num_relax_iterations);
     EXPECT_EQ(after.max_steps_per_update, before.max_steps_per_update);
+    EXPECT_EQ(after.max_linear_speed, before.max_linear_speed);
 
     // The bounds themselves are accepted.
     set_fixed_dt(reg, min_fixed_dt);
@@ -292,6 +300,8 @@ TEST(world, settings_are_bounded) {
     set_solver_substeps(reg, max_solver_substeps);
     set_solver_relax_iterations(reg, max_solver_iterations);
     set_max_steps_per_update(reg, max_steps_per_update_limit);
+    set_max_linear_speed(reg, max_linear_speed_limit);
+    EXPECT_EQ(get_max_linear_speed(reg), max_linear_speed_limit);
 }
 
 // A long pause over the smallest dt is more steps than an integer holds: the count is capped
