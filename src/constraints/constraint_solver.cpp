@@ -4,6 +4,7 @@
 #include "edyn/parallel/stage_queue.hpp"
 #include <algorithm>
 #include <array>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -117,21 +118,80 @@ void number_colour_blocks(constraint_solver_state &state) {
 
 } // namespace
 
+namespace {
+
+// Marks unprojected every joint of a group that holds a joint open wider than `max_gap` (see
+// constraint_solver_settings::max_projected_gap). A group is the moving bodies the joints link,
+// one to the next: bodies that do not move (the ground) join nothing.
+void leave_wide_groups_unprojected(constraint_solver_state &state, std::span<const solver_body> bodies,
+                                   scalar max_gap) {
+    if (state.gap_anchors.empty()) return;
+    auto &group_of = state.group_of;
+    group_of.resize(bodies.size());
+    std::iota(group_of.begin(), group_of.end(), solver_body_index(0));
+    auto root = [&](solver_body_index i) {
+        while (group_of[i] != i) {
+            group_of[i] = group_of[group_of[i]];
+            i = group_of[i];
+        }
+        return i;
+    };
+    for (auto *anchor : state.gap_anchors) {
+        auto a = anchor->body[0], b = anchor->body[1];
+        if (!moves(bodies[a]) || !moves(bodies[b])) continue;
+        auto ra = root(a), rb = root(b);
+        if (ra != rb) group_of[std::max(ra, rb)] = std::min(ra, rb);
+    }
+    state.group_wide.assign(bodies.size(), 0);
+    for (std::size_t k = 0; k < state.gap_anchors.size(); ++k) {
+        if (state.gaps[k] <= max_gap) continue;
+        for (auto body : state.gap_anchors[k]->body)
+            if (moves(bodies[body])) state.group_wide[root(body)] = 1;
+    }
+    for (auto *anchor : state.gap_anchors) {
+        auto body = moves(bodies[anchor->body[0]]) ? anchor->body[0] : anchor->body[1];
+        anchor->unprojected = moves(bodies[body]) && state.group_wide[root(body)];
+    }
+}
+
+} // namespace
+
 void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index,
-                        std::span<const solver_body> bodies) {
+                        std::span<const solver_body> bodies, scalar max_projected_gap) {
     state.colouring.reset(bodies);
     for_each_batch(state, [&](auto &batch) { gather_batch(registry, batch, body_index, state.colouring); });
     number_colour_blocks(state);
+
+    state.gap_anchors.clear();
+    state.gaps.clear();
+    for_each_batch(state, [&](auto &batch) {
+        for (auto &s : batch.solvers) {
+            if constexpr (requires { projected_pivots(s); }) {
+                if (auto *anchor = projected_pivots(s)) {
+                    state.gap_anchors.push_back(anchor);
+                    state.gaps.push_back(length(anchor->separation));
+                }
+            } else if constexpr (requires {
+                                     project_positions(s, std::span<solver_body>{}, scalar(1), scalar(1));
+                                 }) {
+                state.gap_anchors.push_back(&s.anchor);
+                state.gaps.push_back(projection_gap(s));
+            }
+        }
+    });
+    leave_wide_groups_unprojected(state, bodies, max_projected_gap);
 
     state.projected_pivots.clear();
     state.other_projected.clear();
     for_each_batch(state, [&](auto &batch) {
         for (auto &s : batch.solvers) {
             if constexpr (requires { projected_pivots(s); }) {
-                if (auto *anchor = projected_pivots(s)) state.projected_pivots.push_back(anchor);
+                auto *anchor = projected_pivots(s);
+                if (anchor && !anchor->unprojected) state.projected_pivots.push_back(anchor);
             } else if constexpr (requires {
                                      project_positions(s, std::span<solver_body>{}, scalar(1), scalar(1));
                                  }) {
+                if (s.anchor.unprojected) continue;
                 state.other_projected.push_back(s.anchor.body[0]);
                 state.other_projected.push_back(s.anchor.body[1]);
             }
@@ -187,6 +247,7 @@ constraint_solve_context make_constraint_solve_context(const constraint_solver_s
     ctx.joint = make_softness(hertz, settings.joint_damping_ratio, h);
     ctx.use_bias = use_bias;
     ctx.rigid_pivots = settings.position_projection > 0;
+    ctx.max_correction_speed = settings.max_correction_speed;
     ctx.restitution_threshold = settings.restitution_threshold;
     return ctx;
 }

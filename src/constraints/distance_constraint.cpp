@@ -1,4 +1,5 @@
 #include "edyn/constraints/distance_constraint.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace edyn {
@@ -50,9 +51,15 @@ void solve(distance_constraint_solver &s, std::span<solver_body> bodies,
     pivot_axis axis;
     if (!current_pivot_axis(s.anchor, axis)) return;
     auto row_ctx = ctx;
-    if (ctx.rigid_pivots) row_ctx.use_bias = false;
-    solve_equality_row(linear_jacobian(axis.direction, axis.pose.rA, axis.pose.rB), axis.length - s.distance,
-                       s.impulse, a, b, row_ctx);
+    if (ctx.rigid_pivots && !s.anchor.unprojected) row_ctx.use_bias = false;
+    // The soft correction of the length, no faster than max_correction_speed.
+    auto error = axis.length - s.distance;
+    if (row_ctx.use_bias && ctx.joint.bias_rate > 0) {
+        auto most = ctx.max_correction_speed / ctx.joint.bias_rate;
+        error = std::clamp(error, -most, most);
+    }
+    solve_equality_row(linear_jacobian(axis.direction, axis.pose.rA, axis.pose.rB), error, s.impulse, a, b,
+                       row_ctx);
 }
 
 void store_impulses(const distance_constraint_solver &s, distance_constraint &c) noexcept {

@@ -47,9 +47,12 @@ void solve_point_block(const joint_anchor &anchor, vector3 &impulse, solver_body
 
     auto v = relative_velocity(a, b, pose.rA, pose.rB);
     vector3 delta;
-    if (ctx.use_bias && !ctx.rigid_pivots) {
-        // The soft correction of the pivots' separation.
+    if (ctx.use_bias && (!ctx.rigid_pivots || anchor.unprojected)) {
+        // The soft correction of the pivots' separation, no faster than max_correction_speed.
         auto bias = pose.d * ctx.joint.bias_rate;
+        auto speed_sqr = length_sqr(bias);
+        if (speed_sqr > ctx.max_correction_speed * ctx.max_correction_speed)
+            bias *= ctx.max_correction_speed / std::sqrt(speed_sqr);
         delta = -(*mass * (v + bias)) * ctx.joint.mass_scale - impulse * ctx.joint.impulse_scale;
     } else {
         delta = -(*mass * v);

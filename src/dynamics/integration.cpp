@@ -10,11 +10,6 @@ constexpr std::uint32_t integrated_bodies_per_task = 1024;
 
 } // namespace
 
-void integrate_velocities(std::span<solver_body> bodies, scalar h, stage_queue &queue) {
-    queue.add_for(1u, std::uint32_t(bodies.size()), integrated_bodies_per_task,
-                  [bodies, h](std::uint32_t i) { bodies[i].linvel += bodies[i].acceleration * h; });
-}
-
 scalar max_angular_speed(scalar h) noexcept { return half_pi * scalar(0.5) / h; }
 
 void limit_speed(solver_body &body, scalar max_linear_speed, scalar max_angular) noexcept {
@@ -26,13 +21,26 @@ void limit_speed(solver_body &body, scalar max_linear_speed, scalar max_angular)
     if (angular_sqr > max_angular * max_angular) body.angvel *= max_angular / std::sqrt(angular_sqr);
 }
 
-void integrate_positions(std::span<solver_body> bodies, scalar h, scalar max_linear_speed,
-                         stage_queue &queue) {
+void integrate_velocities(std::span<solver_body> bodies, scalar h, scalar max_linear_speed,
+                          stage_queue &queue) {
     auto max_angular = max_angular_speed(h);
     queue.add_for(1u, std::uint32_t(bodies.size()), integrated_bodies_per_task,
                   [bodies, h, max_linear_speed, max_angular](std::uint32_t i) {
                       auto &body = bodies[i];
+                      body.linvel += body.acceleration * h;
                       limit_speed(body, max_linear_speed, max_angular);
+                  });
+}
+
+void integrate_positions(std::span<solver_body> bodies, scalar h, stage_queue &queue) {
+    auto max_angular = max_angular_speed(h);
+    queue.add_for(1u, std::uint32_t(bodies.size()), integrated_bodies_per_task,
+                  [bodies, h, max_angular](std::uint32_t i) {
+                      auto &body = bodies[i];
+                      auto speed_sqr = length_sqr(body.angvel);
+                      if (speed_sqr > max_angular * max_angular) {
+                          body.angvel *= max_angular / std::sqrt(speed_sqr);
+                      }
                       body.delta_position += body.linvel * h;
                       body.delta_rotation = integrate(body.delta_rotation, body.angvel, h);
                   });

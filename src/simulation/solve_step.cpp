@@ -336,7 +336,7 @@ void solve_constraints(world_state &world, const settings &settings) {
         settings.num_restitution_iterations > 0 && settings.num_individual_restitution_iterations > 0;
 
     for (unsigned i = 0; i < substeps; ++i) {
-        integrate_velocities(bodies, h, queue);
+        integrate_velocities(bodies, h, settings.max_linear_speed, queue);
         if (bounces) {
             queue.run(scheduler);
             if (restitution_solver) {
@@ -351,7 +351,7 @@ void solve_constraints(world_state &world, const settings &settings) {
         warm_start_contacts(contacts, bodies, queue);
         solve_joint_constraints(world.joints, bodies, biased, queue);
         solve_contacts(contacts, bodies, h, settings.contact, true, queue);
-        integrate_positions(bodies, h, settings.max_linear_speed, queue);
+        integrate_positions(bodies, h, queue);
         project_joint_positions(world.joints, bodies, settings.joint, queue);
         // Only integration and projection move bodies: the joints' rows measured now serve
         // every velocity pass until the next sub-step's integration.

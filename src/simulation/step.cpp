@@ -41,7 +41,8 @@ void run_step(registry &registry) {
     // 3. External forces: gravity becomes each body's acceleration for the sub-steps.
     gather_bodies(registry, world, settings);
     gather_contacts(registry, world);
-    gather_constraints(registry, world.joints, world.body_index, world.bodies);
+    gather_constraints(registry, world.joints, world.body_index, world.bodies,
+                       settings.joint.max_projected_gap);
     // 4. Restitution solver, then the constraint solver's sub-steps, which apply the impulses
     //    (5) and integrate velocities into positions and orientations (6).
     solve_constraints(world, settings);

@@ -74,6 +74,45 @@ TEST_F(point_joint, friction_torque_stops_a_spinning_body_at_the_rate_it_sets) {
     EXPECT_NEAR(angular(ball).y, 0, scalar(1e-3));
 }
 
+TEST_F(point_joint, a_joint_made_with_its_bodies_apart_draws_them_together_gently) {
+    // Two free boxes 3 m apart, joined at their facing corners by a ball joint, and two more
+    // welded (a generic constraint, every degree locked). The soft correction closes the gap
+    // at max_correction_speed: before, the projection shut it in one sub-step, throwing the
+    // boxes together at 100 m/s and leaving them spinning with hundreds of joules.
+    set_gravity(reg, vector3_zero);
+    auto box = [&](vector3 at) {
+        return make_rigidbody(reg, edyn::test::box_def({scalar(0.3), scalar(0.3), scalar(0.3)}, at, 1));
+    };
+    auto a = box({0, 2, 0}), b = box({3, 2, 1});
+    auto c = box({0, 2, 5}), d = box({3, 2, 6});
+    make_constraint<point_constraint>(reg, a, b, [](point_constraint &j) {
+        j.pivot[0] = {scalar(0.3), scalar(0.3), 0};
+        j.pivot[1] = {scalar(-0.3), scalar(-0.3), 0};
+    });
+    make_constraint<generic_constraint>(reg, c, d, [](generic_constraint &j) {
+        j.pivot[0] = {scalar(0.3), scalar(0.3), 0};
+        j.pivot[1] = {scalar(-0.3), scalar(-0.3), 0};
+    });
+    auto gap = [&](entity x, entity y) {
+        return distance(edyn::test::world_pivot(reg, x, {scalar(0.3), scalar(0.3), 0}),
+                        edyn::test::world_pivot(reg, y, {scalar(-0.3), scalar(-0.3), 0}));
+    };
+    auto max_correction = get_settings(reg).joint.max_correction_speed;
+    scalar fastest = 0;
+    for (int i = 0; i < 60 * 3; ++i) {
+        edyn::test::step(reg);
+        for (auto e : {a, b, c, d})
+            fastest = std::max(fastest, length(vel(e)));
+    }
+    EXPECT_LT(gap(a, b), scalar(0.001));
+    EXPECT_LT(gap(c, d), scalar(0.001));
+    // Each of a pair moves at about half the closing speed; what they spin is little.
+    EXPECT_LT(fastest, max_correction) << "a box moved at " << fastest << " m/s";
+    // Momentum is kept: each pair's centre stays where it was.
+    EXPECT_LT(distance((pos(a) + pos(b)) / 2, vector3{scalar(1.5), 2, scalar(0.5)}), scalar(0.01));
+    EXPECT_LT(distance((pos(c) + pos(d)) / 2, vector3{scalar(1.5), 2, scalar(5.5)}), scalar(0.01));
+}
+
 TEST_F(distance_joint, chain_of_twenty_keeps_every_length_within_half_a_percent) {
     // A straight chain released 30 degrees from the vertical, swinging for 5 s.
     const int links = 20;

@@ -1,5 +1,6 @@
 // Closed-form checks of single bodies: free fall, bounce, sliding, rolling.
 #include "behaviour_support.hpp"
+#include <edyn/dynamics/integration.hpp>
 #include <edyn_scenes/scenes.hpp>
 
 using namespace edyn;
@@ -47,6 +48,12 @@ TEST_F(free_fall, no_body_moves_faster_than_the_speed_limit) {
     EXPECT_NEAR(pos(fast).y, 10 + 40, 1e-3);
     EXPECT_NEAR(vel(slowed).z, 50, 1e-3);
     EXPECT_NEAR(pos(slowed).z, 50, 1e-3);
+    // A body spun at 1,000 rad/s turns at most a quarter turn per sub-step.
+    auto &settings = get_settings(reg);
+    auto max_turn = max_angular_speed(settings.fixed_dt / scalar(settings.num_substeps));
+    reg.replace<angvel>(slowed, vector3{0, 1000, 0});
+    run_for(0.1);
+    EXPECT_NEAR(reg.get<angvel>(slowed).y, max_turn, max_turn * 1e-5);
     // Back at the default, the same throw keeps 400 m/s.
     set_max_linear_speed(reg, 400);
     rigidbody_apply_impulse(reg, fast, {600, 800, 0}, vector3_zero);

@@ -24,6 +24,9 @@ struct constraint_solve_context {
     /// Pivots are kept together by position projection after each sub-step, so their velocity
     /// rows are rigid and carry no bias: a soft pivot would sag under the load of a chain.
     bool rigid_pivots{false};
+    /// The fastest the soft correction closes a joint's pivot gap, where it has one (m/s):
+    /// constraint_solver_settings::max_correction_speed.
+    scalar max_correction_speed{0};
     /// A limit reached slower than this does not bounce, so that resting limits stay quiet
     /// (m/s or rad/s, as the limit's coordinate).
     scalar restitution_threshold{0};
@@ -67,6 +70,10 @@ struct joint_anchor {
     /// joint_path_set): the next warm start keeps it instead of measuring K again (see
     /// warm_point_mass()).
     bool point_mass_current{false};
+    /// Whether the joint was left out of this step's position projection because its pivots lay
+    /// farther apart than constraint_solver_settings::max_projected_gap (see
+    /// gather_constraints()): its pivot rows then carry the soft position bias.
+    bool unprojected{false};
     /// The pivots at the bodies' present poses, kept by refresh_pose(). Only integration and
     /// position projection move bodies, so the solver refreshes it after them and the velocity
     /// passes between (relax, the next sub-step's warm start and biased pass) all read it.

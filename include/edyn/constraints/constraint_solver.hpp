@@ -44,6 +44,26 @@ struct constraint_solver_settings {
     /// 64 rag dolls of edyn-bench open their joints by at most 0.08 mm, with 2 by 0.4 mm.
     /// Default 3.
     unsigned position_projection_iterations{3};
+    /// When a joint's pivots lie farther apart than this at the start of a step (m; for a
+    /// distance constraint, when its length is off by more), the joints of its group (the
+    /// joints linking the bodies it moves, one to the next) are not projected that step: their
+    /// pivot rows carry the soft correction of `joint_hertz` instead, as they do with the
+    /// projection off. Projecting such a gap shut in one sub-step turns the bodies by large angles, and
+    /// where the gaps cannot all close (a bridge whose posts stand farther apart than its deck
+    /// is long, a body pinned to a kinematic body moving away) it threw them about, faster every
+    /// sub-step, while the soft correction lets them settle; projecting only some joints of
+    /// such a group still shook it. Joints in use open far less
+    /// (the chain and rag dolls of edyn-bench by at most a few millimetres); a joint made with
+    /// its pivots apart is drawn together by the spring. Default 0.05 m; infinity projects
+    /// every joint.
+    scalar max_projected_gap{scalar(0.05)};
+    /// The fastest the soft correction closes a joint's pivot gap (m/s), where the pivot rows
+    /// carry it (joints left out of the projection, or all of them with `position_projection`
+    /// at 0). A spring of `joint_hertz` closing a gap of metres would fling the bodies together
+    /// at hundreds of m/s and leave them spinning; held to this speed, a joint made with its
+    /// bodies 3 m apart draws them together in about a second. Default 3, as contacts'
+    /// max_push_out_velocity.
+    scalar max_correction_speed{3};
 };
 
 /// The constraints of one type as the solver sees them this step, and where they came from, in
@@ -97,6 +117,14 @@ struct constraint_solver_state {
     std::vector<joint_anchor *> projected_pivots;
     /// Scratch for building `paths`: the bodies of the other joints the projection moves.
     std::vector<solver_body_index> other_projected;
+    /// Scratch for deciding which joints the projection leaves out (see
+    /// constraint_solver_settings::max_projected_gap): every joint it could take, how far each
+    /// is open, and the groups of moving bodies joined by them (a union-find forest over the
+    /// solver bodies, with whether each group holds a joint open too wide).
+    std::vector<joint_anchor *> gap_anchors;
+    std::vector<scalar> gaps;                ///< How far each of `gap_anchors` is open (m).
+    std::vector<solver_body_index> group_of; ///< Each body's parent in the forest.
+    std::vector<std::uint8_t> group_wide;    ///< Per root: whether its group has a wide joint.
 };
 
 /// Whether the state holds any joint to solve.
@@ -124,8 +152,10 @@ inline solver_body_index body_index_of(body_index_map body_index, entity e) noex
 /// @param state The joints' state, overwritten.
 /// @param body_index The step's map from entity index to solver body index.
 /// @param bodies The step's solver bodies; they must outlive the state's use this step.
+/// @param max_projected_gap Joints open wider than this (m) are left out of the position
+/// projection this step (constraint_solver_settings::max_projected_gap).
 void gather_constraints(const registry &registry, constraint_solver_state &state, body_index_map body_index,
-                        std::span<const solver_body> bodies);
+                        std::span<const solver_body> bodies, scalar max_projected_gap);
 
 /// The context of one kind of pass over the joints, from the settings and the sub-step.
 /// The joint frequency is capped at `max_hertz_ratio / h`.

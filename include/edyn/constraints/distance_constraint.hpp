@@ -2,6 +2,7 @@
 #define EDYN_CONSTRAINTS_DISTANCE_CONSTRAINT_HPP
 
 #include "edyn/constraints/constraint_base.hpp"
+#include <cmath>
 #include <span>
 
 namespace edyn {
@@ -53,7 +54,8 @@ distance_constraint_solver make_constraint_solver(const registry &registry, cons
 /// @param bodies The step's solver bodies.
 void warm_start(distance_constraint_solver &s, std::span<solver_body> bodies) noexcept;
 /// One pass over the joint's row: the pivots' distance is held at `distance`. With rigid pivots
-/// (position projection on) the row carries no position bias. Does nothing while the pivots
+/// (position projection on) the row carries no position bias, unless the joint was left out of
+/// the projection (joint_anchor::unprojected). Does nothing while the pivots
 /// coincide, as no direction exists.
 /// @param s The solver state; its impulse accumulates.
 /// @param bodies The step's solver bodies.
@@ -64,14 +66,22 @@ void solve(distance_constraint_solver &s, std::span<solver_body> bodies,
 /// @param s The solver state after the step.
 /// @param c The constraint component.
 void store_impulses(const distance_constraint_solver &s, distance_constraint &c) noexcept;
+/// How far the joint's length is off at the start of the step (m), which decides whether the
+/// position projection takes it (constraint_solver_settings::max_projected_gap).
+/// @param s The solver state, as made this step.
+inline scalar projection_gap(const distance_constraint_solver &s) noexcept {
+    return std::abs(length(s.anchor.separation) - s.distance);
+}
 /// Position projection along the pivots' direction after a sub-step's integration (see
-/// project_distance()).
+/// project_distance()); nothing for a joint left out of the projection this step
+/// (joint_anchor::unprojected).
 /// @param s The solver state.
 /// @param bodies The step's solver bodies.
 /// @param fraction Share of the length error removed, in [0, 1].
 /// @param inv_h 1 / h of the sub-step (1/s).
 inline void project_positions(distance_constraint_solver &s, std::span<solver_body> bodies, scalar fraction,
                               scalar inv_h) noexcept {
+    if (s.anchor.unprojected) return;
     project_distance(s.anchor, s.distance, bodies[s.anchor.body[0]], bodies[s.anchor.body[1]], fraction,
                      inv_h);
 }

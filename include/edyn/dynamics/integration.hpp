@@ -7,16 +7,6 @@
 
 namespace edyn {
 
-/// Queues adding each body's acceleration (gravity) over the sub-step `h` to its linear velocity.
-/// Index 0, the shared static body, is left alone. Each integration is queued as one stage
-/// (see stage_queue), whose blocks of bodies may run on different threads; each body's result
-/// is the same either way. The step queues it at the start of every sub-step, before the
-/// constraints are solved. The storage behind `bodies` must outlive the queue's run.
-/// @param bodies The solver's body array, as gathered for this step (index 0 is the static body).
-/// @param h Length of the sub-step, in seconds.
-/// @param queue Where the work is queued.
-void integrate_velocities(std::span<solver_body> bodies, scalar h, stage_queue &queue);
-
 /// The fastest a body may turn in one sub-step of length `h`, in rad/s: a quarter turn per
 /// sub-step (π/4 radians), beyond which its orientation would alias.
 /// @param h Length of the sub-step, in seconds.
@@ -29,18 +19,31 @@ scalar max_angular_speed(scalar h) noexcept;
 /// @param max_angular The fastest angular speed, in rad/s (max_angular_speed()).
 void limit_speed(solver_body &body, scalar max_linear_speed, scalar max_angular) noexcept;
 
-/// Queues advancing each body's accumulated motion over the sub-step `h`.
-/// Semi-implicit Euler: the velocities just solved move the bodies, adding to
-/// `solver_body::delta_position` and `solver_body::delta_rotation` (the registry is written
-/// later, by write_back). Index 0, the shared static body, is left alone. The speeds are first
-/// lowered to the limits (limit_speed): no body moves faster than `max_linear_speed` nor turns
-/// more than π/4 radians in one sub-step, which would alias its orientation.
+/// Queues adding each body's acceleration (gravity) over the sub-step `h` to its linear velocity,
+/// then lowering its speeds to the limits (limit_speed(): `max_linear_speed`, and
+/// max_angular_speed(h)). Index 0, the shared static body, is left alone. Each integration is
+/// queued as one stage (see stage_queue), whose blocks of bodies may run on different threads;
+/// each body's result is the same either way. The step queues it at the start of every
+/// sub-step, before the constraints are solved: the limits apply to the velocities a sub-step
+/// starts from, not to the passing push of the biased pass, which the relax pass takes back.
+/// The storage behind `bodies` must outlive the queue's run.
 /// @param bodies The solver's body array, as gathered for this step (index 0 is the static body).
 /// @param h Length of the sub-step, in seconds.
 /// @param max_linear_speed The fastest linear speed, in m/s (settings::max_linear_speed).
 /// @param queue Where the work is queued.
-void integrate_positions(std::span<solver_body> bodies, scalar h, scalar max_linear_speed,
-                         stage_queue &queue);
+void integrate_velocities(std::span<solver_body> bodies, scalar h, scalar max_linear_speed,
+                          stage_queue &queue);
+
+/// Queues advancing each body's accumulated motion over the sub-step `h`.
+/// Semi-implicit Euler: the velocities just solved move the bodies, adding to
+/// `solver_body::delta_position` and `solver_body::delta_rotation` (the registry is written
+/// later, by write_back). Index 0, the shared static body, is left alone. Angular speed is
+/// capped so that no body turns more than π/4 radians in one sub-step, which would alias its
+/// orientation; the cap lowers the body's `angvel` itself.
+/// @param bodies The solver's body array, as gathered for this step (index 0 is the static body).
+/// @param h Length of the sub-step, in seconds.
+/// @param queue Where the work is queued.
+void integrate_positions(std::span<solver_body> bodies, scalar h, stage_queue &queue);
 
 /// Queues lowering every body's speeds to the limits (limit_speed), as integrate_positions
 /// does. The step queues it last, so that no body leaves a step faster than the limits.

@@ -66,9 +66,9 @@ struct settings {
     /// (set_solver_position_iterations).
     constraint_solver_settings joint{};
     /// The fastest a body moves, in m/s; default 400 (set_max_linear_speed).
-    /// The solver lowers a faster body's velocity to it, keeping its direction, before every
-    /// sub-step's integration and at the end of the step; a body's rotation is likewise held to
-    /// a quarter turn per sub-step. Contacts and joints that cannot all hold (a bridge whose
+    /// The solver lowers a faster body's velocity to it, keeping its direction, at the start of
+    /// every sub-step and at the end of the step; a body's rotation is likewise held to a quarter
+    /// turn per sub-step. Contacts and joints that cannot all hold (a bridge whose
     /// anchors lie farther apart than its length) can throw bodies about, and a huge impulse
     /// can be applied: the limits keep such bodies within the range of a float.
     scalar max_linear_speed{400};
