@@ -66,6 +66,8 @@ void apply(world &w, const operation &op) {
     auto &reg = w.reg;
     auto e = w.body(op.pick), f = w.body(op.other);
     auto dynamic = e != null && reg.all_of<dynamic_tag>(e);
+    // Two bodies a joint may join: distinct, and one of them dynamic.
+    auto joinable = e != null && f != null && e != f && (dynamic || reg.all_of<dynamic_tag>(f));
     auto h = op.size;
     switch (op.kind) {
     case 0:
@@ -118,7 +120,7 @@ void apply(world &w, const operation &op) {
         }
         break;
     case 6:
-        if (e != null && f != null && e != f && (dynamic || reg.all_of<dynamic_tag>(f)))
+        if (joinable)
             w.joints.push_back(make_constraint<distance_constraint>(
                 reg, e, f, [&](distance_constraint &c) { c.distance = 4 * h; }));
         break;
@@ -146,7 +148,7 @@ void apply(world &w, const operation &op) {
         if (e != null && f != null && e != f) exclude_collision(reg, e, f);
         break;
     case 12:
-        if (e != null && f != null && e != f && (dynamic || reg.all_of<dynamic_tag>(f)))
+        if (joinable)
             w.joints.push_back(make_constraint<hinge_constraint>(reg, e, f, [&](hinge_constraint &c) {
                 c.pivot[0] = {h, 0, 0};
                 c.pivot[1] = {-h, 0, 0};
@@ -158,14 +160,14 @@ void apply(world &w, const operation &op) {
             }));
         break;
     case 13:
-        if (e != null && f != null && e != f && (dynamic || reg.all_of<dynamic_tag>(f)))
+        if (joinable)
             w.joints.push_back(make_constraint<point_constraint>(reg, e, f, [&](point_constraint &c) {
                 c.pivot[0] = {0, h, 0};
                 c.pivot[1] = {0, -h, 0};
             }));
         break;
     case 14:
-        if (e != null && f != null && e != f && (dynamic || reg.all_of<dynamic_tag>(f)))
+        if (joinable)
             w.joints.push_back(make_constraint<generic_constraint>(reg, e, f, [&](generic_constraint &c) {
                 c.pivot[0] = {0, h, 0};
                 c.pivot[1] = {0, -h, 0};
