@@ -277,7 +277,8 @@ bool acceptable_settings(const packet::server_settings &s) {
     return s.fixed_dt >= min_fixed_dt && s.fixed_dt <= max_fixed_dt && isfinite(s.gravity) &&
            length(s.gravity) <= max_gravity && s.num_substeps >= 1 && s.num_substeps <= max_solver_substeps &&
            iterations(s.num_relax_iterations) && iterations(s.num_restitution_iterations) &&
-           iterations(s.num_individual_restitution_iterations);
+           iterations(s.num_individual_restitution_iterations) && iterations(s.num_position_iterations) &&
+           s.max_linear_speed > 0 && s.max_linear_speed <= max_linear_speed_limit;
 }
 
 void apply_server_settings(registry &registry, const packet::server_settings &s) {
@@ -291,6 +292,8 @@ void apply_server_settings(registry &registry, const packet::server_settings &s)
     set_solver_relax_iterations(registry, s.num_relax_iterations);
     set_solver_restitution_iterations(registry, s.num_restitution_iterations);
     set_solver_individual_restitution_iterations(registry, s.num_individual_restitution_iterations);
+    set_solver_position_iterations(registry, s.num_position_iterations);
+    set_max_linear_speed(registry, s.max_linear_speed);
 }
 
 // An entry is recorded when any of the client's inputs changed, and holds all of them: the

@@ -161,14 +161,9 @@ packet::server_settings current_settings(const registry &registry) {
             s.num_substeps,
             s.num_relax_iterations,
             s.num_restitution_iterations,
-            s.num_individual_restitution_iterations};
-}
-
-bool same_settings(const packet::server_settings &a, const packet::server_settings &b) {
-    return a.fixed_dt == b.fixed_dt && a.gravity == b.gravity && a.num_substeps == b.num_substeps &&
-           a.num_relax_iterations == b.num_relax_iterations &&
-           a.num_restitution_iterations == b.num_restitution_iterations &&
-           a.num_individual_restitution_iterations == b.num_individual_restitution_iterations;
+            s.num_individual_restitution_iterations,
+            s.joint.position_projection_iterations,
+            s.max_linear_speed};
 }
 
 bool owns(const remote_client &rc, entity e) {
@@ -608,7 +603,7 @@ void update_network_server(registry &registry) {
     types.now = now;
 
     auto settings = current_settings(registry);
-    auto settings_changed = !same_settings(settings, ctx.settings_sent);
+    auto settings_changed = settings != ctx.settings_sent;
     ctx.settings_sent = settings;
 
     ctx.boxes_ready = false;

@@ -61,7 +61,9 @@ packet::server_settings default_settings() {
             s.num_substeps,
             s.num_relax_iterations,
             s.num_restitution_iterations,
-            s.num_individual_restitution_iterations};
+            s.num_individual_restitution_iterations,
+            s.joint.position_projection_iterations,
+            s.max_linear_speed};
 }
 
 // A pool of values of the networked type at `index`, each for an entity of the packet's list.
@@ -120,6 +122,11 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
     add("NaN dt", [](auto &s) { s.fixed_dt = std::numeric_limits<scalar>::quiet_NaN(); });
     add("huge gravity", [](auto &s) { s.gravity = {0, scalar(-4e34), 0}; });
     add("NaN gravity", [](auto &s) { s.gravity = {std::numeric_limits<scalar>::quiet_NaN(), 0, 0}; });
+    add("position iterations", [](auto &s) { s.num_position_iterations = max_solver_iterations + 1; });
+    add("zero speed limit", [](auto &s) { s.max_linear_speed = 0; });
+    add("negative speed limit", [](auto &s) { s.max_linear_speed = -400; });
+    add("huge speed limit", [](auto &s) { s.max_linear_speed = max_linear_speed_limit * 2; });
+    add("NaN speed limit", [](auto &s) { s.max_linear_speed = std::numeric_limits<scalar>::quiet_NaN(); });
 
     lone_client c;
     auto before = get_settings(c.reg);
@@ -136,6 +143,8 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
         ASSERT_EQ(now.num_individual_restitution_iterations, before.num_individual_restitution_iterations);
         ASSERT_EQ(now.fixed_dt, before.fixed_dt);
         ASSERT_EQ(now.gravity, before.gravity);
+        ASSERT_EQ(now.joint.position_projection_iterations, before.joint.position_projection_iterations);
+        ASSERT_EQ(now.max_linear_speed, before.max_linear_speed);
     }
     // The client still steps, at once.
     make_rigidbody(c.reg, box_at({0, 1, 0}));
@@ -150,12 +159,16 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
     good.gravity = {0, scalar(-1.62), 0};
     good.num_substeps = max_solver_substeps;
     good.num_relax_iterations = 2;
+    good.num_position_iterations = 0;
+    good.max_linear_speed = max_linear_speed_limit;
     c.receive({good});
     EXPECT_EQ(c.rejected().out_of_range, refused);
     EXPECT_EQ(get_fixed_dt(c.reg), scalar(1) / 120);
     EXPECT_EQ(get_gravity(c.reg).y, scalar(-1.62));
     EXPECT_EQ(get_solver_substeps(c.reg), max_solver_substeps);
     EXPECT_EQ(get_solver_relax_iterations(c.reg), 2u);
+    EXPECT_EQ(get_solver_position_iterations(c.reg), 0u);
+    EXPECT_EQ(get_max_linear_speed(c.reg), max_linear_speed_limit);
 }
 
 TEST(network_bounds, playout_delays_and_times_out_of_range_are_refused) {

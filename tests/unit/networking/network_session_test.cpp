@@ -325,6 +325,45 @@ TEST(network_session, constraints_reach_the_client_between_its_bodies) {
     EXPECT_EQ(con.pivot[0], (vector3{0.75, 0, 0}));
 }
 
+// Every setting the setters of world.hpp change in the step reaches a client, when it joins
+// and again when the server changes it: a client extrapolating with settings of its own would
+// predict motion the server never makes.
+TEST(network_session, the_server_s_step_settings_reach_the_client_and_follow_its_changes) {
+    net_harness h(&session_setup);
+    auto change_all = [&](unsigned n, scalar speed, scalar g) {
+        set_gravity(h.server, {0, -g, 0});
+        set_solver_substeps(h.server, n);
+        set_solver_relax_iterations(h.server, n + 1);
+        set_solver_restitution_iterations(h.server, n + 2);
+        set_solver_individual_restitution_iterations(h.server, n + 3);
+        set_solver_position_iterations(h.server, n + 4);
+        set_max_linear_speed(h.server, speed);
+    };
+    auto expect_same = [&](const registry &client, const char *when) {
+        SCOPED_TRACE(when);
+        auto &s = get_settings(h.server), &c = get_settings(client);
+        EXPECT_EQ(c.fixed_dt, s.fixed_dt);
+        EXPECT_EQ(c.gravity, s.gravity);
+        EXPECT_EQ(c.num_substeps, s.num_substeps);
+        EXPECT_EQ(c.num_relax_iterations, s.num_relax_iterations);
+        EXPECT_EQ(c.num_restitution_iterations, s.num_restitution_iterations);
+        EXPECT_EQ(c.num_individual_restitution_iterations, s.num_individual_restitution_iterations);
+        EXPECT_EQ(c.joint.position_projection_iterations, s.joint.position_projection_iterations);
+        EXPECT_EQ(c.max_linear_speed, s.max_linear_speed);
+    };
+    // Values unlike a client's defaults, set before the client joins...
+    change_all(3, 120, scalar(1.62));
+    auto &c = h.add_client({.latency = 0.03});
+    ASSERT_NE(get_settings(c.reg).max_linear_speed, scalar(120));
+    ASSERT_NE(get_solver_position_iterations(c.reg), 7u);
+    h.run(0.5);
+    expect_same(c.reg, "on joining");
+    // ...and changed while it plays.
+    change_all(9, 55, scalar(3.7));
+    h.run(0.5);
+    expect_same(c.reg, "after a change");
+}
+
 TEST(network_session, corrections_are_shown_gradually_and_decay) {
     net_harness h(&session_setup);
     auto def = rigidbody_def{};

@@ -77,6 +77,8 @@ inline void fill(packet::server_settings &p) {
     p.num_relax_iterations = 3;
     p.num_restitution_iterations = 8;
     p.num_individual_restitution_iterations = 10;
+    p.num_position_iterations = 5;
+    p.max_linear_speed = 250;
 }
 
 inline void fill(packet::set_playout_delay &p) { p.value = 0.15; }

@@ -18,8 +18,10 @@ struct client_created {
 };
 
 /// Server to client: settings the client's simulation must share with the server's for its
-/// extrapolation to agree. Sent when the client is made and whenever they change; the client
-/// applies them.
+/// extrapolation to agree: what the setters of world.hpp change in the step. Sent when the client
+/// is made and whenever they change; the client applies them, or refuses the packet whole when a
+/// value is outside what those setters accept. Pausing, the step callbacks and
+/// max_steps_per_update stay the client's own.
 struct server_settings {
     scalar fixed_dt{};                    ///< Fixed time step in seconds (`settings::fixed_dt`).
     vector3 gravity{};                    ///< Default gravity in m/s² (`settings::gravity`).
@@ -30,6 +32,13 @@ struct server_settings {
     /// Individual iterations of the restitution solver
     /// (`settings::num_individual_restitution_iterations`).
     std::uint32_t num_individual_restitution_iterations{};
+    /// Position projection passes per sub-step (`settings::joint`,
+    /// set_solver_position_iterations).
+    std::uint32_t num_position_iterations{};
+    /// The fastest a body moves, in m/s (`settings::max_linear_speed`).
+    scalar max_linear_speed{};
+
+    bool operator==(const server_settings &) const = default;
 };
 
 /// Client to server, for clock synchronisation: the client asks for the server's time; the
@@ -64,7 +73,8 @@ void serialize(Archive &archive, client_created &packet) {
 template<typename Archive>
 void serialize(Archive &archive, server_settings &packet) {
     archive(packet.fixed_dt, packet.gravity, packet.num_substeps, packet.num_relax_iterations,
-            packet.num_restitution_iterations, packet.num_individual_restitution_iterations);
+            packet.num_restitution_iterations, packet.num_individual_restitution_iterations,
+            packet.num_position_iterations, packet.max_linear_speed);
 }
 
 /// Writes or reads a time_request packet.
