@@ -270,30 +270,28 @@ void receive_time(registry &registry, client_context &ctx, const packet::time_re
     ctx.synchronised = true;
 }
 
-// Within the ranges the world's setters accept (settings.hpp): a server's own settings always
-// are, so settings outside them are refused whole rather than half applied.
-bool acceptable_settings(const packet::server_settings &s) {
-    auto iterations = [](std::uint32_t n) { return n <= max_solver_iterations; };
-    return s.fixed_dt >= min_fixed_dt && s.fixed_dt <= max_fixed_dt && isfinite(s.gravity) &&
-           length(s.gravity) <= max_gravity && s.num_substeps >= 1 && s.num_substeps <= max_solver_substeps &&
-           iterations(s.num_relax_iterations) && iterations(s.num_restitution_iterations) &&
-           iterations(s.num_individual_restitution_iterations) && iterations(s.num_position_iterations) &&
-           s.max_linear_speed > 0 && s.max_linear_speed <= max_linear_speed_limit;
-}
-
+// The server's settings, applied whole or, when one is out of range (validate_settings; a
+// server's own settings never are), not at all.
 void apply_server_settings(registry &registry, const packet::server_settings &s) {
-    if (!acceptable_settings(s)) {
+    auto candidate = get_settings(registry);
+    candidate.fixed_dt = s.fixed_dt;
+    candidate.gravity = s.gravity;
+    candidate.num_substeps = s.num_substeps;
+    candidate.num_relax_iterations = s.num_relax_iterations;
+    candidate.num_restitution_iterations = s.num_restitution_iterations;
+    candidate.num_individual_restitution_iterations = s.num_individual_restitution_iterations;
+    candidate.max_linear_speed = s.max_linear_speed;
+    candidate.contact = s.contact;
+    candidate.joint = s.joint;
+    try {
+        validate_settings(candidate, "client_receive_packet");
+    } catch (const std::invalid_argument &) {
         rejections(registry).out_of_range += 1;
         return;
     }
-    set_fixed_dt(registry, s.fixed_dt);
+    // Through the setter, which wakes resting bodies to the new gravity.
     set_gravity(registry, s.gravity);
-    set_solver_substeps(registry, s.num_substeps);
-    set_solver_relax_iterations(registry, s.num_relax_iterations);
-    set_solver_restitution_iterations(registry, s.num_restitution_iterations);
-    set_solver_individual_restitution_iterations(registry, s.num_individual_restitution_iterations);
-    set_solver_position_iterations(registry, s.num_position_iterations);
-    set_max_linear_speed(registry, s.max_linear_speed);
+    registry.ctx().get<settings>() = candidate;
 }
 
 // An entry is recorded when any of the client's inputs changed, and holds all of them: the

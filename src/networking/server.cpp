@@ -162,8 +162,9 @@ packet::server_settings current_settings(const registry &registry) {
             s.num_relax_iterations,
             s.num_restitution_iterations,
             s.num_individual_restitution_iterations,
-            s.joint.position_projection_iterations,
-            s.max_linear_speed};
+            s.max_linear_speed,
+            s.contact,
+            s.joint};
 }
 
 bool owns(const remote_client &rc, entity e) {

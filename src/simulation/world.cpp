@@ -170,6 +170,7 @@ void detach(registry &registry) {
 
 void step_simulation(registry &registry) {
     world(registry, "step_simulation");
+    validate_settings(registry.ctx().get<settings>(), "step_simulation");
     if (auto *async = registry.ctx().find<async_execution>()) {
         async->step_simulation(registry);
         return;
@@ -216,6 +217,7 @@ scalar present_fraction(const world_state &w, const settings &s) {
 void update(registry &registry, double time) {
     if (!std::isfinite(time)) invalid("update", "time must be finite, got " + std::to_string(time));
     auto &w = world(registry, "update");
+    validate_settings(registry.ctx().get<settings>(), "update");
     if (auto *async = registry.ctx().find<async_execution>()) {
         async->update(registry, time);
         return;

@@ -64,6 +64,9 @@ struct constraint_solver_settings {
     /// bodies 3 m apart draws them together in about a second. Default 3, as contacts'
     /// max_push_out_velocity.
     scalar max_correction_speed{3};
+
+    /// Whether every field is the same.
+    bool operator==(const constraint_solver_settings &) const = default;
 };
 
 /// The constraints of one type as the solver sees them this step, and where they came from, in

@@ -238,6 +238,9 @@ struct contact_solver_settings {
     /// Approach speed below which restitution is ignored, so resting bodies do not jitter.
     /// In m/s; default 0.5.
     scalar restitution_threshold{scalar(0.5)};
+
+    /// Whether every field is the same.
+    bool operator==(const contact_solver_settings &) const = default;
 };
 
 /// Computes tangent frames, effective masses and starting normal velocities; call after the

@@ -62,8 +62,9 @@ packet::server_settings default_settings() {
             s.num_relax_iterations,
             s.num_restitution_iterations,
             s.num_individual_restitution_iterations,
-            s.joint.position_projection_iterations,
-            s.max_linear_speed};
+            s.max_linear_speed,
+            s.contact,
+            s.joint};
 }
 
 // A pool of values of the networked type at `index`, each for an entity of the packet's list.
@@ -122,7 +123,13 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
     add("NaN dt", [](auto &s) { s.fixed_dt = std::numeric_limits<scalar>::quiet_NaN(); });
     add("huge gravity", [](auto &s) { s.gravity = {0, scalar(-4e34), 0}; });
     add("NaN gravity", [](auto &s) { s.gravity = {std::numeric_limits<scalar>::quiet_NaN(), 0, 0}; });
-    add("position iterations", [](auto &s) { s.num_position_iterations = max_solver_iterations + 1; });
+    add("position iterations",
+        [](auto &s) { s.joint.position_projection_iterations = max_solver_iterations + 1; });
+    add("NaN contact frequency",
+        [](auto &s) { s.contact.contact_hertz = std::numeric_limits<scalar>::quiet_NaN(); });
+    add("negative push-out", [](auto &s) { s.contact.max_push_out_velocity = -3; });
+    add("no frequency cap", [](auto &s) { s.joint.max_hertz_ratio = 0; });
+    add("negative correction speed", [](auto &s) { s.joint.max_correction_speed = -3; });
     add("zero speed limit", [](auto &s) { s.max_linear_speed = 0; });
     add("negative speed limit", [](auto &s) { s.max_linear_speed = -400; });
     add("huge speed limit", [](auto &s) { s.max_linear_speed = max_linear_speed_limit * 2; });
@@ -143,8 +150,9 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
         ASSERT_EQ(now.num_individual_restitution_iterations, before.num_individual_restitution_iterations);
         ASSERT_EQ(now.fixed_dt, before.fixed_dt);
         ASSERT_EQ(now.gravity, before.gravity);
-        ASSERT_EQ(now.joint.position_projection_iterations, before.joint.position_projection_iterations);
         ASSERT_EQ(now.max_linear_speed, before.max_linear_speed);
+        ASSERT_EQ(now.contact, before.contact);
+        ASSERT_EQ(now.joint, before.joint);
     }
     // The client still steps, at once.
     make_rigidbody(c.reg, box_at({0, 1, 0}));
@@ -159,7 +167,9 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
     good.gravity = {0, scalar(-1.62), 0};
     good.num_substeps = max_solver_substeps;
     good.num_relax_iterations = 2;
-    good.num_position_iterations = 0;
+    good.joint.position_projection_iterations = 0;
+    good.joint.max_projected_gap = std::numeric_limits<scalar>::infinity();
+    good.contact.contact_hertz = 30;
     good.max_linear_speed = max_linear_speed_limit;
     c.receive({good});
     EXPECT_EQ(c.rejected().out_of_range, refused);
@@ -168,6 +178,8 @@ TEST(network_bounds, server_settings_out_of_range_are_refused_whole) {
     EXPECT_EQ(get_solver_substeps(c.reg), max_solver_substeps);
     EXPECT_EQ(get_solver_relax_iterations(c.reg), 2u);
     EXPECT_EQ(get_solver_position_iterations(c.reg), 0u);
+    EXPECT_EQ(get_settings(c.reg).joint.max_projected_gap, std::numeric_limits<scalar>::infinity());
+    EXPECT_EQ(get_settings(c.reg).contact.contact_hertz, scalar(30));
     EXPECT_EQ(get_max_linear_speed(c.reg), max_linear_speed_limit);
 }
 

@@ -325,9 +325,9 @@ TEST(network_session, constraints_reach_the_client_between_its_bodies) {
     EXPECT_EQ(con.pivot[0], (vector3{0.75, 0, 0}));
 }
 
-// Every setting the setters of world.hpp change in the step reaches a client, when it joins
-// and again when the server changes it: a client extrapolating with settings of its own would
-// predict motion the server never makes.
+// Every setting the setters of world.hpp change in the step, and the contact and joint solvers'
+// settings, reach a client when it joins and again when the server changes them: a client
+// extrapolating with settings of its own would predict motion the server never makes.
 TEST(network_session, the_server_s_step_settings_reach_the_client_and_follow_its_changes) {
     net_harness h(&session_setup);
     auto change_all = [&](unsigned n, scalar speed, scalar g) {
@@ -338,6 +338,10 @@ TEST(network_session, the_server_s_step_settings_reach_the_client_and_follow_its
         set_solver_individual_restitution_iterations(h.server, n + 3);
         set_solver_position_iterations(h.server, n + 4);
         set_max_linear_speed(h.server, speed);
+        // Fields without a setter, changed in place.
+        auto &in_place = h.server.ctx().get<settings>();
+        in_place.contact.contact_hertz = scalar(10 * n);
+        in_place.joint.max_correction_speed = speed / 10;
     };
     auto expect_same = [&](const registry &client, const char *when) {
         SCOPED_TRACE(when);
@@ -348,8 +352,9 @@ TEST(network_session, the_server_s_step_settings_reach_the_client_and_follow_its
         EXPECT_EQ(c.num_relax_iterations, s.num_relax_iterations);
         EXPECT_EQ(c.num_restitution_iterations, s.num_restitution_iterations);
         EXPECT_EQ(c.num_individual_restitution_iterations, s.num_individual_restitution_iterations);
-        EXPECT_EQ(c.joint.position_projection_iterations, s.joint.position_projection_iterations);
         EXPECT_EQ(c.max_linear_speed, s.max_linear_speed);
+        EXPECT_EQ(c.contact, s.contact);
+        EXPECT_EQ(c.joint, s.joint);
     };
     // Values unlike a client's defaults, set before the client joins...
     change_all(3, 120, scalar(1.62));

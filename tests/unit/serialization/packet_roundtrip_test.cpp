@@ -40,8 +40,8 @@ auto fields(const packet::time_request &p) { return std::tie(p.id); }
 auto fields(const packet::time_response &p) { return std::tie(p.id, p.timestamp); }
 auto fields(const packet::server_settings &p) {
     return std::tie(p.fixed_dt, p.gravity, p.num_substeps, p.num_relax_iterations,
-                    p.num_restitution_iterations, p.num_individual_restitution_iterations,
-                    p.num_position_iterations, p.max_linear_speed);
+                    p.num_restitution_iterations, p.num_individual_restitution_iterations, p.max_linear_speed,
+                    p.contact, p.joint);
 }
 auto fields(const packet::set_playout_delay &p) { return std::tie(p.value); }
 auto fields(const packet::client_created &p) { return std::tie(p.client_entity); }

@@ -77,8 +77,9 @@ inline void fill(packet::server_settings &p) {
     p.num_relax_iterations = 3;
     p.num_restitution_iterations = 8;
     p.num_individual_restitution_iterations = 10;
-    p.num_position_iterations = 5;
     p.max_linear_speed = 250;
+    p.contact = {61, 31, scalar(1.5), scalar(0.2), 2, scalar(0.4)};
+    p.joint = {59, scalar(0.9), scalar(0.3), scalar(0.2), scalar(0.8), 5, scalar(0.07), 4};
 }
 
 inline void fill(packet::set_playout_delay &p) { p.value = 0.15; }

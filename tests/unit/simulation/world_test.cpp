@@ -304,6 +304,78 @@ TEST(world, settings_are_bounded) {
     EXPECT_EQ(get_max_linear_speed(reg), max_linear_speed_limit);
 }
 
+// Fields without a setter are changed in place; update() and step_simulation() refuse a value
+// out of range before they step, naming the field, in every mode. A NaN stiffness or a negative
+// push-out speed would otherwise reach the solver.
+TEST(world, settings_changed_in_place_are_checked_before_a_step) {
+    auto nan = std::numeric_limits<scalar>::quiet_NaN();
+    auto inf = std::numeric_limits<scalar>::infinity();
+    struct bad_value {
+        const char *field;
+        std::string value;
+        std::function<void(settings &)> change;
+    };
+    auto bad = std::vector<bad_value>{
+        {"settings::sleep_linear_velocity", "-1", [](settings &s) { s.sleep_linear_velocity = -1; }},
+        {"settings::sleep_angular_velocity", "nan", [=](settings &s) { s.sleep_angular_velocity = nan; }},
+        {"settings::time_to_sleep", "nan", [=](settings &s) { s.time_to_sleep = nan; }},
+        {"settings::num_substeps", "0", [](settings &s) { s.num_substeps = 0; }},
+        {"settings::max_linear_speed", "inf", [=](settings &s) { s.max_linear_speed = inf; }},
+        {"settings::contact.contact_hertz", "nan", [=](settings &s) { s.contact.contact_hertz = nan; }},
+        {"settings::contact.friction_anchor_hertz", "inf",
+         [=](settings &s) { s.contact.friction_anchor_hertz = inf; }},
+        {"settings::contact.contact_damping_ratio", "-2",
+         [](settings &s) { s.contact.contact_damping_ratio = -2; }},
+        {"settings::contact.max_hertz_ratio", "0", [](settings &s) { s.contact.max_hertz_ratio = 0; }},
+        {"settings::contact.max_push_out_velocity", "-3",
+         [](settings &s) { s.contact.max_push_out_velocity = -3; }},
+        {"settings::contact.restitution_threshold", "nan",
+         [=](settings &s) { s.contact.restitution_threshold = nan; }},
+        {"settings::joint.joint_hertz", "-60", [](settings &s) { s.joint.joint_hertz = -60; }},
+        {"settings::joint.joint_damping_ratio", "inf",
+         [=](settings &s) { s.joint.joint_damping_ratio = inf; }},
+        {"settings::joint.max_hertz_ratio", "2", [](settings &s) { s.joint.max_hertz_ratio = 2; }},
+        {"settings::joint.restitution_threshold", "-0.1",
+         [](settings &s) { s.joint.restitution_threshold = scalar(-0.1); }},
+        {"settings::joint.position_projection", "1.5",
+         [](settings &s) { s.joint.position_projection = scalar(1.5); }},
+        {"settings::joint.position_projection_iterations", "65",
+         [](settings &s) { s.joint.position_projection_iterations = 65; }},
+        {"settings::joint.max_projected_gap", "nan", [=](settings &s) { s.joint.max_projected_gap = nan; }},
+        {"settings::joint.max_correction_speed", "-3",
+         [](settings &s) { s.joint.max_correction_speed = -3; }},
+    };
+    for (auto mode : {execution_mode::sequential, execution_mode::asynchronous}) {
+        registry reg;
+        attach(reg, init_config{mode});
+        auto ball = make_ball(reg, {0, 10, 0});
+        auto &in_place = reg.ctx().get<settings>();
+        auto defaults = in_place;
+        for (auto &[field, value, change] : bad) {
+            SCOPED_TRACE(field);
+            change(in_place);
+            expect_refused("update", value, [&] { update(reg, 1.0); });
+            expect_refused(field, value, [&] { update(reg, 1.0); });
+            expect_refused("step_simulation", value, [&] { step_simulation(reg); });
+            in_place = defaults;
+        }
+        wait_for_simulation(reg);
+        EXPECT_EQ(get_step_count(reg), 0u) << "a step ran with a value out of range";
+        EXPECT_EQ(reg.get<position>(ball).y, scalar(10));
+
+        // The edges are accepted: infinities where they mean no bound, zeros that turn a force off.
+        in_place.time_to_sleep = inf;
+        in_place.joint.max_projected_gap = inf;
+        in_place.joint.max_correction_speed = inf;
+        in_place.contact.friction_anchor_hertz = 0;
+        in_place.contact.max_hertz_ratio = 1;
+        in_place.joint.position_projection = 0;
+        step_simulation(reg);
+        wait_for_simulation(reg);
+        EXPECT_EQ(get_step_count(reg), 1u);
+    }
+}
+
 // A long pause over the smallest dt is more steps than an integer holds: the count is capped
 // before it is converted, and update() runs max_steps_per_update steps.
 TEST(world, a_pause_of_any_length_runs_at_most_max_steps_per_update) {

@@ -8,6 +8,7 @@
 #include "edyn/math/scalar.hpp"
 #include "edyn/math/vector3.hpp"
 #include "edyn/serialization/math_types.hpp"
+#include "edyn/serialization/solver_settings.hpp"
 #include <cstdint>
 
 namespace edyn::packet {
@@ -18,10 +19,11 @@ struct client_created {
 };
 
 /// Server to client: settings the client's simulation must share with the server's for its
-/// extrapolation to agree: what the setters of world.hpp change in the step. Sent when the client
-/// is made and whenever they change; the client applies them, or refuses the packet whole when a
-/// value is outside what those setters accept. Pausing, the step callbacks and
-/// max_steps_per_update stay the client's own.
+/// extrapolation to agree: what the setters of world.hpp change in the step, and the contact and
+/// joint solvers' settings. Sent when the client is made and whenever they change; the client
+/// applies them, or refuses the packet whole when a value is out of range (validate_settings).
+/// Pausing, the step callbacks, max_steps_per_update and the sleep thresholds stay the client's
+/// own.
 struct server_settings {
     scalar fixed_dt{};                    ///< Fixed time step in seconds (`settings::fixed_dt`).
     vector3 gravity{};                    ///< Default gravity in m/s² (`settings::gravity`).
@@ -32,12 +34,14 @@ struct server_settings {
     /// Individual iterations of the restitution solver
     /// (`settings::num_individual_restitution_iterations`).
     std::uint32_t num_individual_restitution_iterations{};
-    /// Position projection passes per sub-step (`settings::joint`,
-    /// set_solver_position_iterations).
-    std::uint32_t num_position_iterations{};
     /// The fastest a body moves, in m/s (`settings::max_linear_speed`).
     scalar max_linear_speed{};
+    /// The contact solver's settings (`settings::contact`).
+    contact_solver_settings contact{};
+    /// The joint solver's settings, the position passes among them (`settings::joint`).
+    constraint_solver_settings joint{};
 
+    /// Whether every field is the same (the server sends the settings again when not).
     bool operator==(const server_settings &) const = default;
 };
 
@@ -74,7 +78,7 @@ template<typename Archive>
 void serialize(Archive &archive, server_settings &packet) {
     archive(packet.fixed_dt, packet.gravity, packet.num_substeps, packet.num_relax_iterations,
             packet.num_restitution_iterations, packet.num_individual_restitution_iterations,
-            packet.num_position_iterations, packet.max_linear_speed);
+            packet.max_linear_speed, packet.contact, packet.joint);
 }
 
 /// Writes or reads a time_request packet.
