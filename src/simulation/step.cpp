@@ -15,8 +15,10 @@ namespace edyn {
 // The spine of the engine: one fixed step, in the manual's order.
 void run_step(registry &registry) {
     auto &world = registry.ctx().get<world_state>();
-    // A copy: callbacks may change the settings, which then apply from the next step.
+    // A copy: callbacks may change the settings, which then apply from the next step. Checked
+    // here too, not only by update(), for what a step callback changed in place.
     auto settings = get_settings(registry);
+    validate_settings(settings, "step");
 
     if (settings.pre_step_callback) settings.pre_step_callback(registry);
     // What the program wrote into bodies' motion since the last step is checked first: a NaN

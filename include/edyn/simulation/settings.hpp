@@ -36,7 +36,7 @@ inline constexpr unsigned max_steps_per_update_limit = 1000;
 /// (`registry.ctx().get<edyn::settings>()`), and update() and step_simulation() check every
 /// field (validate_settings) before they step. In asynchronous mode the changes reach the
 /// simulation worker with the next update(). A step works on a copy made when it starts, so a
-/// step callback's changes apply from the next step.
+/// step callback's changes apply from the next step, which checks them first.
 struct settings {
     /// The mode the registry was attached with (init_config::execution_mode); fixed by attach.
     edyn::execution_mode execution_mode{edyn::execution_mode::sequential};
@@ -94,8 +94,8 @@ struct settings {
 /// the others against theirs: speeds, frequencies, damping ratios, thresholds and time_to_sleep
 /// finite and not negative (max_projected_gap, max_correction_speed and time_to_sleep may be
 /// infinite, for no bound), the frequency caps (max_hertz_ratio) in (0, 1] and
-/// joint.position_projection in [0, 1]. update() and step_simulation() call it, and so does a
-/// network client on the settings its server sends.
+/// joint.position_projection in [0, 1]. update(), step_simulation() and every step call it,
+/// and so does a network client on the settings its server sends.
 /// @param s The settings to check.
 /// @param function The name the error message starts with: the function that checks them.
 /// @throws std::invalid_argument naming `function` and the first field out of range, with its

@@ -376,6 +376,25 @@ TEST(world, settings_changed_in_place_are_checked_before_a_step) {
     }
 }
 
+void spoil_contact_hertz(registry &reg) {
+    reg.ctx().get<settings>().contact.contact_hertz = std::numeric_limits<scalar>::quiet_NaN();
+}
+
+// A step callback may change the settings in place too, between two steps of one update(): the
+// next step refuses them before it moves anything.
+TEST(world, settings_a_step_callback_changes_are_checked_by_the_next_step) {
+    for (auto mode : {execution_mode::sequential, execution_mode::sequential_multithreaded}) {
+        registry reg;
+        attach(reg, init_config{mode});
+        make_ball(reg, {0, 10, 0});
+        set_post_step_callback(reg, &spoil_contact_hertz);
+        update(reg, 0.0);
+        expect_refused("step: settings::contact.contact_hertz", "nan",
+                       [&] { update(reg, 5 * double(get_fixed_dt(reg))); });
+        EXPECT_EQ(get_step_count(reg), 1u) << "a step ran with a NaN contact stiffness";
+    }
+}
+
 // A long pause over the smallest dt is more steps than an integer holds: the count is capped
 // before it is converted, and update() runs max_steps_per_update steps.
 TEST(world, a_pause_of_any_length_runs_at_most_max_steps_per_update) {
