@@ -1,6 +1,7 @@
 #include "edyn/constraints/gravity_constraint.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/tags.hpp"
 #include <cmath>
 
 namespace edyn {
@@ -13,8 +14,10 @@ gravity_constraint_solver make_constraint_solver(const registry &registry, const
     s.separation = registry.get<position>(c.body[1]) - registry.get<position>(c.body[0]);
     auto *mA = registry.try_get<mass>(c.body[0]);
     auto *mB = registry.try_get<mass>(c.body[1]);
-    // A body without a finite mass (static, kinematic) attracts with the mass it was given.
-    if (mA && mB && std::isfinite(mA->s) && std::isfinite(mB->s)) {
+    // A body made static or kinematic after the constraint carries large_scalar as its mass,
+    // finite but no mass to attract with: the attraction stops while it is not dynamic.
+    auto dynamic = registry.all_of<dynamic_tag>(c.body[0]) && registry.all_of<dynamic_tag>(c.body[1]);
+    if (dynamic && mA && mB && std::isfinite(mA->s) && std::isfinite(mB->s)) {
         s.strength = gravitational_constant * mA->s * mB->s;
     }
     return s;

@@ -147,7 +147,9 @@ void island_manager::wake_island(registry &registry, entity island_entity) {
     registry.remove<sleeping_tag>(island_entity);
     for (auto node : isle.nodes) {
         registry.remove<sleeping_tag>(node);
-        registry.get<sleep_timer>(node).time = 0;
+        // A node being destroyed may have lost its timer already (pools go newest first): its
+        // constraints, destroyed with it, wake the island while it is still listed.
+        if (auto *timer = registry.try_get<sleep_timer>(node)) timer->time = 0;
     }
     for (auto edge : isle.edges)
         registry.remove<sleeping_tag>(edge);

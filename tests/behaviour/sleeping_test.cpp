@@ -390,6 +390,32 @@ TEST_F(sleeping, a_bob_asleep_on_a_rope_falls_when_the_rope_or_its_anchor_goes) 
         EXPECT_NEAR(pos(h->bob).y, 8 - fall(reg, 1), scalar(0.01)) << "the bob still hangs";
 }
 
+// Destroying a sleeping body destroys its joints, which wake the island it is still listed in
+// while the registry takes its components away one by one.
+TEST_F(sleeping, destroying_a_sleeping_body_with_joints_wakes_what_they_held) {
+    auto hung = hang(reg, rigidbody_kind::rb_static, true, 0);
+    auto left = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {-5, 0.25, 0}));
+    auto right = make_rigidbody(reg, box_def({0.25, 0.25, 0.25}, {-4.4, 0.25, 0}));
+    make_constraint<point_constraint>(reg, left, right, [](point_constraint &c) {
+        c.pivot[0] = {scalar(0.3), 0, 0};
+        c.pivot[1] = {scalar(-0.3), 0, 0};
+    });
+    ASSERT_TRUE(bobs_fall_asleep(*this, {hung}));
+    ASSERT_TRUE(asleep(left) && asleep(right));
+
+    reg.destroy(hung.bob);
+    reg.destroy(right);
+    run_for(0.5);
+    EXPECT_TRUE(reg.valid(hung.anchor));
+    EXPECT_FALSE(reg.valid(hung.rope));
+    EXPECT_EQ(reg.view<point_constraint>().size(), 0u);
+    EXPECT_NEAR(pos(left).y, 0.25, scalar(0.01)) << "the box left alone moved";
+    // The box it held is free: a push moves it.
+    reg.patch<linvel>(left, [](linvel &v) { v = vector3{1, 0, 0}; });
+    run_for(0.1);
+    EXPECT_GT(pos(left).x, scalar(-5) + scalar(0.02)) << "the box stays where it was held";
+}
+
 // A bob asleep on its rope rises with it when the program shortens the rope.
 TEST_F(sleeping, a_bob_asleep_on_a_rope_rises_when_the_rope_is_shortened) {
     auto rope = hang(reg, rigidbody_kind::rb_static, true, 0);

@@ -13,7 +13,8 @@ inline constexpr scalar gravitational_constant = scalar(6.674e-11);
 /// Created with make_constraint(); it has nothing to set but its bodies. The masses are read
 /// from the bodies' `mass` components at the start of every step. Static and kinematic bodies
 /// carry `large_scalar` as their mass, so make_constraint() refuses them: both bodies must be
-/// dynamic.
+/// dynamic. While a body made static or kinematic later (rigidbody_set_kind) is not dynamic,
+/// the attraction is off.
 struct gravity_constraint {
     entity body[2]{null, null}; ///< The two attracting rigid bodies, set by make_constraint().
 };
@@ -31,8 +32,8 @@ struct gravity_constraint_solver {
     solver_body_index body[2]{0, 0};      ///< Indices of the two bodies in the step's solver bodies.
     /// Centre of mass B minus centre of mass A when the step began (m, world space).
     vector3 separation{vector3_zero};
-    /// G mA mB (N m^2); 0, which turns the attraction off, when either mass is missing or not
-    /// finite.
+    /// G mA mB (N m^2); 0, which turns the attraction off, when either body is not dynamic or
+    /// either mass is missing or not finite.
     scalar strength{0};
 };
 
