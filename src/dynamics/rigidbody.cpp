@@ -455,13 +455,16 @@ void rigidbody_apply_impulse(registry &registry, entity e, const vector3 &impuls
     check_finite("rigidbody_apply_impulse", "impulse", impulse);
     check_finite("rigidbody_apply_impulse", "rel_location", rel_location);
     // It adds to the velocity: in asynchronous mode the worker adds to its own.
-    call_here_and_in_worker(registry, e, [impulse, rel_location](edyn::registry &r, entity body) {
-        if (!r.all_of<dynamic_tag>(body)) return;
-        auto m_inv = r.get<mass_inv>(body).s;
-        auto &i_inv = r.get<inertia_world_inv>(body);
-        r.patch<linvel>(body, [&](linvel &v) { v += impulse * m_inv; });
-        r.patch<angvel>(body, [&](angvel &w) { w += i_inv * cross(rel_location, impulse); });
-    });
+    call_here_and_in_worker(
+        registry, e,
+        [impulse, rel_location](edyn::registry &r, entity body) {
+            if (!r.all_of<dynamic_tag>(body)) return;
+            auto m_inv = r.get<mass_inv>(body).s;
+            auto &i_inv = r.get<inertia_world_inv>(body);
+            r.patch<linvel>(body, [&](linvel &v) { v += impulse * m_inv; });
+            r.patch<angvel>(body, [&](angvel &w) { w += i_inv * cross(rel_location, impulse); });
+        },
+        motion_parts::velocity);
 }
 
 void update_rigidbody_aabb(registry &registry, entity e) { refresh_aabb(registry, e); }

@@ -158,7 +158,8 @@ void on_destroy_links(registry &registry, entity e) { unlink_constraint(registry
 void on_destroy_replicated(registry &registry, entity e) {
     auto *link = registry.ctx().find<async_execution>();
     if (!link || calls(registry).muted) return;
-    link->push_call(e, [](edyn::registry &worker, entity local) { worker.destroy(local); });
+    link->push_call(
+        e, [](edyn::registry &worker, entity local) { worker.destroy(local); }, motion_parts::all);
 }
 
 template<typename... Constraints>
@@ -265,8 +266,9 @@ worker_op settings_op(registry &registry, std::optional<material_mix_table> &sen
 async_execution::async_execution(registry &registry)
     : worker(std::make_unique<simulation_worker>())
     , types(edyn_types(replicated_components{}, constraint_types{})) {
-    registry.ctx().emplace<worker_calls>().forward = [this](entity e, worker_calls::call_type call) {
-        push_call(e, std::move(call));
+    registry.ctx().emplace<worker_calls>().forward = [this](entity e, worker_calls::call_type call,
+                                                            motion_parts sets) {
+        push_call(e, std::move(call), sets);
     };
     connect_main_listeners(registry, constraint_types{}, true);
     for (auto &type : types)
@@ -322,8 +324,9 @@ bool async_execution::accepts(registry &registry, entity e, bool edyn_component)
 }
 
 void async_execution::send(
-    entity e, std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply) {
-    mark_pending(e);
+    entity e, std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply,
+    motion_parts sets) {
+    mark_pending(e, sets);
     ops.push_back([e, apply = std::move(apply)](worker_context &w) {
         auto local = w.local(e);
         apply(w.reg, local, [&w](entity main) { return w.local(main); });
@@ -336,24 +339,40 @@ void async_execution::push(worker_op op) {
     ++ops_made;
 }
 
-void async_execution::push_call(entity e, std::function<void(registry &, entity)> call) {
-    mark_pending(e);
+void async_execution::push_gravity(const vector3 &gravity) {
+    push([gravity](worker_context &w) { set_gravity(w.reg, gravity); });
+}
+
+void async_execution::push_call(entity e, std::function<void(registry &, entity)> call, motion_parts sets) {
+    mark_pending(e, sets);
     push([e, call = std::move(call)](worker_context &w) {
         auto local = w.find(e);
         if (local != null) call(w.reg, local);
     });
 }
 
-void async_execution::mark_pending(entity e) {
+void async_execution::mark_pending(entity e, motion_parts sets) {
     auto i = to_index(e);
     if (i >= pending.size()) pending.resize(std::size_t(i) + 1);
+    auto &slot = pending[i];
+    if (slot.e != e) slot = {e};
     // The operation about to be queued is number ops_made + 1.
-    pending[i] = {e, ops_made + 1};
+    slot.seq = ops_made + 1;
+    auto parts = unsigned(sets);
+    if (parts & unsigned(motion_parts::transform)) slot.transform_seq = slot.seq;
+    if (parts & unsigned(motion_parts::velocity)) slot.velocity_seq = slot.seq;
 }
 
 bool async_execution::pending_after(entity e, std::uint64_t ops_applied) const noexcept {
     auto i = to_index(e);
     return i < pending.size() && pending[i].e == e && pending[i].seq > ops_applied;
+}
+
+bool async_execution::pending_after(entity e, std::uint64_t ops_applied, motion_parts part) const noexcept {
+    auto i = to_index(e);
+    if (i >= pending.size() || pending[i].e != e) return false;
+    auto seq = part == motion_parts::transform ? pending[i].transform_seq : pending[i].velocity_seq;
+    return seq > ops_applied;
 }
 
 void async_execution::send_batch(registry &registry, worker_op last, std::optional<double> time) {
@@ -471,15 +490,19 @@ void async_execution::apply_motion(registry &registry, const std::vector<body_st
     auto &angvels = registry.storage<angvel>();
     for (auto &state : states) {
         auto *pos = positions.try_get(state.main);
-        if (!pos || pending_after(state.main, ops_applied)) continue;
+        if (!pos) continue;
         auto *orn = orientations.try_get(state.main);
         auto *v = linvels.try_get(state.main);
         auto *w = angvels.try_get(state.main);
         if (!orn || !v || !w) continue;
-        *pos = state.pos;
-        *orn = state.orn;
-        *v = state.v;
-        *w = state.w;
+        if (!pending_after(state.main, ops_applied, motion_parts::transform)) {
+            *pos = state.pos;
+            *orn = state.orn;
+        }
+        if (!pending_after(state.main, ops_applied, motion_parts::velocity)) {
+            *v = state.v;
+            *w = state.w;
+        }
     }
 }
 

@@ -39,16 +39,20 @@ public:
     void wait(registry &registry);
     // Queues an operation made by the main side (not tied to one entity).
     void push(worker_op op);
+    // Queues set_gravity for the worker: it wakes the worker's resting bodies at every call, as
+    // it does in the other modes, even when the gravity ends up as it was.
+    void push_gravity(const vector3 &gravity);
     // Queues `call` to run in the worker on main entity e's worker entity, if it has one.
-    void push_call(entity e, std::function<void(registry &, entity)> call);
+    // `sets`: the parts of the entity's motion the call sets.
+    void push_call(entity e, std::function<void(registry &, entity)> call, motion_parts sets);
 
     void add_type(registry &registry, const detail::replicated_type &type);
     // Stops the listeners (detach).
     void disconnect(registry &registry);
 
     bool accepts(registry &registry, entity e, bool edyn_component) override;
-    void send(entity e,
-              std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply) override;
+    void send(entity e, std::function<void(registry &, entity, const std::function<entity(entity)> &)> apply,
+              motion_parts sets) override;
 
 private:
     void send_batch(registry &registry, worker_op last, std::optional<double> time = std::nullopt);
@@ -62,19 +66,26 @@ private:
     template<typename Constraint>
     void apply_constraint_states(registry &registry, const std::vector<std::pair<entity, Constraint>> &states,
                                  std::uint64_t ops_applied);
-    void mark_pending(entity e);
+    void mark_pending(entity e, motion_parts sets);
+    // Whether an operation on e came after the first `ops_applied` (any operation, or one that
+    // sets the given parts of its motion).
     bool pending_after(entity e, std::uint64_t ops_applied) const noexcept;
+    bool pending_after(entity e, std::uint64_t ops_applied, motion_parts part) const noexcept;
 
     std::unique_ptr<simulation_worker> worker;
     std::vector<worker_op> ops;
     std::uint64_t ops_made{0};
     std::uint64_t last_batch{0};
     entity_map manifolds; // worker manifold -> main manifold
-    // The last operation made for each main entity (by index), so that motion the worker
-    // computed before applying it does not overwrite what the program just set.
+    // The last operation made for each main entity (by index), and the last that set its
+    // transform and its velocity, so that motion or a constraint the worker computed before
+    // applying them does not overwrite what the program just set. Only the parts the program
+    // set wait: a body the program pushes every frame still moves on the main side.
     struct pending_slot {
         entity e{null};
         std::uint64_t seq{0};
+        std::uint64_t transform_seq{0};
+        std::uint64_t velocity_seq{0};
     };
     std::vector<pending_slot> pending;
     std::vector<detail::replicated_type> types;

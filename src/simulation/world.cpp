@@ -249,9 +249,12 @@ void update(registry &registry) {
 void wake_up_entity(registry &registry, entity e) {
     if (!registry.valid(e))
         invalid("wake_up_entity", "entity " + std::to_string(to_index(e)) + " is not valid");
-    call_here_and_in_worker(registry, e, [](edyn::registry &r, entity target) {
-        if (auto *w = r.ctx().find<world_state>()) w->islands.wake_entity(r, target);
-    });
+    call_here_and_in_worker(
+        registry, e,
+        [](edyn::registry &r, entity target) {
+            if (auto *w = r.ctx().find<world_state>()) w->islands.wake_entity(r, target);
+        },
+        motion_parts::none);
 }
 
 void set_paused(registry &registry, bool paused) { world(registry, "set_paused").paused = paused; }
@@ -271,9 +274,10 @@ void set_gravity(registry &registry, const vector3 &gravity) {
         invalid("set_gravity", concat("gravity must be at most ", max_gravity, " m/s^2 long, got ", gravity));
     mutable_settings(registry, "set_gravity").gravity = gravity;
     // Resting bodies must notice a new gravity (in asynchronous mode the worker wakes its own;
-    // here they are shown awake at once).
-    if (registry.ctx().contains<async_execution>()) {
+    // here they are shown awake at once, and the worker's say when they sleep again).
+    if (auto *async = registry.ctx().find<async_execution>()) {
         registry.clear<sleeping_tag>();
+        async->push_gravity(gravity);
         return;
     }
     auto &w = world(registry, "set_gravity");

@@ -160,6 +160,29 @@ TEST_F(sleeping, emplacing_or_removing_a_body_s_gravity_or_sleeping_disabled_wak
     EXPECT_TRUE(asleep(box));
 }
 
+// set_gravity wakes resting bodies at every call, whatever the value; they then sleep again,
+// in every mode (the main registry's tags follow the worker's in the asynchronous one).
+TEST_F(sleeping, bodies_woken_by_set_gravity_fall_asleep_again_even_when_it_did_not_change) {
+    auto box = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
+    auto g = get_gravity(reg);
+    for (int round = 0; round < 2; ++round) {
+        run_for(3.0);
+        ASSERT_TRUE(asleep(box)) << "round " << round;
+        if (round == 0) {
+            set_gravity(reg, g);
+        } else {
+            // Changed and set back before a step: woken all the same.
+            set_gravity(reg, g * 2);
+            set_gravity(reg, g);
+        }
+        EXPECT_FALSE(asleep(box)) << "round " << round;
+        run_for(0.1);
+        EXPECT_FALSE(asleep(box)) << "round " << round;
+        run_for(3.0);
+        EXPECT_TRUE(asleep(box)) << "round " << round << ": the box does not sleep again";
+    }
+}
+
 TEST_F(sleeping, separate_islands_sleep_independently) {
     auto resting = make_rigidbody(reg, box_def({0.5, 0.5, 0.5}, {0, 0.5, 0}));
     // A dropped rolling away on the ground, far off: never slow enough to sleep.

@@ -6,6 +6,16 @@
 
 namespace edyn {
 
+/// Which of a body's motion a change made by the program sets, in asynchronous mode: until the
+/// worker has run the change, the motion it sends back for that body leaves these parts of the
+/// main registry as the program set them, and updates the others.
+enum class motion_parts : unsigned {
+    none = 0,      ///< Neither: the body's motion is taken from the worker as it comes.
+    transform = 1, ///< `position` and `orientation`.
+    velocity = 2,  ///< `linvel` and `angvel`.
+    all = 3,       ///< Both.
+};
+
 /// Calls to run both on the main registry and in the simulation worker, in asynchronous mode.
 /// In execution_mode::asynchronous the main registry's context holds one of these (set up by
 /// attach). A function that reads a body's motion to change it (an impulse adds to the
@@ -18,8 +28,9 @@ namespace edyn {
 struct worker_calls {
     /// A call to run in the worker, given the worker's registry and its copy of the entity.
     using call_type = std::function<void(registry &worker, entity worker_entity)>;
-    /// Queues a call for the worker, for the given main-registry entity.
-    std::function<void(entity, call_type)> forward;
+    /// Queues a call for the worker, for the given main-registry entity, with the parts of its
+    /// motion the call sets.
+    std::function<void(entity, call_type, motion_parts)> forward;
     /// While non-zero, changes to the main registry are not sent to the worker.
     int muted{0};
 };
@@ -34,8 +45,11 @@ struct worker_calls {
 /// @param registry The main registry.
 /// @param e The entity to act on, as the main registry knows it.
 /// @param local The change to make.
+/// @param sets The parts of the entity's motion `local` sets (an impulse sets its velocity, a
+/// wake-up neither): the worker's motion for the entity, computed before the call reaches it,
+/// does not overwrite those on the main side, and updates the rest.
 template<typename Fn>
-void call_here_and_in_worker(registry &registry, entity e, Fn local) {
+void call_here_and_in_worker(registry &registry, entity e, Fn local, motion_parts sets = motion_parts::all) {
     auto *calls = registry.ctx().find<worker_calls>();
     if (!calls) {
         local(registry, e);
@@ -49,7 +63,7 @@ void call_here_and_in_worker(registry &registry, entity e, Fn local) {
         throw;
     }
     --calls->muted;
-    calls->forward(e, local);
+    calls->forward(e, local, sets);
 }
 
 } // namespace edyn

@@ -1,6 +1,10 @@
 #ifndef EDYN_SIMULATION_REPLICATION_HPP
 #define EDYN_SIMULATION_REPLICATION_HPP
 
+#include "edyn/dynamics/orientation.hpp"
+#include "edyn/dynamics/position.hpp"
+#include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/worker_calls.hpp"
 #include "edyn/ecs/entity_members.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/simulation/action_list.hpp"
@@ -50,10 +54,24 @@ void register_replicated(registry &registry, const char *function, const replica
 struct replication_sink {
     virtual ~replication_sink() = default;
     virtual bool accepts(registry &registry, entity e, bool edyn_component) = 0;
-    virtual void send(entity e, std::function<void(registry &worker, entity worker_entity,
-                                                   const std::function<entity(entity)> &to_worker)>
-                                    apply) = 0;
+    // `sets`: the parts of the entity's motion the value sets (a position, a velocity).
+    virtual void send(entity e,
+                      std::function<void(registry &worker, entity worker_entity,
+                                         const std::function<entity(entity)> &to_worker)>
+                          apply,
+                      motion_parts sets) = 0;
 };
+
+// The parts of a body's motion a component's value is.
+template<typename Component>
+constexpr motion_parts motion_parts_of() {
+    if constexpr (std::is_same_v<Component, position> || std::is_same_v<Component, orientation>)
+        return motion_parts::transform;
+    else if constexpr (std::is_same_v<Component, linvel> || std::is_same_v<Component, angvel>)
+        return motion_parts::velocity;
+    else
+        return motion_parts::none;
+}
 replication_sink *find_replication_sink(registry &registry) noexcept;
 
 // An entity member naming an entity the program has destroyed (an exclusion list keeps the
@@ -69,23 +87,29 @@ void send_value(registry &registry, entity e) {
     auto *sink = find_replication_sink(registry);
     if (!sink || !sink->accepts(registry, e, EdynComponent)) return;
     if constexpr (std::is_empty_v<Component>) {
-        sink->send(e, [](edyn::registry &worker, entity local, const std::function<entity(entity)> &) {
-            if (!worker.all_of<Component>(local)) worker.emplace<Component>(local);
-        });
+        sink->send(
+            e,
+            [](edyn::registry &worker, entity local, const std::function<entity(entity)> &) {
+                if (!worker.all_of<Component>(local)) worker.emplace<Component>(local);
+            },
+            motion_parts::none);
     } else {
         auto value = registry.get<Component>(e);
         forget_destroyed_members(registry, value);
-        sink->send(e, [value = std::move(value)](edyn::registry &worker, entity local,
-                                                 const std::function<entity(entity)> &to_worker) {
-            auto copy = value;
-            map_entity_members(copy, to_worker);
-            if (auto *current = worker.try_get<Component>(local)) {
-                merge_component(*current, copy);
-                worker.patch<Component>(local);
-            } else {
-                worker.emplace<Component>(local, std::move(copy));
-            }
-        });
+        sink->send(
+            e,
+            [value = std::move(value)](edyn::registry &worker, entity local,
+                                       const std::function<entity(entity)> &to_worker) {
+                auto copy = value;
+                map_entity_members(copy, to_worker);
+                if (auto *current = worker.try_get<Component>(local)) {
+                    merge_component(*current, copy);
+                    worker.patch<Component>(local);
+                } else {
+                    worker.emplace<Component>(local, std::move(copy));
+                }
+            },
+            motion_parts_of<Component>());
     }
 }
 
@@ -95,9 +119,12 @@ void send_removal(registry &registry, entity e) {
     if (registry.destroying(e)) return;
     auto *sink = find_replication_sink(registry);
     if (!sink || !sink->accepts(registry, e, EdynComponent)) return;
-    sink->send(e, [](edyn::registry &worker, entity local, const std::function<entity(entity)> &) {
-        worker.remove<Component>(local);
-    });
+    sink->send(
+        e,
+        [](edyn::registry &worker, entity local, const std::function<entity(entity)> &) {
+            worker.remove<Component>(local);
+        },
+        motion_parts_of<Component>());
 }
 
 template<typename Component, bool EdynComponent>
@@ -136,15 +163,17 @@ action_type make_action_type() {
                     auto actions = list.actions;
                     for (auto &action : actions)
                         forget_destroyed_members(r, action);
-                    sink.send(e,
-                              [actions = std::move(actions)](registry &worker, entity local,
-                                                             const std::function<entity(entity)> &to_worker) {
-                                  auto &target = worker.get_or_emplace<action_list<Action>>(local).actions;
-                                  for (auto action : actions) {
-                                      map_entity_members(action, to_worker);
-                                      target.push_back(std::move(action));
-                                  }
-                              });
+                    sink.send(
+                        e,
+                        [actions = std::move(actions)](registry &worker, entity local,
+                                                       const std::function<entity(entity)> &to_worker) {
+                            auto &target = worker.get_or_emplace<action_list<Action>>(local).actions;
+                            for (auto action : actions) {
+                                map_entity_members(action, to_worker);
+                                target.push_back(std::move(action));
+                            }
+                        },
+                        motion_parts::none);
                 }
             }};
 }

@@ -335,6 +335,49 @@ TEST_F(async_world, a_teleport_is_not_undone_by_steps_run_before_it_arrived) {
     EXPECT_LT(reg.get<position>(ball).y, 20);
 }
 
+// Motion the worker computed before a change of the program reached it comes back for the parts
+// of the motion the change did not set: a body whose input, velocity or sleep the program
+// changes every frame still moves on the main side (it stood still there while the change was
+// on its way, which for a change made every frame is always).
+TEST_F(async_world, a_body_the_program_changes_every_frame_still_moves_here) {
+    register_external_components<tag_value>(reg);
+    set_gravity(reg, vector3_zero);
+    std::vector<std::function<void(entity, int)>> changes{
+        [&](entity e, int frame) { reg.patch<tag_value>(e, [&](tag_value &t) { t.value = frame; }); },
+        [&](entity e, int) { wake_up_entity(reg, e); },
+        [&](entity e, int) {
+            reg.replace<linvel>(e, vector3{1, 0, 0});
+        },
+        [&](entity e, int) { rigidbody_apply_impulse(reg, e, vector3_zero, vector3_zero); },
+    };
+    for (std::size_t i = 0; i < changes.size(); ++i) {
+        auto ball = make_ball({0, 5, scalar(i) * 2});
+        reg.emplace<tag_value>(ball, 0);
+        reg.replace<linvel>(ball, vector3{1, 0, 0});
+        for (int frame = 0; frame < 30; ++frame) {
+            // The step is asked for, the change made while it runs, and its motion applied with
+            // the change still to reach the worker.
+            step_simulation(reg);
+            changes[i](ball, frame);
+            wait_for_simulation(reg);
+        }
+        EXPECT_NEAR(reg.get<position>(ball).x, scalar(0.5), scalar(0.02))
+            << "change " << i << ": the body did not move on the main side";
+        EXPECT_EQ(reg.get<linvel>(ball), (vector3{1, 0, 0})) << "change " << i;
+        reg.destroy(ball);
+    }
+    // A teleport every frame keeps the program's place, and its velocity still comes back.
+    auto ball = make_ball({0, 5, 0});
+    for (int frame = 0; frame < 10; ++frame) {
+        step_simulation(reg);
+        reg.replace<position>(ball, vector3{0, 5, 0});
+        reg.patch<linvel>(ball, [](linvel &v) { v.x += 1; });
+        wait_for_simulation(reg);
+    }
+    EXPECT_EQ(reg.get<position>(ball), (vector3{0, 5, 0}));
+    EXPECT_EQ(reg.get<linvel>(ball).x, 10);
+}
+
 TEST_F(async_world, contact_events_fire_on_the_calling_thread_with_main_entities) {
     make_ground();
     auto ball = make_ball({0, 2, 0});
