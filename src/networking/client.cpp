@@ -298,6 +298,7 @@ void apply_server_settings(registry &registry, const packet::server_settings &s)
 // entry at or before a time is the whole input state then, from which an extrapolation starts
 // (an input set only after that time is absent from it, as it was on the server).
 void record_inputs(registry &registry, client_context &ctx, network_registry &types, double now) {
+    auto dt = double(get_fixed_dt(registry));
     auto owned_input = [&](std::size_t i, entity e) {
         return types.types[i].input && registry.valid(e) && ctx.local_to_remote.find(e) != null &&
                types.types[i].has(registry, e);
@@ -314,7 +315,12 @@ void record_inputs(registry &registry, client_context &ctx, network_registry &ty
     }
     ctx.last_input_record = types.now;
     if (!writer.empty()) {
-        auto entry = client_context::recorded_input{now, {}, {}, input_repeats};
+        // Each entry a step after the last at least: the server keeps one input state a time,
+        // and takes one stamped with a time it has, or one before what it applied, for a copy.
+        // The client's time repeats steps when its lead moves down (a shorter round trip), and
+        // a step when two updates run no step between them.
+        auto time = ctx.inputs.empty() ? now : std::max(now, ctx.inputs.back().time + dt);
+        auto entry = client_context::recorded_input{time, {}, {}, input_repeats};
         writer.finish(entry.entities, entry.pools);
         ctx.inputs.push_back(std::move(entry));
     }
@@ -389,7 +395,7 @@ void init_network_client(registry &registry) {
         if (!client) return;
         auto now = client_time(r, *client);
         for (auto &t : r.ctx().get<network_registry>().types)
-            if (t.record_actions) t.record_actions(r, now, history_length);
+            if (t.record_actions) t.record_actions(r, now, history_length, double(get_fixed_dt(r)));
     };
 }
 

@@ -11,6 +11,7 @@
 #include "entity_set.hpp"
 #include "extrapolation.hpp"
 #include "network_registry.hpp"
+#include "step_time.hpp"
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -44,7 +45,7 @@ inline constexpr long long max_carried_steps = 2;
 // corrects), and the playout delay (half a round trip and a few steps).
 inline constexpr double max_server_time = 1e9;
 inline constexpr double max_snapshot_lead = 2;
-inline constexpr double max_playout_delay = 10;
+using detail::max_playout_delay;
 // Most forwarded inputs of other clients kept at once: twice the most a snapshot carries.
 inline constexpr std::size_t max_kept_forwarded = 512;
 

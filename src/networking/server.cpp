@@ -409,8 +409,12 @@ void send_asset_state(registry &registry, server_context &ctx, entity client, re
 
 void receive_snapshot(registry &registry, entity client, remote_client &rc, server_client_state &state,
                       const packet::registry_snapshot &snapshot) {
-    // Forwarded inputs and removals are the server's to send.
-    if (!std::isfinite(snapshot.timestamp) || !snapshot.inputs.empty() || !snapshot.removed.empty()) {
+    // Forwarded inputs and removals are the server's to send. No client's time is further from
+    // the server's than the longest playout delay (the other clients would refuse its inputs,
+    // forwarded, and with them the snapshots that carry them).
+    auto now = get_simulation_time(registry);
+    if (!(std::abs(snapshot.timestamp - now) <= detail::max_playout_delay) || !snapshot.inputs.empty() ||
+        !snapshot.removed.empty()) {
         rc.rejected.malformed += 1;
         return;
     }
@@ -460,7 +464,6 @@ void receive_snapshot(registry &registry, entity client, remote_client &rc, serv
     // steps: each input goes in input_repeats packets a frame apart, so that it is still on time
     // when that many of them in a row are lost.
     auto dt = double(get_fixed_dt(registry));
-    auto now = get_simulation_time(registry);
     auto slack = snapshot.timestamp - now;
     if (state.playout_margin < 0) state.playout_margin = initial_playout_margin_steps * dt;
     if (slack < -dt / 2) rc.rejected.late += 1;

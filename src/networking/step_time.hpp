@@ -11,6 +11,12 @@ inline bool due_by_step(double time, double step_time, double dt) noexcept {
     return time <= step_time + dt / 2;
 }
 
+// The longest playout delay (s) a client takes from its server: its time runs at most this far
+// ahead of the server's. The server refuses a client's snapshot stamped further than this from
+// its own time either way, and a client refuses forwarded inputs stamped further than this from
+// the snapshot that carries them.
+inline constexpr double max_playout_delay = 10;
+
 } // namespace edyn::detail
 
 #endif // EDYN_SRC_NETWORKING_STEP_TIME_HPP

@@ -50,10 +50,11 @@ struct networked_type {
     // Reads values until the end of the pool's bytes; null when they are malformed or name a
     // position past `entity_count`.
     std::unique_ptr<decoded_pool> (*read)(const std::vector<std::uint8_t> &data, std::size_t entity_count){};
-    // Actions only: copies every entity's action_list into its action_history, stamped `time`,
-    // and drops entries older than `time - keep` (the client's side, just before the lists are
-    // emptied: simulation/action_list.hpp).
-    void (*record_actions)(registry &, double time, double keep){};
+    // Actions only: copies every entity's action_list into its action_history, stamped `time`
+    // (or `spacing` after the entity's last entry, if that is later), and drops entries older
+    // than `time - keep` (the client's side, just before the lists are emptied:
+    // simulation/action_list.hpp).
+    void (*record_actions)(registry &, double time, double keep, double spacing){};
 };
 
 template<typename Component>
@@ -118,11 +119,16 @@ void on_networked_removal(registry &registry, entity e) {
     mark_network_removal(registry, type_index<Component>(), e);
 }
 
+// Each entry goes `spacing` after the entity's last at least: the server adds only entries later
+// than those it applied, and the client's time can repeat (its lead moved down, or two updates
+// ran no step between them).
 template<typename Action>
-void record_actions(registry &registry, double time, double keep) {
+void record_actions(registry &registry, double time, double keep, double spacing) {
     for (auto [e, list] : registry.view<action_list<Action>>().each()) {
         if (list.actions.empty()) continue;
-        registry.get_or_emplace<action_history<Action>>(e).entries.push_back({time, list.actions});
+        auto &entries = registry.get_or_emplace<action_history<Action>>(e).entries;
+        auto stamp = entries.empty() ? time : std::max(time, entries.back().timestamp + spacing);
+        entries.push_back({stamp, list.actions});
     }
     for (auto [e, history] : registry.view<action_history<Action>>().each()) {
         auto &entries = history.entries;

@@ -129,6 +129,60 @@ TEST(network_rules, actions_reach_the_servers_worker_once_each_in_asynchronous_m
     check_actions_once_each(execution_mode::asynchronous, 1.0 / 30);
 }
 
+// When the round trip gets shorter, the playout delay and the client's lead shrink, and the
+// client's time goes back over steps it has stamped inputs and actions with: what it stamps then
+// still reaches the server (it was taken for copies of what the server had, or as older than what
+// it applied: an input's last change and some actions were lost for good).
+void check_a_shorter_round_trip(execution_mode mode) {
+    net_harness h(&rules_setup, mode);
+    server_jumps.ids.clear();
+    client_jumps.ids.clear();
+    set_pre_step_callback(h.server, &consume_server_jumps);
+    auto box = rules_box(h.server, {0, 0, 0});
+    auto &c = h.add_client({.latency = 0.05});
+    auto set_rtt = [&](double rtt) {
+        server_set_client_round_trip_time(h.server, c.server_entity, rtt);
+        set_network_client_round_trip_time(c.reg, rtt);
+    };
+    set_rtt(0.4);
+    h.server.get<remote_client>(c.server_entity).owned_entities.push_back(box);
+    h.run(2);
+    auto local = client_local_entity(c.reg, box);
+    ASSERT_NE(local, entity{null});
+    c.reg.emplace<steering>(local, steering{{}, 0});
+    auto next_id = 0;
+    scalar angle = 0;
+    auto play = [&] {
+        angle += scalar(0.01);
+        c.reg.replace<steering>(local, steering{{}, angle});
+        c.reg.get_or_emplace<action_list<jump>>(local).actions.push_back({next_id++});
+    };
+    h.run(1, play);
+    auto lead_before = get_network_client_time(c.reg) - get_simulation_time(c.reg);
+    set_rtt(0.1);
+    h.run(0.1, play);
+    c.reg.replace<steering>(local, steering{{}, 5});
+    h.run(2);
+    auto lead_after = get_network_client_time(c.reg) - get_simulation_time(c.reg);
+    EXPECT_LT(lead_after, lead_before) << "the client's lead did not move down";
+    ASSERT_TRUE(h.server.all_of<steering>(box));
+    EXPECT_EQ(h.server.get<steering>(box).angle, 5) << "the client's last input did not reach the server";
+    auto expected = std::vector<int>(std::size_t(next_id));
+    for (int i = 0; i < next_id; ++i)
+        expected[std::size_t(i)] = i;
+    EXPECT_EQ(server_jumps.taken(), expected)
+        << server_jumps.taken().size() << " jumps seen by the server, " << next_id << " made";
+    EXPECT_EQ(h.server.get<remote_client>(c.server_entity).rejected.total(), 0u);
+}
+
+TEST(network_rules, inputs_and_actions_reach_the_server_when_the_round_trip_gets_shorter) {
+    check_a_shorter_round_trip(execution_mode::sequential);
+}
+
+TEST(network_rules, inputs_and_actions_reach_the_servers_worker_when_the_round_trip_gets_shorter) {
+    check_a_shorter_round_trip(execution_mode::asynchronous);
+}
+
 TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
     net_harness h(&rules_setup);
     auto mine = rules_box(h.server, {0, 0, 0});
@@ -193,10 +247,20 @@ TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
     forwarded.inputs.push_back({forwarded.timestamp, forwarded.entities, forwarded.pools});
     r = send_raw(forwarding);
     EXPECT_EQ(r.malformed, before.malformed + 3);
+    // Times no client can be at, further from the server's than the longest playout delay: the
+    // other clients would refuse such an input, forwarded, and with it whole snapshots.
+    for (auto off : {100.0, -100.0, 10.5, -10.5}) {
+        auto far = snapshot_of(mine, steering_index, steering{{}, 1.0f});
+        std::get<packet::registry_snapshot>(far.var).timestamp = get_simulation_time(h.server) + off;
+        auto malformed = h.server.get<remote_client>(c.server_entity).rejected.malformed;
+        r = send_raw(far);
+        EXPECT_EQ(r.malformed, malformed + 1) << "an input stamped " << off << " s from the server's time";
+    }
     // Packets only the server sends.
     r = send_raw({packet::create_entity{}});
     r = send_raw({packet::server_settings{}});
     EXPECT_EQ(r.not_input, before.not_input + 3);
+    EXPECT_EQ(r.malformed, before.malformed + 7);
 
     h.run(0.5);
     EXPECT_FLOAT_EQ(h.server.get<steering>(mine).angle, 0.25f) << "a refused packet changed the server";
