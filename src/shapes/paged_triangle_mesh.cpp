@@ -340,9 +340,18 @@ std::shared_ptr<paged_triangle_mesh> create_paged_triangle_mesh(const std::vecto
         whole.insert_vertices(vertices.begin(), vertices.end());
         whole.insert_indices(indices.begin(), indices.end());
         if (colors) {
-            for (const auto &c : *colors) {
-                friction.push_back(std::max(scalar(0), c.x));
-                restitution.push_back(std::clamp(c.y, scalar(0), scalar(1)));
+            // Checked here, where the caller can hear of it: a page's load would refuse them,
+            // and leave the page empty under the bodies over it.
+            for (std::size_t i = 0; i < colors->size(); ++i) {
+                const auto &c = (*colors)[i];
+                if (!(std::isfinite(c.x) && c.x >= 0))
+                    throw_invalid_argument(fn, ": colour ", i,
+                                           ": red (friction) must be finite and not negative, got ", c.x);
+                if (!(c.y >= 0 && c.y <= 1))
+                    throw_invalid_argument(fn, ": colour ", i,
+                                           ": green (restitution) must be in [0, 1], got ", c.y);
+                friction.push_back(c.x);
+                restitution.push_back(c.y);
             }
         }
         whole.initialize();

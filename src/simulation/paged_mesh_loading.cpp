@@ -34,9 +34,10 @@ void update_paged_meshes(registry &registry, world_state &world) {
         const auto &pos = registry.get<position>(e);
         const auto &orn = registry.get<orientation>(e);
         const auto &mesh_aabb = registry.get<AABB>(e);
-        // Every moving body, whose reach ahead may overlap the mesh before its bounds do (a body
-        // flying over a valley).
-        for (auto [other, aabb, v] : registry.view<AABB, linvel, dynamic_tag>(exclude<sleeping_tag>).each()) {
+        // Every body, whose reach ahead may overlap the mesh before its bounds do (a body flying
+        // over a valley); a sleeping one, without speed, keeps the pages under it loaded, so that
+        // a ray cast at it finds the ground it rests on.
+        for (auto [other, aabb, v] : registry.view<AABB, linvel, dynamic_tag>().each()) {
             auto speed = length(v);
             auto lookahead = speed * paged.lookahead_time + contact_breaking_threshold;
             auto ahead = inset(aabb, vector3_one * lookahead);

@@ -210,10 +210,11 @@ private:
 ///        front.
 /// @param max_triangles_per_page Most triangles of a page; positive.
 /// @param colors Optional, one per vertex (as load_tri_mesh_from_obj() gives them): red becomes
-///        each vertex's friction and green its restitution.
+///        each vertex's friction (finite, not negative) and green its restitution (in [0, 1]).
 /// @param directory Optional existing directory to keep the pages in, as files.
 /// @return The paged mesh, shared.
-/// @throws std::invalid_argument For a page size of 0, colours of the wrong count, or a mesh that
+/// @throws std::invalid_argument For a page size of 0, colours of the wrong count or out of
+///         range (the message names the vertex), or a mesh that
 ///         triangle_mesh::initialize() refuses (the message names it).
 /// @throws std::runtime_error When a page file cannot be written.
 std::shared_ptr<paged_triangle_mesh> create_paged_triangle_mesh(const std::vector<vector3> &vertices,

@@ -6,6 +6,7 @@
 #include <edyn_scenes/scenes.hpp>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <limits>
 #include <string>
 #include <thread>
 
@@ -181,6 +182,19 @@ TEST(paged_triangle_mesh_test, bad_input_throws_naming_the_function) {
                    "max_triangles_per_page");
     std::vector<vector3> colors(3);
     expect_message([&] { create_paged_triangle_mesh(grid.vertices, grid.indices, 10, &colors); }, "colour");
+    // A colour out of range would leave the page holding it empty when it loads, under the bodies
+    // over it: refused here, naming the vertex.
+    colors.assign(grid.vertices.size(), vector3{scalar(0.5), scalar(0.5), 0});
+    auto nan = std::numeric_limits<scalar>::quiet_NaN();
+    for (auto c : {vector3{nan, 0, 0}, vector3{0, nan, 0}, vector3{-1, 0, 0}, vector3{0, scalar(1.5), 0},
+                   vector3{std::numeric_limits<scalar>::infinity(), 0, 0}, vector3{0, -1, 0}}) {
+        auto bad_colors = colors;
+        bad_colors[7] = c;
+        expect_message([&] { create_paged_triangle_mesh(grid.vertices, grid.indices, 10, &bad_colors); },
+                       "colour 7");
+    }
+    colors[7] = {5, 1, 0}; // Friction above 1 is a friction.
+    EXPECT_NO_THROW(create_paged_triangle_mesh(grid.vertices, grid.indices, 10, &colors));
     auto bad = grid.indices;
     bad[4] = 1000;
     expect_message([&] { create_paged_triangle_mesh(grid.vertices, bad, 10); }, "create_paged_triangle_mesh");
