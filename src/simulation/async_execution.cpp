@@ -558,11 +558,31 @@ void async_execution::apply_records(registry &registry, const std::vector<worker
             if (m == null || !registry.valid(m)) break;
             auto &manifold = registry.get<contact_manifold>(m);
             manifold = record.manifold;
-            // What ends is told whatever became of the bodies (a listener keeps its count);
-            // what begins with a body the program has destroyed is not.
-            auto begins = record.event.type == contact_events::kind::started ||
-                          record.event.type == contact_events::kind::point_created;
-            if (begins && (!registry.valid(manifold.body[0]) || !registry.valid(manifold.body[1]))) break;
+            // What begins with a body the program has destroyed is not told, and neither is its
+            // end; what ends of what was told is told whatever became of the bodies (a listener
+            // keeps its count).
+            auto gone = !registry.valid(manifold.body[0]) || !registry.valid(manifold.body[1]);
+            auto bit = std::uint32_t{1} << record.event.id;
+            auto *untold = registry.try_get<contact_events::untold>(m);
+            auto told = true;
+            switch (record.event.type) {
+            case contact_events::kind::started:
+                if (gone) registry.get_or_emplace<contact_events::untold>(m).started = true;
+                told = !gone;
+                break;
+            case contact_events::kind::point_created:
+                if (gone) registry.get_or_emplace<contact_events::untold>(m).ids |= bit;
+                told = !gone && !(untold && untold->started);
+                break;
+            case contact_events::kind::point_destroyed:
+                told = !(untold && (untold->started || (untold->ids & bit)));
+                if (untold) untold->ids &= ~bit;
+                break;
+            case contact_events::kind::ended:
+                told = !(untold && untold->started);
+                break;
+            }
+            if (!told) break;
             try {
                 scoped_unmute heard(registry);
                 events.publish({record.event.type, m, record.event.id});

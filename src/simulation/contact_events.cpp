@@ -34,11 +34,28 @@ void contact_events::publish(const event &e) {
 
 void contact_events::deliver(const registry &registry) {
     // Listeners may cause new events (by destroying bodies): those are delivered as well.
-    for (std::size_t i = 0; i < pending.size(); ++i) {
-        auto e = pending[i];
+    for (delivered = 0; delivered < pending.size();) {
+        auto e = pending[delivered++];
         if (registry.valid(e.manifold)) publish(e);
     }
     pending.clear();
+    delivered = 0;
+}
+
+contact_events::untold contact_events::withdraw(entity manifold) {
+    untold taken;
+    for (auto i = delivered; i < pending.size(); ++i) {
+        auto &e = pending[i];
+        if (e.manifold != manifold) continue;
+        if (e.type == kind::started) {
+            taken.started = true;
+            e.manifold = null;
+        } else if (e.type == kind::point_created) {
+            taken.ids |= std::uint32_t{1} << e.id;
+            e.manifold = null;
+        }
+    }
+    return taken;
 }
 
 } // namespace edyn

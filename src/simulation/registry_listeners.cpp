@@ -118,11 +118,15 @@ void on_destroy_manifold(registry &registry, entity e) {
         if (registry.valid(body) && registry.all_of<sleeping_tag>(body))
             w.islands.wake_entity(registry, body);
     }
-    // Contact is lost with the manifold: say so while the entity still exists.
+    // Contact is lost with the manifold: say so while the entity still exists, of what the
+    // listeners were told began.
     auto &events = registry.ctx().get<contact_events>();
     using kind = contact_events::kind;
+    auto untold = events.withdraw(e);
+    if (untold.started) return;
     for (std::uint32_t i = 0; i < manifold.num_points; ++i) {
-        events.publish({kind::point_destroyed, e, manifold.ids[i]});
+        if (!(untold.ids & (std::uint32_t{1} << manifold.ids[i])))
+            events.publish({kind::point_destroyed, e, manifold.ids[i]});
     }
     events.publish({kind::ended, e, 0});
 }

@@ -330,6 +330,10 @@ TEST_F(events, bodies_destroyed_by_a_contact_listener_leave_the_simulation) {
     EXPECT_EQ(log().count(kind::started), 3u);
     EXPECT_EQ(log().count(kind::ended), 3u);
     EXPECT_TRUE(reg.view<contact_manifold>().empty());
+    // The listeners are told the end of no point they were not told of: the points created with
+    // the contact were still to be told when the body went (a listener counting live points went
+    // below zero).
+    EXPECT_EQ(log().count(kind::point_destroyed), log().count(kind::point_created));
 
     on_contact_started(reg).disconnect<&destroy_doomed_on_contact>(reg);
     std::vector<entity> dropped;

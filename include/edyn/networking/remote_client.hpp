@@ -12,7 +12,8 @@ namespace edyn {
 /// Packets from a client the server refused, by reason. A refused packet is dropped whole.
 /// Counted by the engine in remote_client::rejected; all counts start at 0.
 struct remote_client_rejections {
-    /// The bytes did not decode, or a pool's values were malformed.
+    /// The bytes did not decode, a pool's values were malformed, or a snapshot was stamped more
+    /// than the longest playout delay (10 s) from the server's time.
     std::uint32_t malformed{0};
     /// Named an entity the client does not own.
     std::uint32_t not_owned{0};

@@ -71,6 +71,14 @@ struct contact_events {
     contact_point_signal_t point_created;   ///< Listeners of on_contact_point_created.
     contact_point_signal_t point_destroyed; ///< Listeners of on_contact_point_destroyed.
     std::vector<event> pending;             ///< Events recorded this step, in order.
+    /// How many of `pending` deliver() has handed out so far (0 outside deliver()).
+    std::size_t delivered{0};
+
+    /// What of a manifold's contact its listeners have not been told yet.
+    struct untold {
+        bool started{false};  ///< Its start.
+        std::uint32_t ids{0}; ///< The points created, by id (bit `id`).
+    };
 
     /// Whether any of the four signals has a listener; events are only recorded then.
     /// @return True when at least one listener is connected.
@@ -85,6 +93,12 @@ struct contact_events {
     /// Delivers one event now, to the listeners of its kind.
     /// @param e The event.
     void publish(const event &e);
+    /// Takes the start and the points created of a manifold being destroyed out of the events
+    /// still to deliver (a listener told of an earlier event destroyed one of its bodies), so
+    /// that its listeners are told of no end of what they were never told began.
+    /// @param manifold The manifold entity.
+    /// @return What was taken out.
+    untold withdraw(entity manifold);
 };
 
 } // namespace edyn
