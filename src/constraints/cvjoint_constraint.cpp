@@ -112,24 +112,24 @@ void refresh_geometry(cvjoint_constraint_solver &s, std::span<const solver_body>
 
 namespace {
 
-// A twist limit hit with restitution, solved as an isolated collision of the limit and the
-// pivot, iterated from zero impulses until they agree.
-void solve_twist_bounce(cvjoint_constraint_solver &s, const scalar (&bounce)[2], solver_body &a,
-                        solver_body &b, const constraint_solve_context &ctx) {
+// A twist limit hit, solved as an isolated collision of the limit and the pivot, iterated from
+// zero impulses until they agree.
+void solve_twist_hits(cvjoint_constraint_solver &s, const limit_hits &hits, solver_body &a, solver_body &b,
+                      const constraint_solve_context &ctx) {
     constexpr int iterations = 16;
     auto rigid = ctx;
     rigid.use_bias = false;
     const auto &row = s.twist_row;
     const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
-        if (bounce[i] <= 0) continue;
+        if (!hits.hit[i]) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
         s.limit.impulse[i] = 0;
     }
     scalar limit_impulse[2]{0, 0};
     vector3 point_impulse = vector3_zero;
     for (int k = 0; k < iterations; ++k) {
-        solve_limit_bounce(row, bounce, limit_impulse, a, b);
+        solve_limit_hits(row, hits, limit_impulse, a, b);
         solve_point_block(s.anchor, point_impulse, a, b, rigid);
     }
 }
@@ -189,9 +189,8 @@ void solve(cvjoint_constraint_solver &s, std::span<solver_body> bodies,
         if (s.stiffness > 0 || s.damping > 0) {
             solve_spring_row(row, s.rest_angle - twist, s.stiffness, s.damping, s.spring_impulse, a, b, ctx);
         }
-        scalar bounce[2];
-        if (detect_limit_hits(s.limit, row.axis, twist, a, b, ctx, bounce)) {
-            solve_twist_bounce(s, bounce, a, b, ctx);
+        if (auto hits = detect_limit_hits(s.limit, row.axis, twist, a, b, ctx); hits.any()) {
+            solve_twist_hits(s, hits, a, b, ctx);
         }
         solve_angular_limit(s.limit, row, twist, a, b, ctx);
     }

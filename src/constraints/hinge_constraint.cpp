@@ -41,37 +41,43 @@ scalar relative_angle(const matrix3x3 &frameA, const matrix3x3 &frameB) noexcept
     return detail::arctan2(dot(cross(a1, b1), axis), dot(a1, b1));
 }
 
-bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
-                       const solver_body &b, const constraint_solve_context &ctx,
-                       scalar (&bounce)[2]) noexcept {
-    bounce[0] = bounce[1] = 0;
-    if (limit.restitution <= 0) return false;
+limit_hits detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
+                             const solver_body &b, const constraint_solve_context &ctx) noexcept {
+    limit_hits hits;
     auto rate = dot(axis, b.angvel - a.angvel);
     const scalar gaps[2]{angle - limit.min, limit.max - angle};
     const scalar rates[2]{rate, -rate};
     const scalar start_rates[2]{limit.start_rate, -limit.start_rate};
-    bool any = false;
     for (int i = 0; i < 2; ++i) {
-        if (limit.bounced[i] || !std::isfinite(gaps[i])) continue;
-        // The approach is the faster of now and when the step began: in between, the limit
-        // may have braked the motion speculatively.
-        auto approach = std::min(rates[i], start_rates[i]);
-        if (approach < -ctx.restitution_threshold && gaps[i] + rates[i] * ctx.h <= 0) {
-            bounce[i] = -limit.restitution * approach;
+        if (!std::isfinite(gaps[i]) || gaps[i] + rates[i] * ctx.h > 0) continue;
+        if (limit.restitution > 0) {
+            if (limit.bounced[i]) continue;
+            // The approach is the faster of now and when the step began: in between, the limit
+            // may have braked the motion speculatively.
+            auto approach = std::min(rates[i], start_rates[i]);
+            if (approach >= -ctx.restitution_threshold) continue;
+            hits.rate[i] = -limit.restitution * approach;
             limit.bounced[i] = true;
-            any = true;
+        } else {
+            // Approached faster than the threshold now and when the step began: a joint resting
+            // on its limit, which each sub-step's gravity presses into it anew, is left to the
+            // limit row.
+            if (std::max(rates[i], start_rates[i]) >= -ctx.restitution_threshold) continue;
+            hits.rate[i] = -std::max(gaps[i], scalar(0)) * ctx.inv_h;
         }
+        hits.hit[i] = true;
     }
-    return any;
+    return hits;
 }
 
-void solve_limit_bounce(const angular_row &row, const scalar (&bounce)[2], scalar (&impulse)[2],
-                        solver_body &a, solver_body &b) noexcept {
+void solve_limit_hits(const angular_row &row, const limit_hits &hits, scalar (&impulse)[2], solver_body &a,
+                      solver_body &b) noexcept {
     const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
-        if (bounce[i] <= 0) continue;
+        if (!hits.hit[i]) continue;
         auto mass = row_effective_mass(rows[i], a, b);
-        auto new_impulse = std::max(impulse[i] + mass * (bounce[i] - row_velocity(rows[i], a, b)), scalar(0));
+        auto new_impulse =
+            std::max(impulse[i] + mass * (hits.rate[i] - row_velocity(rows[i], a, b)), scalar(0));
         apply_row_impulse(rows[i], a, b, new_impulse - impulse[i]);
         impulse[i] = new_impulse;
     }
@@ -134,12 +140,12 @@ hinge_constraint_solver make_constraint_solver(const registry &registry, const h
 
 namespace {
 
-// A limit hit with restitution is solved as an isolated collision: the bounce row, the axis
-// and the pivot iterated together from zero impulses until they agree, so that the bounce is
-// the rate the hinge leaves the limit with (the angular row alone does not see that the pivot
-// constrains the body to turn about the hinge).
-void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], solver_body &a, solver_body &b,
-                        const constraint_solve_context &ctx) {
+// A limit hit is solved as an isolated collision: the limit row, the axis and the pivot
+// iterated together from zero impulses until they agree, so that the hinge leaves the limit
+// with the rate asked for (the angular row alone does not see that the pivot constrains the
+// body to turn about the hinge).
+void solve_hinge_hits(hinge_constraint_solver &s, const limit_hits &hits, solver_body &a, solver_body &b,
+                      const constraint_solve_context &ctx) {
     constexpr int iterations = 32;
     auto rigid = ctx;
     rigid.use_bias = false;
@@ -148,14 +154,14 @@ void solve_hinge_bounce(hinge_constraint_solver &s, const scalar (&bounce)[2], s
     // the limit row would remove it from the bounce once the hinge separates.
     const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
-        if (bounce[i] <= 0) continue;
+        if (!hits.hit[i]) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
         s.limit.impulse[i] = 0;
     }
     scalar limit_impulse[2]{0, 0}, align_impulse[2]{0, 0};
     vector3 point_impulse = vector3_zero;
     for (int k = 0; k < iterations; ++k) {
-        solve_limit_bounce(row, bounce, limit_impulse, a, b);
+        solve_limit_hits(row, hits, limit_impulse, a, b);
         solve_axis_alignment(s.align_rows, s.align_errors, align_impulse, a, b, rigid);
         solve_point_block(s.anchor, point_impulse, a, b, rigid);
     }
@@ -206,9 +212,8 @@ void solve(hinge_constraint_solver &s, std::span<solver_body> bodies,
         // The row's rate is minus the angle's rate, so its position error is rest - angle.
         solve_spring_row(row, s.rest_angle - angle, s.stiffness, s.damping, s.spring_impulse, a, b, ctx);
     }
-    scalar bounce[2];
-    if (detect_limit_hits(s.limit, row.axis, angle, a, b, ctx, bounce)) {
-        solve_hinge_bounce(s, bounce, a, b, ctx);
+    if (auto hits = detect_limit_hits(s.limit, row.axis, angle, a, b, ctx); hits.any()) {
+        solve_hinge_hits(s, hits, a, b, ctx);
     }
     solve_angular_limit(s.limit, row, angle, a, b, ctx);
     solve_axis_alignment(s.align_rows, s.align_errors, s.align_impulse, a, b, ctx);

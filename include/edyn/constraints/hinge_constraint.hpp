@@ -31,7 +31,7 @@ struct hinge_constraint {
     /// upper limit).
     scalar angle_max{std::numeric_limits<scalar>::infinity()};
     /// Restitution of a limit in [0, 1]: the share of the approach speed a limit hit faster than
-    /// the solver's restitution threshold bounces back with. Default 0.
+    /// the solver's restitution threshold bounces back with. Default 0: such a hit stops dead.
     scalar limit_restitution{0};
     /// Torque opposing rotation about the axis, Nm; finite, not negative, default 0.
     scalar friction_torque{0};
@@ -154,31 +154,44 @@ inline scalar warm_start_impulse(const angular_limit &limit) noexcept {
 /// @param ctx The pass (biased or relax).
 void solve_angular_limit(angular_limit &limit, const angular_row &row, scalar angle, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept;
-/// Separating velocity for each limit hit in the coming sub-step faster than the threshold (0 for
-/// the others); marks them as bounced. Returns whether any was hit.
-/// Limits already bounced this step, infinite limits and limits without restitution are never
-/// hit.
+/// The limits a sub-step hits, and the rate of the angle each must leave its limit with.
+struct limit_hits {
+    bool hit[2]{false, false}; ///< Whether the lower and the upper limit are hit.
+    /// Rate each hit limit must open with (rad/s, positive away from the limit): the bounce of
+    /// a limit with restitution; for one without, minus its gap over the sub-step (the motion
+    /// closes the gap, no more) and 0 once the angle is at or past the limit.
+    scalar rate[2]{0, 0};
+    /// Whether either limit is hit.
+    /// @return hit[0] or hit[1].
+    bool any() const noexcept { return hit[0] || hit[1]; }
+};
+
+/// The limits hit in the coming sub-step by an approach faster than the threshold. A hit is
+/// solved as an isolated collision of the limit and the rows that hold the joint together,
+/// whose rate the limit row alone cannot stop: an angular impulse that turns a body about its
+/// centre of mass moves the pivot, which the pivot rows then move back, and the approach that
+/// few passes leave is what the limit's position correction turns into a rebound.
+/// A limit with restitution bounces once per step, with the faster of the rates now and at the
+/// start of the step (marked in `bounced`); one without is stopped at the limit, in each
+/// sub-step whose approach would carry the angle past it. Infinite limits are never hit.
 /// @param limit The limits; `bounced` is updated.
 /// @param axis The axis about which the angle turns, world space.
 /// @param angle The angle now (radians, unwrapped).
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
 /// @param ctx The pass: its sub-step and restitution threshold are read.
-/// @param bounce Receives the separating rate of the lower and upper limits (rad/s), 0 if not hit.
-/// @return Whether either limit was hit.
-bool detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
-                       const solver_body &b, const constraint_solve_context &ctx,
-                       scalar (&bounce)[2]) noexcept;
-/// Drives the rate of each hit limit to its bounce velocity (impulses that only push), as one
-/// row of an isolated collision solve.
+/// @return The limits hit and the rates they must leave with.
+limit_hits detect_limit_hits(angular_limit &limit, const vector3 &axis, scalar angle, const solver_body &a,
+                             const solver_body &b, const constraint_solve_context &ctx) noexcept;
+/// Drives the rate of each hit limit to the rate it must leave with (impulses that only push),
+/// as one row of an isolated collision solve.
 /// @param row The row about the axis about which the angle turns, world space.
-/// @param bounce The separating rate of the lower and upper limits (rad/s); rows at 0 or below
-/// are skipped.
-/// @param impulse The bounce impulses of the two limits (N m s), accumulated and not negative.
+/// @param hits The limits hit and their rates; the others are skipped.
+/// @param impulse The impulses of the two limits (N m s), accumulated and not negative.
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
-void solve_limit_bounce(const angular_row &row, const scalar (&bounce)[2], scalar (&impulse)[2],
-                        solver_body &a, solver_body &b) noexcept;
+void solve_limit_hits(const angular_row &row, const limit_hits &hits, scalar (&impulse)[2], solver_body &a,
+                      solver_body &b) noexcept;
 
 /// A hinge_constraint as the solver sees it during a step.
 struct hinge_constraint_solver {
