@@ -194,17 +194,22 @@ inline void keep_unmasked(wide_mask active, const velocities &before, wide_body 
     }
 }
 
+// A lever turned to first order, as turned_lever() in contact_solver.cpp.
+inline wide3 turned_lever(const wide_quaternion &q, const wide3 &r) {
+    return r + cross(wide3{q.x, q.y, q.z}, r) * (q.w * wide_set(scalar(2)));
+}
+
 // The bodies' relative motion at the slot's points since the step began, as point_motion() in
 // contact_solver.cpp.
 template<fixed_side F>
 inline wide3 point_motion(const contact_bundle_slot &slot, const wide_body &a, const wide_body &b) {
     if constexpr (F == fixed_side::b) {
-        return a.delta_position + (rotate(a.delta_rotation, wide3_load(slot.rA)) - wide3_load(slot.rB));
+        return a.delta_position + (turned_lever(a.delta_rotation, wide3_load(slot.rA)) - wide3_load(slot.rB));
     } else if constexpr (F == fixed_side::a) {
-        return (wide3_load(slot.rA) - rotate(b.delta_rotation, wide3_load(slot.rB))) - b.delta_position;
+        return (wide3_load(slot.rA) - turned_lever(b.delta_rotation, wide3_load(slot.rB))) - b.delta_position;
     } else {
-        return (a.delta_position - b.delta_position) + (rotate(a.delta_rotation, wide3_load(slot.rA)) -
-                                                        rotate(b.delta_rotation, wide3_load(slot.rB)));
+        return (a.delta_position - b.delta_position) + (turned_lever(a.delta_rotation, wide3_load(slot.rA)) -
+                                                        turned_lever(b.delta_rotation, wide3_load(slot.rB)));
     }
 }
 

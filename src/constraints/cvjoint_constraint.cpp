@@ -113,7 +113,8 @@ void refresh_geometry(cvjoint_constraint_solver &s, std::span<const solver_body>
 namespace {
 
 // A twist limit hit, solved as an isolated collision of the limit and the pivot, iterated from
-// zero impulses until they agree.
+// zero impulses until they agree (the warm-started push taken back for a bounce only, as
+// the hinge's).
 void solve_twist_hits(cvjoint_constraint_solver &s, const limit_hits &hits, solver_body &a, solver_body &b,
                       const constraint_solve_context &ctx) {
     constexpr int iterations = 16;
@@ -122,7 +123,7 @@ void solve_twist_hits(cvjoint_constraint_solver &s, const limit_hits &hits, solv
     const auto &row = s.twist_row;
     const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
-        if (!hits.hit[i]) continue;
+        if (!hits.hit[i] || s.limit.restitution <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
         s.limit.impulse[i] = 0;
     }

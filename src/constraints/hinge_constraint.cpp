@@ -150,11 +150,14 @@ void solve_hinge_hits(hinge_constraint_solver &s, const limit_hits &hits, solver
     auto rigid = ctx;
     rigid.use_bias = false;
     const auto &row = s.axis_row;
-    // The limit's warm-started push is part of the approach being answered: take it back, or
-    // the limit row would remove it from the bounce once the hinge separates.
+    // A bounce answers the approach with the limit's warm-started push in it: take the push
+    // back, or the limit row would remove it from the bounce once the hinge separates. A stop
+    // keeps it: it may be holding a load, which taken back would be pressed in anew each
+    // sub-step. The collision's impulses are not accumulated either way: warm-started in the
+    // next sub-step, they would push the stopped hinge back out.
     const angular_row rows[2]{-row, row};
     for (int i = 0; i < 2; ++i) {
-        if (!hits.hit[i]) continue;
+        if (!hits.hit[i] || s.limit.restitution <= 0) continue;
         apply_row_impulse(rows[i], a, b, -s.limit.impulse[i]);
         s.limit.impulse[i] = 0;
     }
