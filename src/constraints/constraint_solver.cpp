@@ -1,4 +1,5 @@
 #include "edyn/constraints/constraint_solver.hpp"
+#include "edyn/constraints/constraint_links.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/parallel/stage_queue.hpp"
@@ -31,6 +32,18 @@ void gather_batch(const registry &registry, constraint_batch<Solver> &batch, bod
         } catch (const std::invalid_argument &error) {
             throw detail::entity_refusal(e, "step: constraint entity ",
                                          std::string(", changed after it was made: ") + error.what());
+        }
+        // Its bodies are fixed when it is made: the islands, the bodies' lists of constraints
+        // and sleeping all follow the pair it was made with, which the solver alone would leave.
+        if (auto *links = registry.try_get<constraint_links>(e);
+            links && links->num_constraints == 1 &&
+            (links->body[0] != con.body[0] || links->body[1] != con.body[1])) {
+            throw detail::entity_refusal(
+                e, "step: constraint entity ",
+                std::string(", changed after it was made: make_constraint<") +
+                    constraint_type_name<component> +
+                    ">: body[] cannot change once the constraint is made; destroy it "
+                    "and make another joining the new bodies");
         }
         constraint_body_indices indices{body_index_of(body_index, con.body[0]),
                                         body_index_of(body_index, con.body[1])};

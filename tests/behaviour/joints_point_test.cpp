@@ -39,6 +39,40 @@ TEST_F(point_joint, pendulum_period_is_two_pi_sqrt_l_over_g) {
     EXPECT_NEAR(r, length, scalar(0.002)) << "measured radius " << r << ", expected " << length;
 }
 
+TEST_F(point_joint, bodies_written_after_make_constraint_are_refused_by_the_step) {
+    // A joint's bodies are fixed when it is made: its islands, the bodies' lists of constraints
+    // and sleeping follow them. Moving the joint to another body, to null or to a destroyed
+    // entity once made let the solver pull the new body while the islands kept the old pair
+    // (the old body fell free, the new one was drawn towards the anchor from another island).
+    // The step refuses each, naming the entity, until the pair is put back.
+    auto anchor = edyn::test::make_anchor(reg, {0, 2, 0});
+    auto bob = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {1, 2, 0}));
+    auto other = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {4, 2, 0}));
+    auto gone = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {8, 2, 0}));
+    reg.destroy(gone);
+    auto joint = make_constraint<point_constraint>(reg, anchor, bob, [](point_constraint &c) {
+        c.pivot[1] = {-1, 0, 0};
+    });
+    edyn::test::step(reg);
+    auto expected = "constraint entity " + std::to_string(to_index(joint));
+    for (auto body : {other, entity(null), gone, anchor}) {
+        reg.patch<point_constraint>(joint, [&](point_constraint &c) { c.body[1] = body; });
+        try {
+            edyn::test::step(reg);
+            ADD_FAILURE() << "the step accepted body[1] = " << to_integral(body);
+        } catch (const std::invalid_argument &error) {
+            std::string what = error.what();
+            EXPECT_NE(what.find("body[]"), std::string::npos) << what;
+            EXPECT_NE(what.find(expected), std::string::npos) << what;
+        }
+    }
+    // Nothing pulled the other ball: it fell as a free body does, straight down.
+    EXPECT_NEAR(pos(other).x, 4, scalar(1e-4));
+    reg.patch<point_constraint>(joint, [&](point_constraint &c) { c.body[1] = bob; });
+    run_for(1);
+    EXPECT_NEAR(distance(pos(bob), vector3{0, 2, 0}), 1, scalar(0.002)) << "the bob left its rope";
+}
+
 TEST_F(point_joint, pivots_are_relative_to_the_origin_not_the_centre_of_mass) {
     auto anchor = edyn::test::make_anchor(reg, {0, 3, 0});
     auto def = edyn::test::box_def({scalar(0.1), scalar(0.5), scalar(0.1)}, {0, 2, 0});

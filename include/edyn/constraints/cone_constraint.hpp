@@ -15,7 +15,7 @@ namespace edyn {
 /// stops, the engine writes the impulses. Only the wall is enforced: the point may move freely
 /// inside the cone, and along the axis.
 struct cone_constraint {
-    /// body[0] carries the cone, body[1] the point; set by make_constraint().
+    /// body[0] carries the cone, body[1] the point; set by make_constraint() for good.
     entity body[2]{null, null};
     /// pivot[0]: the cone's apex, in body[0]'s object space; pivot[1]: the point kept inside, in
     /// body[1]'s object space; both relative to the body's origin (m). Default: the origins.

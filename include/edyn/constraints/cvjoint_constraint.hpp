@@ -19,7 +19,7 @@ namespace edyn {
 /// twist limits, friction, damping and springs, the engine writes `twist_angle` and the
 /// impulses.
 struct cvjoint_constraint {
-    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint() for good.
     /// Pivot on each body, in its object space, relative to its origin (m); default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};
     /// Orthonormal frame of each body, in its object space: the first column is the body's

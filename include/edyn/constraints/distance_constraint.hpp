@@ -12,7 +12,7 @@ namespace edyn {
 /// Created with make_constraint(); the user sets the pivots and the distance, the engine writes
 /// the impulse.
 struct distance_constraint {
-    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint() for good.
     /// Pivot on each body, in its object space, relative to its origin (m); default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};
     /// Length kept between the pivots (m), finite and not negative; default 0.

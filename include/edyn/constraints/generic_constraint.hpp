@@ -49,7 +49,7 @@ struct generic_dof {
 /// Created with make_constraint(); the user sets the pivots, frames and degrees of freedom, the
 /// engine writes the impulses.
 struct generic_constraint {
-    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint() for good.
     /// Pivot on each body, in its object space, relative to its origin (m); default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};
     /// Orthonormal frame of each body, in its object space; the coordinates are measured along

@@ -16,7 +16,7 @@ inline constexpr scalar gravitational_constant = scalar(6.674e-11);
 /// dynamic. While a body made static or kinematic later (rigidbody_set_kind) is not dynamic,
 /// the attraction is off.
 struct gravity_constraint {
-    entity body[2]{null, null}; ///< The two attracting rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two attracting rigid bodies, set by make_constraint() for good.
 };
 
 /// Name of gravity_constraint in error messages.

@@ -16,7 +16,7 @@ namespace edyn {
 /// pivots, frames (or calls set_axes()), limits, friction, damping and springs, the engine
 /// writes `angle` and the impulses.
 struct hinge_constraint {
-    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint() for good.
     /// Pivot on each body, in its object space, relative to its origin (m): a point of the hinge
     /// axis. Default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};

@@ -10,7 +10,7 @@ namespace edyn {
 /// Created with make_constraint(), which, for this type only, accepts an external entity (one
 /// with `external_tag`) in place of a rigid body.
 struct null_constraint {
-    entity body[2]{null, null}; ///< The two joined entities, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined entities, set by make_constraint() for good.
 };
 
 /// Name of null_constraint in error messages.

@@ -11,7 +11,7 @@ namespace edyn {
 /// Created with make_constraint(); the user sets the pivots and the friction torque, the engine
 /// writes the impulses.
 struct point_constraint {
-    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint() for good.
     /// Pivot on each body, in its object space, relative to its origin (m); default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};
     /// Torque opposing the relative angular velocity of the bodies, Nm; 0 (the default) for none.

@@ -12,7 +12,7 @@ namespace edyn {
 /// the damping, the engine writes the impulse. The spring acts along the line between the
 /// pivots, and both pushes and pulls.
 struct soft_distance_constraint {
-    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint().
+    entity body[2]{null, null}; ///< The two joined rigid bodies, set by make_constraint() for good.
     /// Pivot on each body, in its object space, relative to its origin (m); default: the origins.
     vector3 pivot[2]{vector3_zero, vector3_zero};
     scalar distance{0};    ///< Rest length of the spring (m), finite and not negative; default 0.
