@@ -359,8 +359,8 @@ void wake_bodies_on_moving_kinematics(registry &registry, world_state &world) {
         if (v == vector3_zero && w == vector3_zero) continue;
         world.islands.wake_joined_to(registry, e);
         if (!world.broadphase.contains(e)) continue;
-        world.broadphase.query(world.broadphase.get_fat_aabb(e), [&](entity other) {
-            auto manifold = other == e ? null : world.broadphase.get_manifold(e, other);
+        world.broadphase.query(world.broadphase.get_fat_aabb(e), [&, body = e](entity other) {
+            auto manifold = other == body ? null : world.broadphase.get_manifold(body, other);
             if (manifold != null && registry.get<contact_manifold>(manifold).num_points > 0)
                 touching.push_back(other);
         });

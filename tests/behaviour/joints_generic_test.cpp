@@ -96,6 +96,35 @@ TEST_F(generic_joint, limited_linear_axis_holds_at_its_limit) {
     EXPECT_NEAR(vel(body).y, 0, 0.01);
 }
 
+TEST_F(generic_joint, a_bar_swung_into_an_angular_limit_stops_dead) {
+    // A 1 m bar held at one end, free to turn about z within [-0.5, 0.5] rad, swung at 2 rad/s.
+    // The limit's torque turns the bar about its centre, which the locked pivot turns back about
+    // the end: the rebound this left (0.35 rad/s, from the limit's position correction) is gone,
+    // but for what an approach slower than the joints' restitution threshold may leave.
+    set_gravity(reg, vector3_zero);
+    auto anchor = edyn::test::make_anchor(reg, vector3_zero);
+    auto def = edyn::test::box_def({scalar(0.5), scalar(0.05), scalar(0.05)}, {scalar(0.5), 0, 0});
+    def.angvel = {0, 0, 2};
+    def.linvel = {0, 1, 0};
+    auto bar = make_rigidbody(reg, def);
+    make_constraint<generic_constraint>(reg, anchor, bar, [](generic_constraint &c) {
+        c.pivot[1] = {-scalar(0.5), 0, 0};
+        c.angular[2].mode = dof_mode::limited;
+        c.angular[2].min = -scalar(0.5);
+        c.angular[2].max = scalar(0.5);
+    });
+    scalar fastest_rebound = 0;
+    for (int i = 0; i < 60; ++i) {
+        edyn::test::step(reg);
+        fastest_rebound = std::max(fastest_rebound, -angular(bar).z);
+    }
+    auto threshold = get_settings(reg).joint.restitution_threshold;
+    EXPECT_LT(fastest_rebound, threshold / 4) << "the bar left the limit at " << fastest_rebound << " rad/s";
+    auto tip = pos(bar) + rotate(reg.get<orientation>(bar), vector3{scalar(0.5), 0, 0});
+    auto angle = std::atan2(tip.y, tip.x);
+    EXPECT_NEAR(angle, 0.5, 0.01) << "the bar rests at " << angle << " rad, the limit is at 0.5";
+}
+
 TEST_F(generic_joint, linear_spring_oscillates_at_sqrt_k_over_m) {
     set_gravity(reg, vector3_zero);
     const scalar k = 200, m = 2;

@@ -121,6 +121,9 @@ struct generic_constraint_solver {
     scalar spring_impulse[6];   ///< Impulses of each row's spring and damper.
     scalar friction_impulse[6]; ///< Impulses of each row's friction.
     generic_rows rows{};        ///< The rows at the bodies' present poses (refresh_geometry()).
+    /// Rate of each coordinate when the step began (m/s or rad/s): a limit approached faster
+    /// than the restitution threshold both then and now is stopped as a collision (solve()).
+    scalar start_rate[6]{0, 0, 0, 0, 0, 0};
 };
 
 /// Prepares a generic constraint for this step's solve: pivots and frames in world space,
