@@ -193,7 +193,8 @@ void stop_limit_hits(generic_constraint_solver &s, solver_body &a, solver_body &
                 if (!hit[i][k]) continue;
                 auto j = k == 0 ? rows.j[i] : reversed(rows.j[i]);
                 auto mass = row_effective_mass(j, a, b);
-                auto next = std::max(limit_impulse[i][k] + mass * (target[i][k] - row_velocity(j, a, b)), scalar(0));
+                auto next =
+                    std::max(limit_impulse[i][k] + mass * (target[i][k] - row_velocity(j, a, b)), scalar(0));
                 apply_row_impulse(j, a, b, next - limit_impulse[i][k]);
                 limit_impulse[i][k] = next;
             }
