@@ -570,11 +570,17 @@ void server_receive_packet(registry &registry, entity client, const packet::edyn
                 }
                 auto entities = std::vector<entity>{};
                 for (auto e : p.entities) {
-                    if (!state.known.contains(e)) {
+                    if (state.known.contains(e)) {
+                        if (registry.valid(e)) entities.push_back(e);
+                        continue;
+                    }
+                    // An honest client names what it heard of before the entity left its
+                    // interest or was destroyed: nothing is sent for it. Only an id the server
+                    // never issued is refused.
+                    if (!registry.valid(e) && !(to_version(e) < registry.current(e))) {
                         rc.rejected.unknown_entity += 1;
                         return;
                     }
-                    if (registry.valid(e)) entities.push_back(e);
                 }
                 send_create(registry, ctx, registry.ctx().get<network_registry>(), client, entities);
             } else {

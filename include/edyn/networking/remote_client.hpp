@@ -20,7 +20,9 @@ struct remote_client_rejections {
     /// Carried a component that is not an input of the client's, or a packet kind a client may
     /// not send.
     std::uint32_t not_input{0};
-    /// Named an entity the server never sent the client.
+    /// Named an entity the server never sent the client (in a snapshot or an asset request), or
+    /// an id the server never issued (in an entity request: one it sent before the entity left
+    /// the client's interest or was destroyed is no refusal, and gets no answer).
     std::uint32_t unknown_entity{0};
     /// Snapshots that arrived too late to be applied at their time (they are applied at once
     /// instead, not refused).

@@ -187,11 +187,15 @@ TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
     net_harness h(&rules_setup);
     auto mine = rules_box(h.server, {0, 0, 0});
     auto theirs = rules_box(h.server, {2, 0, 0});
+    auto gone = rules_box(h.server, {4, 0, 0});
     h.server.emplace<health>(mine);
     auto &c = h.add_client({.latency = 0.01});
     auto &rc = h.server.get<remote_client>(c.server_entity);
     rc.owned_entities.push_back(mine);
     h.run(0.5);
+    ASSERT_NE(client_local_entity(c.reg, gone), entity{null});
+    h.server.destroy(gone);
+    h.run(0.1);
 
     auto send_raw = [&](const packet::edyn_packet &p) {
         server_receive_packet(h.server, c.server_entity, p);
@@ -256,6 +260,16 @@ TEST(network_rules, the_server_refuses_what_the_client_does_not_own) {
         r = send_raw(far);
         EXPECT_EQ(r.malformed, malformed + 1) << "an input stamped " << off << " s from the server's time";
     }
+    // Entity requests: an entity the client heard of before it was destroyed is no refusal (a
+    // client asks for what a packet sent before the destroy_entity named); an id the server
+    // never issued is, at an index it never used or as a version of a known index still to come.
+    r = send_raw({packet::entity_request{{gone}}});
+    EXPECT_EQ(r.unknown_entity, before.unknown_entity + 1);
+    r = send_raw({packet::entity_request{{entity{0xABCDE}}}});
+    EXPECT_EQ(r.unknown_entity, before.unknown_entity + 2);
+    auto next_version = entity(to_integral(theirs) + (2u << entity_traits::index_bits));
+    r = send_raw({packet::entity_request{{next_version}}});
+    EXPECT_EQ(r.unknown_entity, before.unknown_entity + 3);
     // Packets only the server sends.
     r = send_raw({packet::create_entity{}});
     r = send_raw({packet::server_settings{}});
