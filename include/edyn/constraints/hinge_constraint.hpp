@@ -173,7 +173,10 @@ struct limit_hits {
 /// few passes leave is what the limit's position correction turns into a rebound.
 /// A limit with restitution bounces once per step, with the faster of the rates now and at the
 /// start of the step (marked in `bounced`); one without is stopped at the limit, in each
-/// sub-step whose approach would carry the angle past it. Infinite limits are never hit.
+/// sub-step whose approach would carry the angle past it, when both the rates now and at the
+/// start of the step are faster than the threshold (a joint resting on its limit, which each
+/// sub-step's gravity presses into it anew, is left to the limit row). Infinite limits are
+/// never hit.
 /// @param limit The limits; `bounced` is updated.
 /// @param axis The axis about which the angle turns, world space.
 /// @param angle The angle now (radians, unwrapped).
