@@ -98,9 +98,9 @@ generic_constraint_solver make_constraint_solver(const registry &registry, const
         a.angvel = registry.get<angvel>(c.body[0]);
         b.linvel = registry.get<linvel>(c.body[1]);
         b.angvel = registry.get<angvel>(c.body[1]);
-        auto start = s;
-        refresh_pose(start.anchor, a, b);
-        auto rows = current_rows(start, a, b);
+        // The pose at the start of the step, which the step's first refresh measures again.
+        refresh_pose(s.anchor, a, b);
+        auto rows = current_rows(s, a, b);
         for (int i = 0; i < 6; ++i)
             s.start_rate[i] = row_velocity(rows.j[i], a, b);
     }
