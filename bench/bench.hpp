@@ -105,6 +105,20 @@ run_result run_bullet(const scene_spec &spec);
 double peak_rss_mb();
 void reset_peak_rss();
 
+// What independent work on several threads gains over one thread on this machine: the speed-up
+// of an arithmetic kernel, a memory-latency kernel and a memory-bandwidth kernel for each thread
+// count, and the time a cache line takes to go from one thread to another and back
+// (machine_ceiling.cpp); each kernel takes a fraction of a second.
+struct ceiling_row {
+    unsigned threads{1};
+    double arithmetic{0};
+    double memory_latency{0};
+    double memory_bandwidth{0};
+    double round_trip_ns{0};
+};
+std::vector<ceiling_row> machine_ceiling(const std::vector<unsigned> &thread_counts);
+std::string ceiling_table(const std::vector<ceiling_row> &rows);
+
 // Writes the results as a JSON list of records.
 void write_json(const std::string &path, const std::vector<run_result> &results);
 // A markdown table of the results with the edyn/Bullet ratios of median time.

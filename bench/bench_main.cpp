@@ -30,6 +30,7 @@ struct options {
     std::string markdown;
     bool no_fork{false};
     bool sleeping{false};
+    bool machine_ceiling{false};
     unsigned repeat{1};
     std::string mode{"sequential"};
 };
@@ -246,8 +247,24 @@ int run_async(const options &opt) {
     return 0;
 }
 
+// --machine-ceiling: no scene, only what this machine gives to 2, 4, 8... threads of independent
+// work, up to --threads.
+int run_machine_ceiling(const options &opt) {
+    if (opt.threads < 2)
+        throw std::invalid_argument("edyn-bench: --machine-ceiling needs --threads of at least 2");
+    std::vector<unsigned> counts;
+    for (unsigned threads = 2; threads < opt.threads; threads *= 2)
+        counts.push_back(threads);
+    counts.push_back(opt.threads);
+    std::fprintf(stderr, "edyn-bench: independent work on %u threads against one ...\n", opt.threads);
+    auto table = ceiling_table(machine_ceiling(counts));
+    std::printf("%s", table.c_str());
+    return 0;
+}
+
 int run(const options &opt) {
     if (opt.threads == 0) throw std::invalid_argument("edyn-bench: --threads must be at least 1");
+    if (opt.machine_ceiling) return run_machine_ceiling(opt);
     if (opt.mode == "async") {
         if (opt.threads > 1 || opt.engine == "bullet" || !opt.json.empty())
             throw std::invalid_argument("edyn-bench: --mode async runs edyn alone, on its worker thread "
@@ -344,6 +361,9 @@ int main(int argc, char **argv) {
         ->check(CLI::IsMember({"sequential", "async"}));
     app.add_flag("--sleeping", opt.sleeping,
                  "let bodies at rest sleep in both engines (off: the figures are the cost of simulating)");
+    app.add_flag("--machine-ceiling", opt.machine_ceiling,
+                 "instead of the scenes: the speed-up that 2, 4, 8... threads (up to --threads) of "
+                 "independent arithmetic, memory-latency and memory-bandwidth work get on this machine");
     app.add_flag("--no-fork", opt.no_fork,
                  "run everything in this process (for profilers; peak memory is then the process's)");
     CLI11_PARSE(app, argc, argv);

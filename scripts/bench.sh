@@ -7,8 +7,9 @@
 #   scripts/bench.sh --scaling [body counts]
 # instead runs edyn's piles (of 4,096 and 16,384 bodies unless given) on 1, 2, 4, 8 and 16
 # threads (as many of those as the machine has cores), three rounds of every count in turn, and
-# writes bench/results/scaling.md (the table and each core's speed on one thread, also printed)
-# and scaling.png (speed-up against threads).
+# writes bench/results/scaling.md (the table, each core's speed on one thread and the speed-up
+# that independent work gets on the same thread counts, also printed) and scaling.png (speed-up
+# against threads).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -57,6 +58,12 @@ if [ "${1:-}" = "--scaling" ]; then
     done
   done
   after=$(core_speeds)
+  # The machine's own ceiling: what independent work gains on the same thread counts. Logical
+  # CPUs that share a core's arithmetic units give the arithmetic kernel no speed-up.
+  ceiling=""
+  if [ "${counts[-1]}" -ge 2 ]; then
+    ceiling=$(./build-release/bench/edyn-bench --machine-ceiling --threads "${counts[-1]}" 2>/dev/null)
+  fi
   # "bodies threads median_ms" per run, the fastest of each (bodies, threads), then the speed-up
   # over the same pile on one thread.
   cat "$runs"/*.json | grep '"engine": "edyn"' |
@@ -72,6 +79,12 @@ if [ "${1:-}" = "--scaling" ]; then
     echo
     echo "Each core on one thread (a 1,024-body pile, median ms per step), before the runs: $before;"
     echo "after them: $after."
+    if [ -n "$ceiling" ]; then
+      echo
+      echo "What independent work gains over one thread on this machine (edyn-bench --machine-ceiling):"
+      echo
+      echo "$ceiling"
+    fi
   } | tee "$results/scaling.md"
   plots=()
   for bodies in "${piles[@]}"; do
