@@ -24,16 +24,7 @@
 
 namespace edyn {
 
-using namespace client_detail;
-
-namespace {
-
-network_client_rejections &rejections(registry &registry) {
-    return registry.ctx().get<network_client_rejections>();
-}
-
-// A time of the server's clock the client can compute with.
-bool plausible_server_time(double t) { return std::abs(t) <= max_server_time; }
+namespace client_detail {
 
 void destroy_local(registry &registry, client_context &ctx, const std::vector<entity> &remote) {
     for (auto r : remote) {
@@ -52,6 +43,36 @@ void destroy_local(registry &registry, client_context &ctx, const std::vector<en
         }
     }
 }
+
+namespace {
+// Whether `a` is a later version than `b` of the same index: versions wrap round, and the later
+// is the one at most half their range ahead.
+bool later_version(entity a, entity b) {
+    auto ahead = (to_version(a) - to_version(b)) & entity_traits::version_mask;
+    return ahead != 0 && ahead <= entity_traits::version_mask / 2;
+}
+} // namespace
+
+bool make_room_for(registry &registry, client_context &ctx, entity remote) {
+    auto mapped = ctx.remote_to_local.source_at(remote);
+    if (mapped == null || mapped == remote) return true;
+    if (!later_version(remote, mapped)) return false;
+    destroy_local(registry, ctx, {mapped});
+    return true;
+}
+
+} // namespace client_detail
+
+using namespace client_detail;
+
+namespace {
+
+network_client_rejections &rejections(registry &registry) {
+    return registry.ctx().get<network_client_rejections>();
+}
+
+// A time of the server's clock the client can compute with.
+bool plausible_server_time(double t) { return std::abs(t) <= max_server_time; }
 
 // Whether the value or removal of the type at `index` that a snapshot of `time` has for local
 // entity `e` is not older than the one `e` has; then `time` becomes the one it has.
@@ -80,6 +101,7 @@ void receive_create(registry &registry, client_context &ctx, const packet::creat
     if (!pools) return;
     for (auto r : create.entities) {
         if (r == null || ctx.remote_to_local.find(r) != null || ctx.unlinked_members.contains(r)) continue;
+        if (!make_room_for(registry, ctx, r)) continue;
         auto local = registry.create();
         registry.emplace<networked_tag>(local);
         ctx.remote_to_local.insert(r, local);

@@ -12,6 +12,7 @@ namespace client_detail {
 void receive_entered(registry &registry, client_context &ctx, const packet::entity_entered &entered) {
     for (auto &asset : entered.assets) {
         if (asset.asset_entity == null || ctx.remote_to_local.find(asset.asset_entity) != null) continue;
+        if (!make_room_for(registry, ctx, asset.asset_entity)) continue;
         auto local = registry.create();
         registry.emplace<asset_ref>(local, asset_ref{asset.id, {}});
         registry.emplace<client_asset>(local,
@@ -69,6 +70,7 @@ void client_link_asset(registry &registry, entity asset_entity) {
         // A null member (from the server's bytes) maps nothing.
         if (remote == null || it == ref.entities.end() || !registry.valid(it->second)) continue;
         auto local = it->second;
+        if (!make_room_for(registry, ctx, remote) || !registry.valid(local)) continue;
         if (auto previous = ctx.local_to_remote.find(local); previous != null)
             ctx.remote_to_local.erase(previous);
         ctx.remote_to_local.insert(remote, local);

@@ -195,6 +195,16 @@ inline detail::entity_mapper remote_to_local_map(const client_context &ctx) {
     return [&ctx](entity e) { return ctx.remote_to_local.find(e); };
 }
 
+// client.cpp
+// Destroys the local entities of these remote ones, and forgets their mapping.
+void destroy_local(registry &registry, client_context &ctx, const std::vector<entity> &remote);
+// Whether remote entity `remote` may be given a local entity. The server reuses an index only
+// once it has destroyed the entity that had it: where the client maps an older version of
+// `remote`'s index, that entity is gone, though its destroy_entity or entity_exited has yet to
+// arrive, and its local entity is destroyed now. Where it maps a newer version, `remote` comes
+// from a packet that arrived late, and is not mapped.
+bool make_room_for(registry &registry, client_context &ctx, entity remote);
+
 // client_extrapolation.cpp
 void decay_discontinuities(registry &registry, client_context &ctx);
 void start_extrapolation(registry &registry, client_context &ctx, network_registry &types, double now);

@@ -23,6 +23,14 @@ public:
         if (i >= slots.size() || slots[i].source != source) return null;
         return slots[i].target;
     }
+    /// The source entity whose entry is at `source`'s index, whatever its version.
+    /// @param source An entity of the source registry.
+    /// @return The entry's source (`source` itself, or another version at its index), or null
+    /// when that index has no entry.
+    entity source_at(entity source) const noexcept {
+        auto i = to_index(source);
+        return i < slots.size() ? slots[i].source : null;
+    }
     /// Maps `source` to `target`, replacing any entry at the same index (whatever its version).
     /// @param source An entity of the source registry; not null.
     /// @param target The entity of the other registry it stands for.

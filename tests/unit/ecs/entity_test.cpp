@@ -102,6 +102,20 @@ TEST(entity_map_test, insert_refuses_a_null_source) {
     EXPECT_EQ(map.find(null), null);
 }
 
+TEST(entity_map_test, source_at_names_the_version_mapped_at_an_index) {
+    entity_map map;
+    auto earlier = make_entity(3, 1), later = make_entity(3, 2), target = make_entity(7, 0);
+    EXPECT_EQ(map.source_at(earlier), null) << "nothing mapped yet";
+    map.insert(earlier, target);
+    EXPECT_EQ(map.source_at(earlier), earlier);
+    EXPECT_EQ(map.source_at(later), earlier) << "another version at the same index";
+    EXPECT_EQ(map.find(later), null);
+    EXPECT_EQ(map.source_at(make_entity(4, 1)), null) << "another index";
+    EXPECT_EQ(map.source_at(make_entity(100, 0)), null) << "an index past the map's end";
+    map.erase(earlier);
+    EXPECT_EQ(map.source_at(earlier), null);
+}
+
 TEST(type_info_test, type_name_spells_qualified_names) {
     EXPECT_EQ(type_name<ecs_test::position>(), "ecs_test::position");
     EXPECT_EQ(type_name<int>(), "int");

@@ -1,7 +1,8 @@
 // What a client does with values from its server that would hang or break its simulation:
 // settings, times and playout delays out of range, bodies it cannot simulate, and bodies or
 // constraints for entities that already have another role. Each is refused and counted; the
-// client keeps running.
+// client keeps running. Also what it does when the server reuses an entity's index: the
+// earlier entity's local one goes.
 #include "src/networking/extrapolation.hpp"
 #include "src/networking/network_registry.hpp"
 #include <chrono>
@@ -520,3 +521,79 @@ TEST(network_bounds, bodies_and_constraints_are_not_put_on_entities_with_another
 }
 
 } // namespace
+
+namespace bounds_versions {
+
+using namespace edyn;
+
+std::size_t body_count(lone_client &c) { return c.reg.view<rigidbody_tag>().size(); }
+
+// The server reuses an entity's index once it has destroyed it. A create_entity for the new
+// version may reach the client before the old one's destroy_entity (or with none: the old one
+// may have left the client's interest while the packet saying so was lost): the old local body
+// goes, rather than staying as a body no packet can name. A packet for the old version that
+// arrives after the new one's is late, and makes nothing.
+TEST(network_bounds, a_later_version_of_a_remote_index_replaces_the_earlier_one) {
+    lone_client c;
+    auto body_index = network_index_of<rigidbody_def>(c.reg);
+    registry server;
+    auto first = server.create();
+    server.destroy(first);
+    auto second = server.create();
+    ASSERT_EQ(to_index(first), to_index(second));
+    ASSERT_NE(first, second);
+
+    c.receive({packet::create_entity{
+        0, {first}, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    ASSERT_TRUE(is_body(c, first));
+    auto first_local = client_local_entity(c.reg, first);
+    c.frame();
+
+    c.receive({packet::create_entity{
+        0, {second}, {make_pool<rigidbody_def>(body_index, {{0, box_at({5, 1, 0})}})}}});
+    ASSERT_TRUE(is_body(c, second));
+    EXPECT_FALSE(c.reg.valid(first_local)) << "the earlier version's body stayed";
+    EXPECT_EQ(client_local_entity(c.reg, first), null);
+    EXPECT_EQ(body_count(c), 1u);
+    auto second_local = client_local_entity(c.reg, second);
+    EXPECT_NEAR(c.reg.get<position>(second_local).x, 5, 1e-4);
+
+    // The earlier version, late: its create_entity and its destroy_entity change nothing.
+    c.receive({packet::create_entity{
+        0, {first}, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    c.receive({packet::destroy_entity{0, {first}}});
+    for (int i = 0; i < 3; ++i)
+        c.frame();
+    EXPECT_EQ(client_local_entity(c.reg, second), second_local);
+    EXPECT_EQ(client_local_entity(c.reg, first), null);
+    EXPECT_TRUE(c.reg.valid(second_local));
+    EXPECT_EQ(body_count(c), 1u);
+
+    // Versions wrap round: the version after the last is later than it.
+    auto index = to_index(first);
+    auto last =
+        entity(entity_traits::value_type(index) | (entity_traits::version_mask << entity_traits::index_bits));
+    auto wrapped = entity(entity_traits::value_type(index));
+    lone_client d;
+    d.receive(
+        {packet::create_entity{0, {last}, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    d.receive({packet::create_entity{
+        0, {wrapped}, {make_pool<rigidbody_def>(body_index, {{0, box_at({5, 1, 0})}})}}});
+    EXPECT_TRUE(is_body(d, wrapped));
+    EXPECT_EQ(client_local_entity(d.reg, last), null);
+    EXPECT_EQ(body_count(d), 1u);
+
+    // An asset entering under a later version of a body's index takes the body's place too.
+    lone_client e;
+    e.receive({packet::create_entity{
+        0, {first}, {make_pool<rigidbody_def>(body_index, {{0, box_at({0, 1, 0})}})}}});
+    ASSERT_EQ(body_count(e), 1u);
+    e.receive({packet::entity_entered{{packet::entered_asset{second, 7, {}}}}});
+    EXPECT_EQ(body_count(e), 0u);
+    auto asset = client_local_entity(e.reg, second);
+    ASSERT_NE(asset, null);
+    EXPECT_TRUE(e.reg.all_of<asset_ref>(asset));
+    EXPECT_EQ(e.reg.get<asset_ref>(asset).id, 7u);
+}
+
+} // namespace bounds_versions
