@@ -70,6 +70,9 @@ void client_link_asset(registry &registry, entity asset_entity) {
         // A null member (from the server's bytes) maps nothing.
         if (remote == null || it == ref.entities.end() || !registry.valid(it->second)) continue;
         auto local = it->second;
+        // A member under the index of the asset's own entity (from the server's bytes) is not
+        // mapped: making room for it would destroy the asset while it is being linked.
+        if (ctx.remote_to_local.source_at(remote) == asset.remote) continue;
         if (!make_room_for(registry, ctx, remote) || !registry.valid(local)) continue;
         if (auto previous = ctx.local_to_remote.find(local); previous != null)
             ctx.remote_to_local.erase(previous);

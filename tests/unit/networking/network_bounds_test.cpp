@@ -594,6 +594,20 @@ TEST(network_bounds, a_later_version_of_a_remote_index_replaces_the_earlier_one)
     ASSERT_NE(asset, null);
     EXPECT_TRUE(e.reg.all_of<asset_ref>(asset));
     EXPECT_EQ(e.reg.get<asset_ref>(asset).id, 7u);
+
+    // A member named by a later version of the asset's own index does not take the asset's
+    // place when the program links the asset (which would destroy it while it is linked).
+    lone_client f;
+    f.receive({packet::entity_entered{{packet::entered_asset{first, 9, {{0, second}}}}}});
+    auto own = client_local_entity(f.reg, first);
+    ASSERT_NE(own, null);
+    auto member = f.reg.create();
+    assign_to_asset<>(f.reg, own, 0, member);
+    client_link_asset(f.reg, own);
+    EXPECT_TRUE(f.reg.valid(own));
+    EXPECT_EQ(client_local_entity(f.reg, first), own);
+    EXPECT_EQ(client_local_entity(f.reg, second), null);
+    f.frame();
 }
 
 } // namespace bounds_versions
