@@ -1,5 +1,8 @@
 #include "edyn/constraints/cone_constraint.hpp"
 #include "../math/arctan2.hpp"
+#include "edyn/constraints/constraint_links.hpp"
+#include "edyn/constraints/cvjoint_constraint.hpp"
+#include "edyn/constraints/point_constraint.hpp"
 #include "edyn/dynamics/velocity.hpp"
 #include <algorithm>
 #include <cmath>
@@ -58,6 +61,60 @@ cone_row current_row(const cone_constraint_solver &s, const joint_pose &pose, co
     return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), C, true};
 }
 
+// How far from the apex, on the cone's body, a joint's pivot may lie for the joint to hold the
+// apex (m).
+constexpr scalar apex_tolerance = scalar(1e-3);
+
+// Whether a joint of type Joint on `entity` joins the cone's two bodies at its apex.
+template<typename Joint>
+bool holds_apex(const registry &registry, entity entity, const cone_constraint &c) {
+    auto *joint = registry.try_get<Joint>(entity);
+    if (joint == nullptr) return false;
+    for (int i = 0; i < 2; ++i) {
+        if (joint->body[i] == c.body[0] && joint->body[1 - i] == c.body[1])
+            return distance_sqr(joint->pivot[i], c.pivot[0]) <= apex_tolerance * apex_tolerance;
+    }
+    return false;
+}
+
+// Whether a point or CV joint holds the cone's point body at its apex. Walks the point body's
+// constraint list: a few entries on a limb.
+bool find_apex_joint(const registry &registry, const cone_constraint &c) {
+    auto *list = registry.try_get<constraint_list>(c.body[1]);
+    if (list == nullptr) return false;
+    for (auto e = list->first; e != null;) {
+        if (holds_apex<point_constraint>(registry, e, c) || holds_apex<cvjoint_constraint>(registry, e, c))
+            return true;
+        const auto &links = registry.get<constraint_links>(e);
+        e = links.next[links.body[0] == c.body[1] ? 0 : 1];
+    }
+    return false;
+}
+
+// A bounce of a point whose body a joint holds at the apex, solved as an isolated collision:
+// the wall's row and the apex's 3x3 block iterated together from zero impulses, so that the
+// point leaves the wall at `bounce` with the body turning about the apex. The wall's row alone
+// would move the apex, and the joint would then take part of the bounce back.
+void bounce_about_apex(const cone_constraint_solver &s, const jacobian &wall, scalar bounce, solver_body &a,
+                       solver_body &b) noexcept {
+    constexpr int iterations = 32;
+    auto pose = current_pose(s.anchor, a, b);
+    // The apex is pivot A; on B it is the point pivot B plus the separation.
+    joint_pose apex{pose.rA, pose.rB + pose.d, vector3_zero};
+    matrix3x3 apex_mass;
+    if (!inverse_point_mass(a, b, apex, apex_mass)) return;
+    auto wall_mass = row_effective_mass(wall, a, b);
+    scalar wall_impulse = 0;
+    for (int k = 0; k < iterations; ++k) {
+        auto new_impulse =
+            std::max(wall_impulse + wall_mass * (bounce - row_velocity(wall, a, b)), scalar(0));
+        apply_row_impulse(wall, a, b, new_impulse - wall_impulse);
+        wall_impulse = new_impulse;
+        auto hold = -(apex_mass * relative_velocity(a, b, apex.rA, apex.rB));
+        apply_impulse(a, b, hold, apex.rA, apex.rB);
+    }
+}
+
 } // namespace
 
 cone_constraint_solver make_constraint_solver(const registry &registry, const cone_constraint &c,
@@ -80,6 +137,7 @@ cone_constraint_solver make_constraint_solver(const registry &registry, const co
         b.angvel = registry.get<angvel>(c.body[1]);
         auto row = current_row(s, current_pose(s.anchor, a, b), a);
         if (row.valid) s.start_rate = row_velocity(row.j, a, b);
+        s.apex_held = find_apex_joint(registry, c);
     }
     return s;
 }
@@ -129,11 +187,15 @@ void solve(cone_constraint_solver &s, std::span<solver_body> bodies,
             // The warm-started push is part of the approach being answered.
             apply_row_impulse(wall, a, b, -s.impulse);
             s.impulse = 0;
-            auto mass = row_effective_mass(wall, a, b);
             auto bounce = -s.restitution * approach;
-            auto p = std::max(mass * (bounce - row_velocity(wall, a, b)), scalar(0));
-            // Not accumulated in the wall's impulse, which would take it back once separating.
-            apply_row_impulse(wall, a, b, p);
+            if (s.apex_held) {
+                bounce_about_apex(s, wall, bounce, a, b);
+            } else {
+                auto mass = row_effective_mass(wall, a, b);
+                auto p = std::max(mass * (bounce - row_velocity(wall, a, b)), scalar(0));
+                // Not accumulated in the wall's impulse, which would take it back once separating.
+                apply_row_impulse(wall, a, b, p);
+            }
             return;
         }
     }

@@ -128,6 +128,62 @@ TEST_F(cone_joint, wall_reflects_the_normal_velocity_with_restitution) {
         << expected.y << ", " << expected.z << ")";
 }
 
+TEST_F(cone_joint, a_rod_held_at_the_apex_rebounds_with_the_restitution_times_its_swing) {
+    // The rod hangs from the apex by a point or CV joint, given either way round, and swings
+    // about it at w0 (no gravity) into a 30 degree cone. The wall stops its lower end, and the
+    // joint holds the upper one, so the rod turns back about the apex: at -e w0, its upper end
+    // still at the apex. (Bounced by the wall's row alone, the joint took the apex's share of the
+    // push back: -1.01 rad/s for e = 1, -0.26 for e = 0.5, 0 for e = 0.1.)
+    const auto span = to_radians(30);
+    const scalar w0 = 2;
+    enum class apex_joint { point, point_reversed, cvjoint };
+    for (auto joint : {apex_joint::point, apex_joint::point_reversed, apex_joint::cvjoint}) {
+        for (scalar e : {scalar(0.1), scalar(0.5), scalar(1)}) {
+            registry r;
+            std::swap(reg, r);
+            attach(reg, edyn::test::test_config());
+            set_gravity(reg, vector3_zero);
+            anchor = edyn::test::make_anchor(reg, apex);
+            auto def = edyn::test::box_def({scalar(0.05), rod_half_length, scalar(0.05)},
+                                           apex - vector3{0, rod_half_length, 0});
+            def.angvel = {0, 0, w0};
+            def.linvel = {w0 * rod_half_length, 0, 0};
+            rod = make_rigidbody(reg, def);
+            const vector3 top{0, rod_half_length, 0};
+            if (joint == apex_joint::point) {
+                make_constraint<point_constraint>(reg, anchor, rod,
+                                                  [&](point_constraint &c) { c.pivot[1] = top; });
+            } else if (joint == apex_joint::point_reversed) {
+                make_constraint<point_constraint>(reg, rod, anchor,
+                                                  [&](point_constraint &c) { c.pivot[0] = top; });
+            } else {
+                make_constraint<cvjoint_constraint>(reg, anchor, rod, [&](cvjoint_constraint &c) {
+                    c.pivot[1] = top;
+                    c.frame[0] = c.frame[1] = matrix3x3_columns(-vector3_y, vector3_x, vector3_z);
+                });
+            }
+            make_constraint<cone_constraint>(reg, anchor, rod, [&](cone_constraint &c) {
+                c.pivot[1] = {0, -rod_half_length, 0};
+                c.frame = matrix3x3_columns(-vector3_y, vector3_x, vector3_z);
+                c.span_angle[0] = c.span_angle[1] = span;
+                c.restitution = e;
+            });
+            // The wall is reached after span / w0 = 0.26 s; the rod is back at the vertical
+            // 0.26 / e s later.
+            run_for(span / w0 + scalar(0.1));
+            auto w = angular(rod);
+            EXPECT_NEAR(w.z, -e * w0, scalar(0.01) * w0)
+                << "joint " << int(joint) << ", e = " << e << ": rebound (" << w.x << ", " << w.y << ", "
+                << w.z << ") rad/s";
+            EXPECT_LT(std::hypot(w.x, w.y), scalar(1e-3)) << "joint " << int(joint) << ", e = " << e;
+            EXPECT_LT(distance(edyn::test::world_pivot(reg, rod, top), apex), scalar(0.002))
+                << "joint " << int(joint) << ", e = " << e;
+            detach(reg);
+            std::swap(reg, r);
+        }
+    }
+}
+
 TEST_F(cone_joint, bump_stop_slows_the_swing_before_the_wall) {
     set_gravity(reg, vector3_zero);
     const auto span = to_radians(30), bump_stop = to_radians(10);

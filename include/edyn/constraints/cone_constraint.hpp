@@ -27,7 +27,10 @@ struct cone_constraint {
     /// span_angle[0] towards the frame's second column, span_angle[1] towards the third;
     /// default pi/4 each.
     scalar span_angle[2]{pi / 4, pi / 4};
-    /// Restitution of the cone's wall in [0, 1]; default 0.
+    /// Restitution of the cone's wall in [0, 1]; default 0. Where a point or CV joint joins the
+    /// same two bodies with its pivot on body[0] within 1 mm of the apex, the bounce is solved
+    /// with that joint holding the apex, as one collision: the point leaves the wall at the
+    /// restitution times its approach speed, the rest of the body turning about the apex.
     scalar restitution{0};
     /// Within bump_stop_angle of the wall, a spring of bump_stop_stiffness (Nm/rad) pushes the
     /// point back towards the axis.
@@ -71,6 +74,9 @@ struct cone_constraint_solver {
     /// Measured only with restitution on.
     scalar start_rate{0};
     bool bounced{false}; ///< Whether the wall already bounced this step: a step answers one approach.
+    /// Whether a point or CV joint holds body[1] at the apex (see cone_constraint::restitution).
+    /// Looked for only with restitution on.
+    bool apex_held{false};
     /// @var wall
     /// The wall's row at the bodies' present poses (refresh_geometry()).
     /// @var wall_angle
@@ -90,7 +96,8 @@ struct cone_constraint_solver {
 /// Prepares a cone for this step's solve: apex, point and frame in world space, tangents of
 /// the spans, the approach rate for restitution and last step's impulses.
 /// @param registry The registry holding the constraint's bodies; with restitution their
-/// `linvel` and `angvel` are read.
+/// `linvel` and `angvel` are read, and the constraints joining body[1] are looked through for
+/// a point or CV joint at the apex.
 /// @param c The constraint component.
 /// @param indices The bodies' indices in the step's solver bodies.
 /// @return The solver state.
