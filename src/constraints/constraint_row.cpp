@@ -32,16 +32,14 @@ void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a,
 
 template<constraint_row Row>
 void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
-                     const constraint_solve_context &ctx, scalar bounce_velocity) noexcept {
+                     const constraint_solve_context &ctx) noexcept {
     // An open limit holding no impulse, which the motion does not close within the sub-step,
     // has nothing to do (the common case, far from the limit): its effective mass is not needed.
-    if (bounce_velocity <= 0 && C > 0 && impulse == 0 && row_velocity(j, a, b) + C * ctx.inv_h >= 0) return;
+    if (C > 0 && impulse == 0 && row_velocity(j, a, b) + C * ctx.inv_h >= 0) return;
     auto mass = row_effective_mass(j, a, b);
     if (mass == 0) return;
     scalar bias = 0, mass_scale = 1, impulse_scale = 0;
-    if (bounce_velocity > 0) {
-        bias = -bounce_velocity;
-    } else if (C > 0) {
+    if (C > 0) {
         // Speculative: the gap may close within this sub-step, no more.
         bias = C * ctx.inv_h;
     } else if (ctx.use_bias) {
@@ -91,7 +89,7 @@ void solve_spring_row(const Row &j, scalar C, scalar k, scalar c, scalar &impuls
     template void solve_equality_row(const Row &, scalar, scalar &, solver_body &, solver_body &,            \
                                      const constraint_solve_context &) noexcept;                             \
     template void solve_limit_row(const Row &, scalar, scalar &, solver_body &, solver_body &,               \
-                                  const constraint_solve_context &, scalar) noexcept;                        \
+                                  const constraint_solve_context &) noexcept;                                \
     template void solve_friction_row(const Row &, scalar, scalar &, solver_body &, solver_body &) noexcept;  \
     template void solve_spring_row(const Row &, scalar, scalar, scalar, scalar &, solver_body &,             \
                                    solver_body &, const constraint_solve_context &, bool) noexcept;

@@ -257,8 +257,7 @@ void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a,
                         const constraint_solve_context &ctx) noexcept;
 
 /// Unilateral row keeping C >= 0 (impulse >= 0). A gap (C > 0) may close within the sub-step
-/// but no further. `bounce_velocity`, when positive, is the separating velocity the row must
-/// reach (restitution); it replaces the soft correction.
+/// but no further.
 /// Does nothing when the row's effective mass is zero.
 /// @param j The row.
 /// @param C The row's gap now (m or rad): positive apart, negative past the limit.
@@ -266,10 +265,9 @@ void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a,
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
 /// @param ctx The pass: sub-step, softness and whether to correct position errors.
-/// @param bounce_velocity Separating velocity to reach when positive (m/s or rad/s); 0 for none.
 template<constraint_row Row>
 void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
-                     const constraint_solve_context &ctx, scalar bounce_velocity = 0) noexcept;
+                     const constraint_solve_context &ctx) noexcept;
 
 /// Row driving its velocity to zero with an impulse bounded by max_impulse per sub-step.
 /// Does nothing when the row's effective mass is zero.

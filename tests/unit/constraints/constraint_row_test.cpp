@@ -121,7 +121,7 @@ TEST(constraint_row, an_angular_row_gives_the_bits_of_its_jacobian) {
                 solve_limit_row(row, scalar(-0.01), impulse, a, b, ctx);
             });
             run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
-                solve_limit_row(row, scalar(0.001), impulse, a, b, ctx, scalar(0.5));
+                solve_limit_row(row, scalar(0.001), impulse, a, b, ctx);
             });
             run([&](const auto &row, scalar &impulse, solver_body &a, solver_body &b) {
                 solve_friction_row(row, scalar(0.05), impulse, a, b);
