@@ -2,7 +2,7 @@
 // one thread, then the same amount on each of N threads at once; the speed-up is N times the
 // first time over the second. A physics step cannot scale better than the kernel its hot loops
 // resemble: two logical CPUs that share one core's arithmetic units give independent
-// floating-point work no speed-up at all, though they still overlap waits on memory. The step's
+// floating-point work little speed-up, though they still overlap waits on memory. The step's
 // threads also hand data to each other between its passes, at the pace of a cache line's round
 // trip between two cores, which a virtual machine's cores may take four times longer over at
 // times than at others.

@@ -59,7 +59,7 @@ if [ "${1:-}" = "--scaling" ]; then
   done
   after=$(core_speeds)
   # The machine's own ceiling: what independent work gains on the same thread counts. Logical
-  # CPUs that share a core's arithmetic units give the arithmetic kernel no speed-up.
+  # CPUs that share a core's arithmetic units give the arithmetic kernel little speed-up.
   ceiling=""
   if [ "${counts[-1]}" -ge 2 ]; then
     ceiling=$(./build-release/bench/edyn-bench --machine-ceiling --threads "${counts[-1]}" 2>/dev/null)
