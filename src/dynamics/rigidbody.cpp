@@ -61,8 +61,17 @@ bool is_symmetric(const matrix3x3 &m) {
 
 // Sylvester's criterion: every leading principal minor positive. Positive diagonal entries and
 // a positive determinant are not enough (two negative eigenvalues have a positive product).
+// Tested on the tensor scaled to a unit diagonal (entry ij over the square root of ii times jj),
+// which is positive definite when the tensor is, and whose minors neither overflow nor underflow
+// however far apart the moments are (1e-12 and 1e30 in one tensor).
 bool is_positive_definite(const matrix3x3 &m) {
-    return m[0][0] > 0 && m[0][0] * m[1][1] - m[0][1] * m[1][0] > 0 && determinant(m) > 0;
+    if (!(m[0][0] > 0 && m[1][1] > 0 && m[2][2] > 0)) return false;
+    const vector3 s{1 / std::sqrt(m[0][0]), 1 / std::sqrt(m[1][1]), 1 / std::sqrt(m[2][2])};
+    matrix3x3 n;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            n[i][j] = m[i][j] * s[i] * s[j];
+    return n[0][0] * n[1][1] - n[0][1] * n[1][0] > 0 && determinant(n) > 0;
 }
 
 void check_inertia(const char *function, const matrix3x3 &inertia) {

@@ -370,3 +370,34 @@ TEST_F(material_mixing_override, pair_restitution_overrides_the_bounce) {
     EXPECT_NEAR(peak, expected, edyn::test::rebound_tolerance(reg, 2, expected))
         << "peak " << peak << " m, expected " << expected;
 }
+
+// A sphere set sliding at v0 without turning rolls at 5/7 v0 once friction has stopped the slip,
+// whatever its mass: a trillion-kilogram sphere and a 1.5 km rock of 4.2e13 kg as well. Their
+// inertias (4e13 and 3.8e19 kg m^2) have determinants past the largest float; inverted as they
+// are, the first had no rotation at all (it stopped dead) and the second had NaN in its state
+// after the first step.
+TEST_F(friction, a_sliding_sphere_rolls_at_five_sevenths_of_its_speed_at_any_mass) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar v0 = 1;
+    struct sphere {
+        scalar mass, radius;
+    };
+    const sphere spheres[]{{1, scalar(0.5)}, {scalar(1e12), 10}, {scalar(4.24e13), 1500}};
+    std::vector<entity> bodies;
+    for (int k = 0; k < 3; ++k) {
+        auto def = edyn::test::sphere_def(spheres[k].radius, {scalar(4000 * k), spheres[k].radius, 0},
+                                          spheres[k].mass);
+        def.material->friction = 1;
+        def.linvel = {v0, 0, 0};
+        def.sleeping_disabled = true;
+        bodies.push_back(make_rigidbody(reg, def));
+    }
+    run_for(1);
+    for (int k = 0; k < 3; ++k) {
+        auto e = bodies[k];
+        auto r = spheres[k].radius;
+        EXPECT_NEAR(vel(e).x, v0 * 5 / 7, scalar(0.005) * v0) << "mass " << spheres[k].mass;
+        EXPECT_NEAR(-angular(e).z * r, vel(e).x, scalar(0.005) * v0) << "mass " << spheres[k].mass;
+        EXPECT_NEAR(pos(e).y, r, scalar(0.01)) << "mass " << spheres[k].mass;
+    }
+}

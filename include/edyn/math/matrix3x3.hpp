@@ -3,6 +3,9 @@
 
 #include "edyn/math/quaternion.hpp"
 #include "edyn/math/vector3.hpp"
+#include <algorithm>
+#include <limits>
+#include <utility>
 
 namespace edyn {
 
@@ -124,15 +127,39 @@ constexpr matrix3x3 &operator*=(matrix3x3 &a, const matrix3x3 &b) noexcept { ret
 constexpr scalar determinant(const matrix3x3 &m) noexcept { return dot(m[0], cross(m[1], m[2])); }
 
 /// Inverse through the adjugate, for example of an inertia tensor; use `transpose` for rotations.
+/// A matrix of finite entries whose determinant overflows, or falls below the smallest normal
+/// scalar, or whose adjugate overflows (an asteroid's inertia, a sand grain's: in single
+/// precision, entries past about 1e12 or below about 1e-13) is inverted scaled by its largest
+/// entry, then scaled back; any other is inverted as it is.
 /// @param m A matrix with a non-zero determinant (precondition, checked by `EDYN_ASSERT` only).
 /// @return The inverse of `m`.
 constexpr matrix3x3 inverse(const matrix3x3 &m) noexcept {
-    auto c0 = cross(m[1], m[2]);
-    auto c1 = cross(m[2], m[0]);
-    auto c2 = cross(m[0], m[1]);
-    auto det = dot(m[0], c0);
-    EDYN_ASSERT(det != scalar(0), "inverse of a singular matrix");
-    return matrix3x3_columns(c0, c1, c2) * (scalar(1) / det);
+    auto adjugate_inverse = [](const matrix3x3 &n) {
+        auto c0 = cross(n[1], n[2]);
+        auto c1 = cross(n[2], n[0]);
+        auto c2 = cross(n[0], n[1]);
+        return std::pair{matrix3x3_columns(c0, c1, c2), dot(n[0], c0)};
+    };
+    auto [adjugate, det] = adjugate_inverse(m);
+    auto magnitude = det < 0 ? -det : det;
+    if (magnitude >= std::numeric_limits<scalar>::min() && magnitude <= std::numeric_limits<scalar>::max())
+        return adjugate * (scalar(1) / det);
+    scalar largest = 0;
+    bool finite = true;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            auto entry = m[i][j] < 0 ? -m[i][j] : m[i][j];
+            finite = finite && entry <= std::numeric_limits<scalar>::max();
+            largest = std::max(largest, entry);
+        }
+    }
+    // Entries that are infinite or NaN give what the adjugate gives.
+    if (!finite) return adjugate * (scalar(1) / det);
+    EDYN_ASSERT(largest > scalar(0), "inverse of a singular matrix");
+    auto scale = scalar(1) / largest;
+    auto [scaled_adjugate, scaled_det] = adjugate_inverse(m * scale);
+    EDYN_ASSERT(scaled_det != scalar(0), "inverse of a singular matrix");
+    return scaled_adjugate * (scale / scaled_det);
 }
 
 /// Rotation matrix equal to the unit quaternion `q`; its columns are the rotated axes.

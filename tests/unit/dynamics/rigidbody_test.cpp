@@ -133,6 +133,13 @@ TEST_F(rigidbody_test, an_amorphous_dynamic_body_needs_a_valid_inertia) {
     EXPECT_NO_THROW(make_rigidbody(reg, def));
     def.inertia = diagonal_matrix(vector3{min_body_inertia, max_body_inertia, 1});
     EXPECT_NO_THROW(make_rigidbody(reg, def));
+    // Uniform tensors anywhere in the range, whose determinants overflow a float from 1e13 up,
+    // are accepted with their inverse (they were refused from 1e20, and 1e13 had an inverse of 0).
+    for (auto moment : {scalar(1e13), scalar(1e20), max_body_inertia}) {
+        def.inertia = diagonal_matrix(vector3{moment, moment, moment});
+        auto big = make_rigidbody(reg, def);
+        EXPECT_NEAR(reg.get<inertia_inv>(big)[1][1] * moment, 1, scalar(1e-6)) << moment;
+    }
     def.inertia = diagonal_matrix(vector3{1, 2, 3});
     auto e = make_rigidbody(reg, def);
     EXPECT_EQ(static_cast<const matrix3x3 &>(reg.get<inertia>(e)), diagonal_matrix(vector3{1, 2, 3}));

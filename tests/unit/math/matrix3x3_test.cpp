@@ -48,6 +48,19 @@ TEST(matrix3x3_test, inverse_and_determinant) {
     expect_near(inverse(d), diagonal_matrix({0.5, 0.25, 0.125}));
 }
 
+// An asteroid's inertia (1e19 kg m^2 and more) and a sand grain's (1e-13): their determinants
+// overflow a float or fall below its smallest normal value, yet the inverses are ordinary floats.
+TEST(matrix3x3_test, inverse_of_very_large_and_very_small_matrices) {
+    auto r = to_matrix3x3(normalize(quaternion{scalar(0.3), scalar(-0.2), scalar(0.1), 1}));
+    for (scalar size : {scalar(1e13), scalar(1e20), scalar(1e30), scalar(1e-13), scalar(1e-20)}) {
+        auto m = r * diagonal_matrix(vector3{1, 2, 3} * size) * transpose(r);
+        auto inv = inverse(m);
+        // inv * m is the identity, and inv scales as 1 / size.
+        expect_near(inv * m, matrix3x3_identity, 1e-5);
+        expect_near(inv * size, r * diagonal_matrix({1, scalar(0.5), scalar(1) / 3}) * transpose(r), 1e-5);
+    }
+}
+
 TEST(matrix3x3_test, skew_matrix_is_cross_product) {
     vector3 a{1, 2, 3}, b{-4, 0.5, 2};
     expect_near(skew_matrix(a) * b, cross(a, b));
