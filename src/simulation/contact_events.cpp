@@ -1,4 +1,5 @@
 #include "edyn/simulation/contact_events.hpp"
+#include <cstddef>
 
 namespace edyn {
 
@@ -33,13 +34,21 @@ void contact_events::publish(const event &e) {
 }
 
 void contact_events::deliver(const registry &registry) {
+    // What was handed out leaves `pending` however the loop ends: a listener that throws leaves
+    // the events after its own for the next delivery, and none is told twice.
+    struct drop_delivered {
+        contact_events &events;
+        ~drop_delivered() {
+            events.pending.erase(events.pending.begin(),
+                                 events.pending.begin() + std::ptrdiff_t(events.delivered));
+            events.delivered = 0;
+        }
+    } drop{*this};
     // Listeners may cause new events (by destroying bodies): those are delivered as well.
     for (delivered = 0; delivered < pending.size();) {
         auto e = pending[delivered++];
         if (registry.valid(e.manifold)) publish(e);
     }
-    pending.clear();
-    delivered = 0;
 }
 
 contact_events::untold contact_events::withdraw(entity manifold) {

@@ -28,11 +28,13 @@ namespace {
 void record_events(contact_events &events, entity manifold, const contact_point_changes &changes) {
     using kind = contact_events::kind;
     if (changes.contact_started()) events.pending.push_back({kind::started, manifold, 0});
-    for (std::uint32_t i = 0; i < changes.num_created; ++i) {
-        events.pending.push_back({kind::point_created, manifold, changes.created[i]});
-    }
+    // Destroyed before created: a new point may take the slot a point removed in the same step
+    // freed, and its id must be left alive.
     for (std::uint32_t i = 0; i < changes.num_destroyed; ++i) {
         events.pending.push_back({kind::point_destroyed, manifold, changes.destroyed[i]});
+    }
+    for (std::uint32_t i = 0; i < changes.num_created; ++i) {
+        events.pending.push_back({kind::point_created, manifold, changes.created[i]});
     }
     if (changes.contact_ended()) events.pending.push_back({kind::ended, manifold, 0});
 }

@@ -18,7 +18,9 @@ using contact_point_signal_t = sigh<void(entity, contact_manifold::id_type)>;
 /// point).
 /// Collision events are recorded during the narrowphase and delivered at the end of the step,
 /// so the solver's impulses are in the manifold when listeners read it. Per manifold the order
-/// is: started, points created, points destroyed, ended. A manifold destroyed while in contact
+/// is: started, points destroyed, points created, ended. A point created in the slot of one
+/// destroyed in the same step comes after it, with the same id: the slot then holds the new
+/// point, which a point_destroyed listener reads if it reads the slot. A manifold destroyed while in contact
 /// (its bodies' AABBs separated, a body was destroyed or filtered out) reports its points
 /// destroyed and contact ended at once, while the entity is still valid. Events are recorded
 /// only while some listener is connected. In asynchronous mode they are delivered on the
@@ -87,7 +89,8 @@ struct contact_events {
     }
     /// Delivers the pending events in order, skipping manifolds destroyed meanwhile.
     /// Events that listeners cause (by destroying bodies) are delivered in the same call;
-    /// `pending` is empty afterwards.
+    /// `pending` is empty afterwards. When a listener throws, the events handed out so far,
+    /// its own included, leave `pending`; the others stay for the next call.
     /// @param registry The registry the manifolds live in.
     void deliver(const registry &registry);
     /// Delivers one event now, to the listeners of its kind.
