@@ -480,16 +480,24 @@ namespace {
 
 // One Gauss-Seidel pass over a manifold's normal rows towards the separation speeds `target`,
 // with the impulses accumulated in `normal` (from zero at the bounce) and never pulling.
-void bounce_normal_pass(const contact_solver_constraint &c, std::span<contact_solver_point> points,
-                        const scalar *target, scalar *normal, solver_body &a, solver_body &b) {
+// Returns the largest change it made to an impulse.
+scalar bounce_normal_pass(const contact_solver_constraint &c, std::span<contact_solver_point> points,
+                          const scalar *target, scalar *normal, solver_body &a, solver_body &b) {
+    scalar largest_change = 0;
     for (std::uint32_t i = 0; i < c.num_points; ++i) {
         auto &p = points[i];
         auto vn = row_velocity<fixed_side::none>(p.normal_row, p.normal, a, b);
         auto new_impulse = std::max(normal[i] + p.normal_mass * (target[i] - vn), scalar(0));
         apply_row<fixed_side::none>(p.normal_row, p.normal, new_impulse - normal[i], a, b);
+        largest_change = std::max(largest_change, std::abs(new_impulse - normal[i]));
         normal[i] = new_impulse;
     }
+    return largest_change;
 }
+
+// A manifold's bounce has converged once a pass changes no normal impulse by more than this
+// fraction of the largest.
+constexpr scalar bounce_convergence = scalar(1e-4);
 
 // Solves one manifold's bounce as an isolated collision: each call is a new collision event,
 // so its impulses start from zero. Returns whether any point was hit.
@@ -529,8 +537,12 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
     }
     if (!any) return false;
 
+    // The points of a box landing flat pull its turn each way: each pass leaves a quarter or so
+    // of the last one's error, so the passes go on until the impulses settle (one pass more
+    // than the first for a single point), at most `iterations`.
     for (unsigned k = 0; k < iterations; ++k) {
-        bounce_normal_pass(c, points, target, normal, a, b);
+        auto change = bounce_normal_pass(c, points, target, normal, a, b);
+        if (k > 0 && change <= bounce_convergence * *std::max_element(normal, normal + c.num_points)) break;
         for (std::uint32_t i = 0; i < c.num_points; ++i) {
             auto &p = points[i];
             auto mean_mass = (p.tangent_mass[0] + p.tangent_mass[1]) * scalar(0.5);

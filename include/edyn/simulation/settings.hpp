@@ -54,9 +54,9 @@ struct settings {
     /// Iterations of the restitution solver per sub-step; default 8; 0 turns it off
     /// (set_solver_restitution_iterations).
     unsigned num_restitution_iterations{8};
-    /// Iterations the restitution solver spends on each group of contacts; default 3
-    /// (set_solver_individual_restitution_iterations).
-    unsigned num_individual_restitution_iterations{3};
+    /// Most iterations the restitution solver spends on each group of contacts, which it stops
+    /// once their impulses settle; default 32 (set_solver_individual_restitution_iterations).
+    unsigned num_individual_restitution_iterations{32};
     /// update() runs at most this many steps; default 10 (set_max_steps_per_update).
     /// The rest of a long pause is dropped so that a slow frame cannot make the next one slower
     /// still.

@@ -211,10 +211,11 @@ void set_solver_restitution_iterations(registry &registry, unsigned iterations);
 /// @return Iterations per sub-step.
 /// @throws std::invalid_argument When the registry is not attached.
 unsigned get_solver_restitution_iterations(const registry &registry);
-/// Sets the number of iterations the restitution solver spends on each small group of
-/// contacts it solves in isolation.
+/// Sets the most iterations the restitution solver spends on each small group of contacts it
+/// solves in isolation; it stops sooner once no impulse of the group changes by more than 1e-4
+/// of the largest.
 /// @param registry An attached registry.
-/// @param iterations Iterations per group, in [0, `max_solver_iterations`]; default 3.
+/// @param iterations Iterations per group, in [0, `max_solver_iterations`]; default 32.
 /// @throws std::invalid_argument Naming the function and the value, when `iterations` is
 /// outside that range, or when the registry is not attached.
 void set_solver_individual_restitution_iterations(registry &registry, unsigned iterations);
