@@ -67,7 +67,7 @@ bool is_symmetric(const matrix3x3 &m) {
 bool is_positive_definite(const matrix3x3 &m) {
     if (!(m[0][0] > 0 && m[1][1] > 0 && m[2][2] > 0)) return false;
     const vector3 s{1 / std::sqrt(m[0][0]), 1 / std::sqrt(m[1][1]), 1 / std::sqrt(m[2][2])};
-    matrix3x3 n;
+    auto n = matrix3x3_zero;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             n[i][j] = m[i][j] * s[i] * s[j];
