@@ -223,32 +223,38 @@ void adopt_main_side(registry &registry, constraint_type_list<Constraints...>) {
     (link_all(static_cast<Constraints *>(nullptr)), ...);
 }
 
-// The settings and filter as they are now on the main side, and the material table when it
-// differs from `sent`, the one the worker has (which it then becomes): the table is copied only
-// when the program changed it.
-worker_op settings_op(registry &registry, std::optional<material_mix_table> &sent) {
-    auto s = get_settings(registry);
-    auto paused = is_paused(registry);
+// The filter as it is now on the main side; the settings and pause when they differ from
+// `sent`, the ones the worker has; and the material table when it differs from `sent_table`.
+// Settings and table are copied only when the program changed them, so that what a step
+// callback changed on the worker stays there.
+worker_op settings_op(registry &registry, std::optional<world_controls> &sent,
+                      std::optional<material_mix_table> &sent_table) {
+    auto now = world_controls{get_settings(registry), is_paused(registry)};
+    std::optional<world_controls> controls;
+    if (now != sent) controls = sent = now;
     auto filter = get_should_collide(registry);
     auto events = registry.ctx().get<contact_events>().has_listeners();
-    auto *now = registry.ctx().find<material_mix_table>();
-    auto table_changed = now ? !sent || sent->pairs != now->pairs : sent.has_value();
+    auto *table_now = registry.ctx().find<material_mix_table>();
+    auto table_changed =
+        table_now ? !sent_table || sent_table->pairs != table_now->pairs : sent_table.has_value();
     std::optional<material_mix_table> table;
     if (table_changed) {
-        if (now) table = *now;
-        sent = table;
+        if (table_now) table = *table_now;
+        sent_table = table;
     }
-    return [s, paused, filter, events, table_changed, table = std::move(table)](worker_context &w) mutable {
+    return [controls, filter, events, table_changed, table = std::move(table)](worker_context &w) mutable {
         w.send_events(events);
         auto &reg = w.reg;
-        auto &current = reg.ctx().get<settings>();
-        auto mode = current.execution_mode;
-        auto gravity_changed = current.gravity != s.gravity;
-        current = s;
-        current.execution_mode = mode;
-        // set_gravity wakes resting bodies, which must fall the new way.
-        if (gravity_changed) set_gravity(reg, s.gravity);
-        set_paused(reg, paused);
+        if (controls) {
+            auto &current = reg.ctx().get<settings>();
+            auto mode = current.execution_mode;
+            auto gravity_changed = current.gravity != controls->settings.gravity;
+            current = controls->settings;
+            current.execution_mode = mode;
+            // set_gravity wakes resting bodies, which must fall the new way.
+            if (gravity_changed) set_gravity(reg, current.gravity);
+            set_paused(reg, controls->paused);
+        }
         if (filter == &should_collide_default)
             reset_should_collide(reg);
         else
@@ -378,7 +384,9 @@ bool async_execution::pending_after(entity e, std::uint64_t ops_applied, motion_
 void async_execution::send_batch(registry &registry, worker_op last, std::optional<double> time) {
     // The actions made since the last batch go with it, to the worker's next step.
     detail::consume_actions(registry);
-    push(settings_op(registry, sent_table));
+    auto controls_before = sent_controls;
+    push(settings_op(registry, sent_controls, sent_table));
+    if (sent_controls != controls_before) controls_seq = ops_made;
     if (last) push(std::move(last));
     last_batch = worker->send(ops, time);
 }
@@ -479,6 +487,22 @@ void async_execution::apply(registry &registry, worker_message &message, bool mo
     for (auto &error : message.errors)
         errors.push_back(error);
     if (message.has_alpha) alpha = message.alpha;
+    adopt_controls(registry, message);
+}
+
+void async_execution::adopt_controls(registry &registry, const worker_message &message) {
+    // A step callback changed the worker's settings or paused it. The program's registry takes
+    // them unless the program changed its own since they were last sent, or the worker had not
+    // yet received those: then the program's stand, and go to the worker at the next batch.
+    if (!message.controls || message.ops_applied < controls_seq) return;
+    auto &current = registry.ctx().get<settings>();
+    auto &world = registry.ctx().get<world_state>();
+    if (sent_controls != world_controls{current, world.paused}) return;
+    auto mode = current.execution_mode;
+    current = message.controls->settings;
+    current.execution_mode = mode;
+    world.paused = message.controls->paused;
+    sent_controls = world_controls{current, world.paused};
 }
 
 void async_execution::apply_motion(registry &registry, const std::vector<body_state> &states,

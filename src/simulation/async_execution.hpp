@@ -61,6 +61,7 @@ private:
     // constraints (skipped when later messages of the same update carry newer ones).
     void apply(registry &registry, worker_message &message, bool motion, bool contacts);
     void apply_records(registry &registry, const std::vector<worker_record> &records);
+    void adopt_controls(registry &registry, const worker_message &message);
     void apply_motion(registry &registry, const std::vector<body_state> &states, std::uint64_t ops_applied);
     void apply_manifolds(registry &registry, const std::vector<std::pair<entity, contact_manifold>> &states);
     template<typename Constraint>
@@ -93,6 +94,10 @@ private:
     std::vector<std::exception_ptr> errors;
     // The material table the worker has, to send it again only when the program changes it.
     std::optional<material_mix_table> sent_table;
+    // The settings and pause last sent to the worker (or taken from it), and the operation
+    // that sent them.
+    std::optional<world_controls> sent_controls;
+    std::uint64_t controls_seq{0};
     scalar alpha{1};
 };
 

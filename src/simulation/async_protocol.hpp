@@ -14,9 +14,11 @@
 #include "edyn/ecs/entity_map.hpp"
 #include "edyn/ecs/registry.hpp"
 #include "edyn/simulation/contact_events.hpp"
+#include "edyn/simulation/settings.hpp"
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -69,6 +71,15 @@ using constraint_states = decltype(constraint_states_type(constraint_types{}));
 // (their impulses are at most this many steps old there).
 inline constexpr std::uint64_t manifold_refresh_steps = 8;
 
+// The settings and pause of a registry: what the main side sends when the program changes them,
+// and what the worker sends back when a step callback does.
+struct world_controls {
+    edyn::settings settings;
+    bool paused{false};
+
+    bool operator==(const world_controls &) const = default;
+};
+
 struct worker_message {
     std::vector<worker_record> records;
     // State after the step: every awake moving body; manifolds whose points changed, and a share
@@ -95,6 +106,8 @@ struct worker_message {
     scalar alpha{1};
     // Sequence number of the last operation applied before this message was made.
     std::uint64_t ops_applied{0};
+    // The worker's settings and pause after the step, when its step callbacks changed them.
+    std::optional<world_controls> controls;
 
     bool empty() const noexcept {
         return records.empty() && replies.empty() && errors.empty() && !stepped && !has_alpha &&

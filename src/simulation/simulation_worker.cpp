@@ -140,6 +140,8 @@ void worker_context::step_once() {
 }
 
 void worker_context::step(bool motion, bool contacts) {
+    // A step callback may change the settings or pause the world: the main side adopts that.
+    auto controls = world_controls{get_settings(reg), is_paused(reg)};
     try {
         run_step(reg);
     } catch (const detail::entity_refusal &refusal) {
@@ -153,6 +155,8 @@ void worker_context::step(bool motion, bool contacts) {
         // where it threw; the worker goes on with the next.
         message.errors.push_back(std::current_exception());
     }
+    auto now = world_controls{get_settings(reg), is_paused(reg)};
+    if (now != controls) message.controls = now;
     auto &world = reg.ctx().get<world_state>();
     message.stepped = true;
     message.simulation_time = world.simulation_time;

@@ -35,8 +35,10 @@ inline constexpr unsigned max_steps_per_update_limit = 1000;
 /// the values; fields without a setter are changed in place
 /// (`registry.ctx().get<edyn::settings>()`), and update() and step_simulation() check every
 /// field (validate_settings) before they step. In asynchronous mode the changes reach the
-/// simulation worker with the next update(). A step works on a copy made when it starts, so a
-/// step callback's changes apply from the next step, which checks them first.
+/// simulation worker with the next update(), and a step callback's changes on the worker reach
+/// the program's registry with the step's results (a change the program made in between
+/// replaces them). A step works on a copy made when it starts, so a step callback's changes
+/// apply from the next step, which checks them first.
 struct settings {
     /// The mode the registry was attached with (init_config::execution_mode); fixed by attach.
     edyn::execution_mode execution_mode{edyn::execution_mode::sequential};
@@ -88,6 +90,9 @@ struct settings {
     /// Run at the end of every step, after collision events, or null (the default);
     /// set_post_step_callback.
     step_callback_t post_step_callback{nullptr};
+
+    /// Field by field: whether every setting, callbacks included, is the same.
+    bool operator==(const settings &) const = default;
 };
 
 /// Checks every field of `s`: those with a setter against the ranges their setters accept, and

@@ -290,6 +290,66 @@ TEST_F(async_world, settings_reach_the_worker) {
     EXPECT_EQ(get_step_count(reg), steps + 6) << "six and a half steps of time at 120 Hz";
 }
 
+// What a step callback changes in the worker's settings stays there, as in the sequential
+// modes, and reaches the program's registry with the step; a change the program makes after
+// the step ran, before it heard of the callback's, is the one that stands.
+TEST_F(async_world, settings_a_step_callback_changes_stay_and_reach_the_program) {
+    auto ball = make_ball({0, 50, 0});
+    probe = [](registry &worker) {
+        if (get_step_count(worker) != 2) return;
+        set_gravity(worker, vector3_zero);
+        set_solver_substeps(worker, 3);
+    };
+    for (int i = 0; i < 3; ++i)
+        step();
+    EXPECT_EQ(get_settings(reg).gravity, vector3_zero);
+    EXPECT_EQ(get_settings(reg).num_substeps, 3u);
+    auto coasting = reg.get<linvel>(ball);
+    EXPECT_LT(coasting.y, 0) << "the ball fell for two steps";
+    // Later batches leave the callback's settings alone: the ball keeps its speed.
+    for (int i = 0; i < 10; ++i)
+        step();
+    EXPECT_EQ(reg.get<linvel>(ball), coasting) << "gravity came back with a later batch";
+
+    // The program's own change afterwards reaches the worker and stays.
+    set_gravity(reg, vector3{0, -1, 0});
+    settings seen;
+    probe = [&](registry &worker) { seen = get_settings(worker); };
+    step();
+    step();
+    EXPECT_EQ(seen.gravity, (vector3{0, -1, 0}));
+    EXPECT_EQ(seen.num_substeps, 3u);
+
+    // The callback changes the substeps in a step; the program changes them before it hears of
+    // that: the program's change came last, as in the sequential modes.
+    probe = [](registry &worker) { set_solver_substeps(worker, 2); };
+    step_simulation(reg);
+    set_solver_substeps(reg, 5);
+    wait_for_simulation(reg);
+    EXPECT_EQ(get_settings(reg).num_substeps, 5u);
+    probe = [&](registry &worker) { seen = get_settings(worker); };
+    step();
+    EXPECT_EQ(seen.num_substeps, 5u);
+    EXPECT_EQ(get_settings(reg).num_substeps, 5u);
+
+    // A callback that pauses the world: the program sees it paused, and no step runs until
+    // the program resumes it.
+    probe = [](registry &worker) { set_paused(worker, true); };
+    step();
+    probe = nullptr;
+    EXPECT_TRUE(is_paused(reg));
+    update(reg, 0);
+    wait_for_simulation(reg);
+    auto steps = get_step_count(reg);
+    update(reg, 1);
+    wait_for_simulation(reg);
+    EXPECT_EQ(get_step_count(reg), steps) << "a step ran while the callback had paused the world";
+    set_paused(reg, false);
+    update(reg, 1 + 3.5 * double(get_fixed_dt(reg)));
+    wait_for_simulation(reg);
+    EXPECT_EQ(get_step_count(reg), steps + 3);
+}
+
 TEST_F(async_world, a_custom_collision_filter_runs_in_the_worker) {
     make_ground();
     auto ball = make_ball({0, scalar(0.6), 0});
