@@ -8,6 +8,7 @@
 #include "edyn/constraints/constraint_solver.hpp"
 #include "edyn/constraints/constraints.hpp"
 #include "edyn/constraints/external_entity.hpp"
+#include "edyn/dynamics/body_limits.hpp"
 #include "edyn/dynamics/mass.hpp"
 #include "edyn/dynamics/material.hpp"
 #include "edyn/dynamics/orientation.hpp"
@@ -16,11 +17,15 @@
 #include "edyn/dynamics/shape_index.hpp"
 #include "edyn/dynamics/tags.hpp"
 #include "edyn/dynamics/velocity.hpp"
+#include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/shapes/aabb.hpp"
+#include "edyn/shapes/validate_shape.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/interpolation.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -165,15 +170,16 @@ void refresh_placement(registry &registry, entity e) {
     w.islands.wake_entity(registry, e);
 }
 
-void note_written_motion(registry &registry, entity e) { world(registry).written_motion.push_back(e); }
-
-void on_update_velocity(registry &registry, entity e) {
-    if (registry.all_of<rigidbody_tag>(e)) note_written_motion(registry, e);
+// A body the program changed: checked before the next step (check_written_bodies).
+void note_written(registry &registry, entity e) {
+    if (registry.all_of<rigidbody_tag>(e)) world(registry).written_bodies.push_back(e);
 }
+
+void on_update_velocity(registry &registry, entity e) { note_written(registry, e); }
 
 void on_update_transform(registry &registry, entity e) {
     if (!registry.all_of<rigidbody_tag>(e)) return;
-    note_written_motion(registry, e);
+    note_written(registry, e);
     if (registry.all_of<dynamic_tag>(e)) update_inertia_world(registry, e);
     if (auto *prev = registry.try_get<previous_transform>(e)) {
         // A teleport is not interpolated.
@@ -197,6 +203,7 @@ void on_presence_wake(registry &registry, entity e) {
 // A static or kinematic body's new friction or restitution acts on what rests on it: that wakes.
 // (Its new velocity needs nothing here: each step wakes what a moving kinematic body touches.)
 void on_update_material(registry &registry, entity e) {
+    note_written(registry, e);
     if (!registry.all_of<rigidbody_tag>(e) || registry.all_of<dynamic_tag>(e)) return;
     auto &w = world(registry);
     if (w.broadphase.contains(e)) wake_sleepers_near(registry, w, e, registry.get<AABB>(e));
@@ -220,12 +227,27 @@ void on_construct_material(registry &registry, entity e) { on_change_has_materia
 
 void on_destroy_material(registry &registry, entity e) { on_change_has_material(registry, e, false); }
 
+// Whether the shape of `e` passes validate_shape; the step refuses one that does not.
+bool has_valid_shape(const registry &registry, entity e) {
+    try {
+        visit_shape(registry, e, [](const auto &shape) { validate_shape(shape); });
+    } catch (const std::invalid_argument &) {
+        return false;
+    }
+    return true;
+}
+
 void on_update_shape(registry &registry, entity e) {
     ++registry.get_or_emplace<shape_epoch>(e).value;
+    note_written(registry, e);
     // A dynamic body's box follows its shape every step; a static or kinematic one's is computed
-    // when it moves, so now.
-    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e)) refresh_placement(registry, e);
+    // when it moves, so now, once the shape is one the step will take.
+    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e) && has_valid_shape(registry, e))
+        refresh_placement(registry, e);
 }
+
+// A body's own gravity, given or changed.
+void on_write_gravity(registry &registry, entity e) { note_written(registry, e); }
 
 void on_change_filter(registry &registry, entity e) {
     auto &w = world(registry);
@@ -341,6 +363,8 @@ void connect_registry_listeners(registry &registry) {
     connect_presence<&on_presence_wake>(registry, waking_presence_components{}, true);
     connect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<material>().connect<&on_update_material>();
+    registry.on_construct<gravity>().connect<&on_write_gravity>();
+    registry.on_update<gravity>().connect<&on_write_gravity>();
     registry.on_construct<material>().connect<&on_construct_material>();
     registry.on_destroy<material>().connect<&on_destroy_material>();
     registry.on_update<collision_filter>().connect<&on_change_filter>();
@@ -372,6 +396,8 @@ void disconnect_registry_listeners(registry &registry) {
     connect_presence<&on_presence_wake>(registry, waking_presence_components{}, false);
     disconnect_update<&on_update_shape>(registry, shape_components{});
     registry.on_update<material>().disconnect<&on_update_material>();
+    registry.on_construct<gravity>().disconnect<&on_write_gravity>();
+    registry.on_update<gravity>().disconnect<&on_write_gravity>();
     registry.on_construct<material>().disconnect<&on_construct_material>();
     registry.on_destroy<material>().disconnect<&on_destroy_material>();
     registry.on_update<collision_filter>().disconnect<&on_change_filter>();
@@ -384,25 +410,41 @@ void disconnect_registry_listeners(registry &registry) {
     registry.on_destroy<external_tag>().disconnect<&on_destroy_external>();
 }
 
-void check_written_motion(registry &registry) {
-    auto &written = world(registry).written_motion;
+void check_written_bodies(registry &registry) {
+    auto &written = world(registry).written_bodies;
     for (auto e : written) {
         if (!registry.valid(e) || !registry.all_of<rigidbody_tag>(e)) continue;
-        auto refuse = [&](const char *component, const std::string &value, const char *what) {
-            throw detail::entity_refusal(e, "step: body entity ",
-                                         std::string(", changed after it was made: ") + component +
-                                             " must be " + what + ", got " + value);
+        auto refuse = [&](const std::string &problem) {
+            throw detail::entity_refusal(e, "step: body entity ", ", changed after it was made: " + problem);
+        };
+        auto refuse_value = [&](const char *component, const std::string &value, const char *what) {
+            refuse(std::string(component) + " must be " + what + ", got " + value);
         };
         auto &pos = registry.get<position>(e);
-        if (!isfinite(pos)) refuse("position", detail::concat(static_cast<const vector3 &>(pos)), "finite");
+        if (!isfinite(pos))
+            refuse_value("position", detail::concat(static_cast<const vector3 &>(pos)), "finite");
         auto &orn = registry.get<orientation>(e);
         if (!isfinite(orn) || !(length_sqr(orn) > scalar(1e-12)))
-            refuse("orientation", detail::concat(static_cast<const quaternion &>(orn)),
-                   "finite and not zero");
+            refuse_value("orientation", detail::concat(static_cast<const quaternion &>(orn)),
+                         "finite and not zero");
         if (auto *v = registry.try_get<linvel>(e); v && !isfinite(*v))
-            refuse("linvel", detail::concat(static_cast<const vector3 &>(*v)), "finite");
+            refuse_value("linvel", detail::concat(static_cast<const vector3 &>(*v)), "finite");
         if (auto *w = registry.try_get<angvel>(e); w && !isfinite(*w))
-            refuse("angvel", detail::concat(static_cast<const vector3 &>(*w)), "finite");
+            refuse_value("angvel", detail::concat(static_cast<const vector3 &>(*w)), "finite");
+        if (auto *g = registry.try_get<gravity>(e); g && !(isfinite(*g) && length(*g) <= max_gravity))
+            refuse_value("gravity", detail::concat(static_cast<const vector3 &>(*g)),
+                         ("finite and at most " + detail::concat(max_gravity) + " m/s^2 long").c_str());
+        // The shape's and material's own checks, as make_rigidbody makes them.
+        try {
+            if (registry.all_of<shape_index>(e))
+                visit_shape(registry, e, [](const auto &shape) { validate_shape(shape); });
+            if (auto *m = registry.try_get<material>(e)) validate_material("step", "material", *m);
+        } catch (const std::invalid_argument &error) {
+            std::string problem = error.what();
+            // validate_material's messages begin with the function's name.
+            if (problem.rfind("step: ", 0) == 0) problem.erase(0, 6);
+            refuse(problem);
+        }
     }
     written.clear();
 }

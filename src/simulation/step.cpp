@@ -21,9 +21,9 @@ void run_step(registry &registry) {
     validate_settings(settings, "step");
 
     if (settings.pre_step_callback) settings.pre_step_callback(registry);
-    // What the program wrote into bodies' motion since the last step is checked first: a NaN
-    // would spread through contacts to every body it touches.
-    check_written_motion(registry);
+    // What the program wrote into bodies since the last step is checked first: a NaN would
+    // spread through contacts to every body it touches.
+    check_written_bodies(registry);
 
     // 0. The worker threads take the step's phases only when the world is big enough for them to
     //    pay; otherwise it is stepped on the calling thread, to the same result.

@@ -347,3 +347,62 @@ TEST_F(written_motion, motion_that_is_not_finite_is_refused_before_the_step_nami
     EXPECT_NEAR(pos(bottom).y, scalar(0.5), scalar(0.01));
     EXPECT_NEAR(pos(top).y, scalar(1.5), scalar(0.01));
 }
+
+// A shape, material or gravity the program patches, replaces or gives out of the ranges
+// make_rigidbody accepts is refused before the step, naming the body, as written motion is: a
+// box of NaN size would turn NaN every body it touches, and a restitution of 5 makes energy.
+// The step names the first field at fault with the checks' own words.
+TEST_F(written_motion, shapes_materials_and_gravity_out_of_range_are_refused_before_the_step) {
+    auto ground = scenes::make_ground(reg);
+    auto half = vector3{scalar(0.5), scalar(0.5), scalar(0.5)};
+    auto bottom = make_rigidbody(reg, edyn::test::box_def(half, {0, scalar(0.5), 0}));
+    auto top = make_rigidbody(reg, edyn::test::box_def(half, {0, scalar(1.5), 0}));
+    auto shelf_def = edyn::test::box_def(half, {5, scalar(0.5), 0});
+    shelf_def.kind = rigidbody_kind::rb_static;
+    auto shelf = make_rigidbody(reg, shelf_def);
+    run_for(0.5);
+    auto nan = std::numeric_limits<scalar>::quiet_NaN();
+
+    auto expect_refused = [&](entity body, const char *problem) {
+        try {
+            run_for(0.1);
+            ADD_FAILURE() << problem << ": the step took it";
+        } catch (const std::invalid_argument &e) {
+            auto expected = "step: body entity " + std::to_string(to_index(body)) +
+                            ", changed after it was made: " + problem;
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(isfinite(pos(top))) << problem << " spread to the box on top";
+    };
+    reg.patch<box_shape>(bottom, [&](box_shape &box) { box.half_extents.x = nan; });
+    expect_refused(bottom, "box_shape: half_extents.x must be positive and finite, got nan");
+    reg.patch<box_shape>(bottom, [&](box_shape &box) { box.half_extents.x = -scalar(0.5); });
+    expect_refused(bottom, "box_shape: half_extents.x must be positive and finite, got -0.5");
+    reg.replace<box_shape>(bottom, half);
+    reg.patch<box_shape>(shelf, [&](box_shape &box) { box.half_extents.y = nan; });
+    expect_refused(shelf, "box_shape: half_extents.y must be positive and finite, got nan");
+    reg.replace<box_shape>(shelf, half);
+    reg.patch<plane_shape>(ground, [](plane_shape &plane) { plane.normal = {0, 2, 0}; });
+    expect_refused(ground, "plane_shape: normal must be a unit vector");
+    reg.patch<plane_shape>(ground, [](plane_shape &plane) { plane.normal = vector3_y; });
+
+    reg.patch<material>(bottom, [](material &m) { m.restitution = 5; });
+    expect_refused(bottom, "material.restitution must be in [0, 1], got 5");
+    reg.patch<material>(bottom, [](material &m) { m.restitution = 0; });
+    reg.patch<material>(top, [](material &m) { m.friction = -1; });
+    expect_refused(top, "material.friction must be in [0, inf), got -1");
+    reg.patch<material>(top, [](material &m) { m.friction = scalar(0.5); });
+    reg.patch<material>(bottom, [&](material &m) { m.stiffness = nan; });
+    expect_refused(bottom, "material.stiffness must be positive, got nan");
+    reg.patch<material>(bottom, [](material &m) { m.stiffness = large_scalar; });
+
+    reg.emplace<gravity>(bottom, vector3{nan, 0, 0});
+    expect_refused(bottom, "gravity must be finite and at most");
+    reg.replace<gravity>(bottom, vector3{0, scalar(-9.8), 0});
+
+    // Mended, the stack steps on and rests where it was.
+    run_for(1);
+    EXPECT_NEAR(pos(bottom).y, scalar(0.5), scalar(0.01));
+    EXPECT_NEAR(pos(top).y, scalar(1.5), scalar(0.01));
+    EXPECT_NEAR(pos(shelf).y, scalar(0.5), scalar(1e-6));
+}

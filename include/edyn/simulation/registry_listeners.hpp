@@ -17,13 +17,16 @@ void connect_registry_listeners(registry &registry);
 /// @param registry The registry.
 void disconnect_registry_listeners(registry &registry);
 
-/// Checks the motion the program wrote (replace or patch of position, orientation, linvel or
-/// angvel) into bodies since the last step, before the step uses it.
-/// A NaN or infinite value would spread through contacts to every body it touches.
+/// Checks the bodies the program changed since the last step (replace or patch of position,
+/// orientation, linvel, angvel, a shape, material or gravity; emplace of a material or gravity),
+/// before the step uses them. A NaN or infinite value would spread through contacts to every
+/// body it touches; a shape or material out of range gives wrong physics.
 /// @param registry A registry whose listeners are connected.
-/// @throws std::invalid_argument Naming the first body whose written position, velocity or
-/// orientation is not finite, or whose orientation is zero; the bodies stay to be checked again.
-void check_written_motion(registry &registry);
+/// @throws std::invalid_argument Naming the first such body whose position, velocity or
+/// orientation is not finite, whose orientation is zero, whose gravity is not finite or longer
+/// than max_gravity, or whose shape or material fails validate_shape or validate_material; the
+/// bodies stay to be checked again.
+void check_written_bodies(registry &registry);
 
 /// Makes the bodies and constraints created before attach() join the simulation, oldest first.
 /// @param registry A registry whose listeners were just connected.

@@ -42,9 +42,10 @@ struct world_state {
     double simulation_time{0};
     /// Steps run since attach (get_step_count).
     std::uint64_t step_count{0};
-    /// Bodies whose position, orientation or velocity the program replaced or patched since the
-    /// last step began: checked before the next step uses them (check_written_motion).
-    std::vector<entity> written_motion;
+    /// Bodies whose position, orientation, velocity, shape, material or gravity the program
+    /// replaced, patched or gave since the last step began: checked before the next step uses
+    /// them (check_written_bodies).
+    std::vector<entity> written_bodies;
     /// Whether update() runs no steps (set_paused).
     bool paused{false};
 
