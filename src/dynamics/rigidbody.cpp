@@ -371,9 +371,11 @@ void rigidbody_set_shape(registry &registry, entity e, std::optional<shapes_vari
     if (!shape) return;
 
     if (kind == rigidbody_kind::rb_dynamic) {
+        // About the centre of mass, which stays where it is: at the origin when the body has no
+        // center_of_mass component, wherever the new shape's centroid lies.
         auto *com = registry.try_get<center_of_mass>(e);
         auto props = compute_mass_properties(registry.get<mass>(e).s, std::nullopt, shape,
-                                             com ? std::optional<vector3>(*com) : std::nullopt);
+                                             com ? vector3(*com) : vector3_zero);
         registry.replace<inertia>(e, props.inertia);
         registry.replace<inertia_inv>(e, inverse(props.inertia));
         update_inertia_world(registry, e);

@@ -63,11 +63,11 @@ void rigidbody_set_kind(registry &registry, entity entity, rigidbody_kind kind);
 
 /// Replaces the body's shape, or removes it, making the body amorphous.
 /// A dynamic body's inertia is recomputed from its current mass and the new shape, about its
-/// center_of_mass component (without one, about the new shape's centroid); the centre of mass
-/// itself does not move. Removing the shape keeps the inertia the body had. The body keeps its
-/// collision_filter (a body that had no shape gets the default one, every group and mask bit
-/// set, not its rigidbody_def's) and its AABB is refreshed. The body is woken, since it may
-/// have lost what it rested on.
+/// centre of mass, which does not move: its center_of_mass component, or the origin without
+/// one, whether or not the new shape's centroid lies there. Removing the shape keeps the inertia the body
+/// had. The body keeps its collision_filter (a body that had no shape gets the default one, every group and
+/// mask bit set, not its rigidbody_def's) and its AABB is refreshed. The body is woken, since it may have
+/// lost what it rested on.
 /// @param registry The registry the body lives in.
 /// @param entity The rigid body.
 /// @param shape The new shape, or `std::nullopt` to remove it.

@@ -469,6 +469,43 @@ TEST_F(rigidbody_test, changing_kind_and_shape_updates_the_mass_properties) {
     EXPECT_THROW(rigidbody_set_kind(reg, reg.create(), rigidbody_kind::rb_static), std::invalid_argument);
 }
 
+// The new shape's inertia is taken about the body's centre of mass, which stays put: a body
+// without a center_of_mass component keeps it at its origin even where the new shape's centroid
+// lies elsewhere, and gets the inertia a body made with that shape and centre would.
+TEST_F(rigidbody_test, a_new_shape_s_inertia_is_about_the_centre_of_mass_that_stays) {
+    // A square pyramid, base 0.6 m wide on the origin, apex 0.4 m up: its centroid is a quarter
+    // of the height up. Of 2 kg, about the centroid I_xx = m (a^2 / 20 + 3 h^2 / 80) = 0.048;
+    // about the base's centre 0.048 + m (h / 4)^2 = 0.068.
+    auto pyramid = polyhedron_shape{std::vector<vector3>{{-scalar(0.3), 0, -scalar(0.3)},
+                                                         {scalar(0.3), 0, -scalar(0.3)},
+                                                         {scalar(0.3), 0, scalar(0.3)},
+                                                         {-scalar(0.3), 0, scalar(0.3)},
+                                                         {0, scalar(0.4), 0}}};
+    auto def = valid_box();
+    auto e = make_rigidbody(reg, def);
+    auto origin = get_rigidbody_origin(reg, e);
+    rigidbody_set_shape(reg, e, shapes_variant_t{pyramid});
+    EXPECT_EQ(get_rigidbody_origin(reg, e), origin);
+    EXPECT_EQ(static_cast<vector3>(reg.get<position>(e)), origin) << "the centre of mass moved";
+    auto &I = reg.get<inertia>(e);
+    EXPECT_NEAR(I.row[0].x, scalar(0.068), 1e-5);
+    EXPECT_NEAR(I.row[1].y, scalar(2) * scalar(0.36) / 10, 1e-5) << "I_yy = m a^2 / 10 about the axis";
+    EXPECT_NEAR(I.row[2].z, scalar(0.068), 1e-5);
+
+    def.shape = pyramid;
+    def.center_of_mass = vector3_zero;
+    auto made = make_rigidbody(reg, def);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(I[i][j], reg.get<inertia>(made)[i][j], 1e-6) << i << ", " << j;
+    // Setting the centre of mass where it already is changes nothing.
+    auto before = static_cast<matrix3x3>(I);
+    set_center_of_mass(reg, e, vector3_zero);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(reg.get<inertia>(e)[i][j], before[i][j], 1e-6) << i << ", " << j;
+}
+
 TEST(rigidbody, a_shape_ref_reaches_the_body_s_shape_component) {
     registry reg;
     std::vector<shapes_variant_t> shapes{sphere_shape{scalar(0.5)}, box_shape{vector3{1, 2, 3}},
