@@ -53,7 +53,17 @@ void exclude_collision(registry &registry, entity first, entity second) {
     bool changed[2] = {false, false};
 
     for (int i = 0; i < 2; ++i) {
-        if (auto *existing = registry.try_get<collision_exclusion>(owners[i])) lists[i] = *existing;
+        if (auto *existing = registry.try_get<collision_exclusion>(owners[i])) {
+            // Entities destroyed since they were excluded (a gun's spent bullets) leave the list
+            // here, so that they do not fill it.
+            for (std::size_t j = 0; j < existing->num_entities; ++j) {
+                auto excluded = existing->entities[j];
+                if (registry.valid(excluded))
+                    lists[i].entities[lists[i].num_entities++] = excluded;
+                else
+                    changed[i] = true;
+            }
+        }
         if (lists[i].contains(others[i])) continue;
         if (lists[i].num_entities == collision_exclusion::max_exclusions) {
             throw std::invalid_argument("exclude_collision: collision_exclusion of " +

@@ -34,7 +34,7 @@ struct collision_filter {
 ///
 /// Bounded so that the component stays a flat value that is cheap to copy across threads and the
 /// network; use collision groups for larger sets. Fill it through exclude_collision(), which keeps
-/// both bodies' lists symmetric.
+/// both bodies' lists symmetric and drops the entities destroyed since they were added.
 struct collision_exclusion {
     /// Most entities one body can exclude.
     static constexpr std::size_t max_exclusions = 16;

@@ -26,8 +26,9 @@ bool should_collide_default(const registry &registry, entity first, entity secon
 ///
 /// Adds each entity to the other's collision_exclusion (created when missing, replaced
 /// otherwise, so that the change reaches the simulation worker); adding an existing pair again
-/// changes nothing. A contact the two bodies already have is destroyed, as for any change of
-/// their collision_exclusion.
+/// changes nothing. Entities in either list that have been destroyed are dropped from it here,
+/// so that they do not count against max_exclusions. A contact the two bodies already have is destroyed, as
+/// for any change of their collision_exclusion.
 /// @param registry The registry holding the bodies.
 /// @param first One body.
 /// @param second The other body.

@@ -142,6 +142,37 @@ TEST(collision_filter_test, exclusion_list_is_bounded) {
     EXPECT_TRUE(edyn::should_collide_default(registry, a, one_more));
 }
 
+// A gun that excludes each bullet it fires, the bullets destroyed as they land: the list drops
+// the destroyed ones, so the gun can go on firing past max_exclusions bullets.
+TEST(collision_filter_test, destroyed_entities_leave_the_exclusion_list_when_it_next_changes) {
+    edyn::registry registry;
+    auto gun = registry.create();
+    auto holster = registry.create();
+    edyn::exclude_collision(registry, gun, holster);
+    std::vector<entity> flying;
+    for (std::size_t shot = 0; shot < 5 * collision_exclusion::max_exclusions; ++shot) {
+        auto bullet = registry.create();
+        ASSERT_NO_THROW(edyn::exclude_collision(registry, gun, bullet)) << "shot " << shot;
+        flying.push_back(bullet);
+        // Three bullets in flight at most.
+        if (flying.size() > 3) {
+            registry.destroy(flying.front());
+            flying.erase(flying.begin());
+        }
+    }
+    auto &list = registry.get<collision_exclusion>(gun);
+    EXPECT_LE(list.num_entities, std::size_t{5}) << "the holster, three bullets and the last one destroyed";
+    EXPECT_TRUE(list.contains(holster));
+    for (auto bullet : flying) {
+        EXPECT_TRUE(list.contains(bullet));
+        EXPECT_FALSE(edyn::should_collide_default(registry, gun, bullet));
+    }
+    std::size_t destroyed = 0;
+    for (std::size_t i = 0; i < list.num_entities; ++i)
+        destroyed += registry.valid(list.entities[i]) ? 0 : 1;
+    EXPECT_EQ(destroyed, 1u) << "only the bullet destroyed after the last change";
+}
+
 TEST(collision_filter_test, exclusion_fires_component_signals) {
     edyn::registry registry;
     auto a = registry.create();
