@@ -175,6 +175,17 @@ bool flat_beyond(const triangle_mesh &mesh, std::size_t t, const collision_featu
     return true;
 }
 
+// Whether no triangle lies beyond feature f of triangle t: an edge on the mesh's boundary, or a
+// vertex on one.
+bool open_beyond(const triangle_mesh &mesh, std::size_t t, const collision_feature &f) noexcept {
+    auto kind = std::get<triangle_feature>(f.feature);
+    if (kind == triangle_feature::edge) return mesh.get_adjacent_triangle(t, f.index) < 0;
+    if (kind == triangle_feature::vertex)
+        return mesh.get_adjacent_triangle(t, f.index) < 0 ||
+               mesh.get_adjacent_triangle(t, (f.index + 2) % 3) < 0;
+    return false;
+}
+
 // Clips the convex polygon `poly` (count points, in the prism's frame) to the triangle's prism
 // sides; returns the number of points left in `out`.
 constexpr std::size_t max_clip_points = 64;
@@ -492,12 +503,13 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
             auto on_b = p.pivotB + prism.centroid;
             auto normal = mesh.get_triangle_normal(t);
             auto distance = dot(on_a - on_b, normal);
-            // Only where the shape is in the triangle: near misses are the neighbours' to report.
-            if (distance > 0 || distance < -prism.prism_depth()) continue;
+            auto feature = triangle_feature_at(t, barycentric_coordinates(on_b, tri[0], tri[1], tri[2]));
+            // Where the shape is in the triangle; a near miss only at the mesh's open edge, where no
+            // neighbour will report it (elsewhere the neighbours do).
+            if (distance > ctx.threshold || distance < -prism.prism_depth()) continue;
+            if (distance > 0 && !open_beyond(mesh, t, feature)) continue;
             // Across an edge to a coplanar neighbour, the neighbour reports the supporting point.
-            if (flat_beyond(mesh, t,
-                            triangle_feature_at(t, barycentric_coordinates(on_b, tri[0], tri[1], tri[2]))))
-                continue;
+            if (flat_beyond(mesh, t, feature)) continue;
             p.pivotB = on_a - normal * distance;
             auto w = barycentric_coordinates(p.pivotB, tri[0], tri[1], tri[2]);
             if (w.x < -outside_tolerance || w.y < -outside_tolerance || w.z < -outside_tolerance) continue;

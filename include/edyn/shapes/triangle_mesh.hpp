@@ -21,7 +21,9 @@ namespace edyn {
 /// and may be shared by any number of shapes and threads.
 ///
 /// Triangles are one-sided: their vertices run counter-clockwise seen from the front, and bodies
-/// are pushed out through the front. Each edge is classified by initialize(): an edge shared with a
+/// are pushed out through the front. Each triangle collides as the top of a solid prism as deep as
+/// its longest edge, whose sides under the mesh's open edges push away what comes beside them
+/// below the surface. Each edge is classified by initialize(): an edge shared with a
 /// triangle that lies flat or concave with this one is inactive, so that a body sliding from one
 /// triangle onto the next never catches on the edge between them (contact normals on an inactive
 /// edge or vertex are replaced by the triangle's normal); convex edges sharper than
