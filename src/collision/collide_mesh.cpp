@@ -504,10 +504,19 @@ void collide_triangles(const Shape &a, const triangle_mesh &mesh, const collisio
             auto normal = mesh.get_triangle_normal(t);
             auto distance = dot(on_a - on_b, normal);
             auto feature = triangle_feature_at(t, barycentric_coordinates(on_b, tri[0], tri[1], tri[2]));
-            // Where the shape is in the triangle; a near miss only at the mesh's open edge, where no
-            // neighbour will report it (elsewhere the neighbours do).
-            if (distance > ctx.threshold || distance < -prism.prism_depth()) continue;
-            if (distance > 0 && !open_beyond(mesh, t, feature)) continue;
+            if (distance > 0) {
+                // A near miss: the neighbours report theirs, but at the mesh's open edge there is
+                // none. There the exact point stands as it is, the edge or vertex being active.
+                if (!open_beyond(mesh, t, feature) || p.distance > ctx.threshold ||
+                    !feature_allows_normal(mesh, t, feature, rotate(inv_orn_b, p.normal)))
+                    continue;
+                p.pivotB = on_b;
+                p.featureB = feature;
+                result.add_point(p);
+                continue;
+            }
+            // Where the shape is in the triangle.
+            if (distance < -prism.prism_depth()) continue;
             // Across an edge to a coplanar neighbour, the neighbour reports the supporting point.
             if (flat_beyond(mesh, t, feature)) continue;
             p.pivotB = on_a - normal * distance;

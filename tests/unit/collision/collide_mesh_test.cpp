@@ -678,3 +678,28 @@ TEST(collide_mesh_test, cylinder_in_front_of_a_triangle_finds_the_true_distance)
     }
     EXPECT_GT(checked, 200u);
 }
+
+// A cylinder tilted 10 degrees over a plate's open edge, its lowest rim point 7 cm beyond the
+// edge and 0.75 m up: the look-ahead of a body falling 1 m a step. The nearest pair is the rim
+// against the edge, which the plate reports at that distance (none came back, and the cylinder
+// fell through the plate at 60 m/s).
+TEST(collide_mesh_test, a_tilted_cylinder_over_an_open_edge_is_seen_from_afar) {
+    auto plate =
+        test::make_mesh({vec(-2, 0, -6), vec(-2, 0, 6), vec(2, 0, 6), vec(2, 0, -6)}, {0, 1, 2, 0, 2, 3});
+    cylinder_shape cylinder{scalar(0.3), scalar(0.2), coordinate_axis::y};
+    auto tilt = quaternion_axis_angle(vector3_z, -scalar(0.1745));
+    for (auto height : {scalar(1), scalar(0.8), scalar(0.5)}) {
+        collision_context ctx;
+        ctx.posA = vec(1.77, height, -2);
+        ctx.ornA = tilt;
+        ctx.threshold = scalar(1.2);
+        // The lowest rim point, and its distance from the edge x = 2, y = 0.
+        auto rim = to_world_space(vec(0.3, -0.2, 0), ctx.posA, ctx.ornA);
+        auto expected = std::hypot(rim.x - 2, rim.y);
+        SCOPED_TRACE("height " + std::to_string(height));
+        ASSERT_GT(rim.x, 2) << "the lowest rim point is over the plate";
+        auto r = collide_mesh_checked(cylinder, plate, ctx);
+        ASSERT_GT(r.num_points, 0u);
+        EXPECT_NEAR(min_distance(r), expected, scalar(2e-3));
+    }
+}
