@@ -119,6 +119,27 @@ mass_properties compute_mass_properties(scalar mass, const std::optional<matrix3
     return {mass, I, com};
 }
 
+// The inertia `shape` gives the body about `com`, for the mass it has when dynamic: its own
+// when it is, or the one a static or kinematic body takes back when it becomes dynamic again
+// (rigidbody_dynamic_mass), so that a shape or centre of mass changed meanwhile is not forgotten.
+// Shapes that only static and kinematic bodies may have leave the kept inertia as it was.
+void take_inertia_of_shape(registry &registry, entity e, const shapes_variant_t &shape, const vector3 &com) {
+    if (registry.all_of<dynamic_tag>(e)) {
+        auto I = compute_mass_properties(registry.get<mass>(e).s, std::nullopt, shape, com).inertia;
+        registry.replace<inertia>(e, I);
+        registry.replace<inertia_inv>(e, inverse(I));
+        update_inertia_world(registry, e);
+        return;
+    }
+    auto *kept = registry.try_get<rigidbody_dynamic_mass>(e);
+    auto may_be_dynamic = !std::holds_alternative<plane_shape>(shape) &&
+                          !std::holds_alternative<mesh_shape>(shape) &&
+                          !std::holds_alternative<paged_mesh_shape>(shape);
+    if (!kept || !may_be_dynamic) return;
+    auto I = compute_mass_properties(kept->mass, std::nullopt, shape, com).inertia;
+    registry.patch<rigidbody_dynamic_mass>(e, [&](rigidbody_dynamic_mass &m) { m.inertia = I; });
+}
+
 void emplace_shape(registry &registry, entity e, const shapes_variant_t &shape) {
     std::visit([&](const auto &s) { registry.emplace<std::decay_t<decltype(s)>>(e, s); }, shape);
     registry.emplace<shape_index>(e, shape.index());
@@ -317,7 +338,9 @@ void rigidbody_set_kind(registry &registry, entity e, rigidbody_kind kind) {
         if (original) {
             props = {original->mass, original->inertia, props.com};
         } else if (shape) {
-            props = compute_mass_properties(1, std::nullopt, shape, com_value);
+            // About the centre of mass the body keeps (its origin without a center_of_mass
+            // component), as rigidbody_set_shape does, not about the shape's centroid.
+            props = compute_mass_properties(1, std::nullopt, shape, props.com);
         } else {
             throw std::invalid_argument(
                 "rigidbody_set_kind: an amorphous body needs a mass and inertia to become dynamic");
@@ -370,16 +393,10 @@ void rigidbody_set_shape(registry &registry, entity e, std::optional<shapes_vari
     registry.patch<linvel>(e);
     if (!shape) return;
 
-    if (kind == rigidbody_kind::rb_dynamic) {
-        // About the centre of mass, which stays where it is: at the origin when the body has no
-        // center_of_mass component, wherever the new shape's centroid lies.
-        auto *com = registry.try_get<center_of_mass>(e);
-        auto props = compute_mass_properties(registry.get<mass>(e).s, std::nullopt, shape,
-                                             com ? vector3(*com) : vector3_zero);
-        registry.replace<inertia>(e, props.inertia);
-        registry.replace<inertia_inv>(e, inverse(props.inertia));
-        update_inertia_world(registry, e);
-    }
+    // About the centre of mass, which stays where it is: at the origin when the body has no
+    // center_of_mass component, wherever the new shape's centroid lies.
+    auto *com = registry.try_get<center_of_mass>(e);
+    take_inertia_of_shape(registry, e, *shape, com ? vector3(*com) : vector3_zero);
     emplace_shape(registry, e, *shape);
     registry.emplace<collision_filter>(e, filter_value);
     refresh_aabb(registry, e);
@@ -404,15 +421,9 @@ void shift_center_of_mass(registry &registry, entity e, const vector3 &com) {
     auto old_com = current ? static_cast<vector3>(*current) : vector3_zero;
     auto delta = com - old_com;
 
-    if (registry.all_of<dynamic_tag>(e)) {
-        // The inertia follows the shape's mass distribution about the new centre; amorphous
-        // bodies keep theirs, which describes no particular distribution.
-        if (auto shape = get_shape(registry, e)) {
-            auto props = compute_mass_properties(registry.get<mass>(e).s, std::nullopt, shape, com);
-            registry.replace<inertia>(e, props.inertia);
-            registry.replace<inertia_inv>(e, inverse(props.inertia));
-        }
-    }
+    // The inertia follows the shape's mass distribution about the new centre; amorphous bodies
+    // keep theirs, which describes no particular distribution.
+    if (auto shape = get_shape(registry, e)) take_inertia_of_shape(registry, e, *shape, com);
     auto delta_world = rotate(orn, delta);
     auto &w = registry.get<angvel>(e);
     registry.patch<position>(e, [&](position &p) { p += delta_world; });

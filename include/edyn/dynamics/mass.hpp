@@ -82,7 +82,8 @@ struct center_of_mass : vector3 {
 
 /// Component: the mass and inertia of a dynamic body turned static or kinematic.
 /// Written by rigidbody_set_kind when it makes a dynamic body static or kinematic, so that the
-/// body gets them back when it becomes dynamic again.
+/// body gets them back when it becomes dynamic again. rigidbody_set_shape and
+/// set_center_of_mass recompute the inertia for the new shape or centre, keeping the mass.
 struct rigidbody_dynamic_mass {
     scalar mass;       ///< The mass it had, in kg.
     matrix3x3 inertia; ///< The inertia tensor it had, about its centre of mass in object space, in kg·m².

@@ -50,7 +50,9 @@ void make_rigidbody(entity entity, registry &registry, const rigidbody_def &def)
 
 /// Changes a body between dynamic, static and kinematic.
 /// A body becoming dynamic needs a mass and inertia: the ones it had when it was last dynamic
-/// (kept in rigidbody_dynamic_mass), or computed from its shape with a mass of 1 kg. A body
+/// (kept in rigidbody_dynamic_mass), or computed from its shape with a mass of 1 kg about its
+/// centre of mass, which does not move (its center_of_mass component, or its origin without
+/// one, wherever the shape's centroid lies). A body
 /// becoming static loses its velocities. Nothing happens when the kind does not change.
 /// @param registry The registry the body lives in.
 /// @param entity The rigid body.
@@ -64,10 +66,12 @@ void rigidbody_set_kind(registry &registry, entity entity, rigidbody_kind kind);
 /// Replaces the body's shape, or removes it, making the body amorphous.
 /// A dynamic body's inertia is recomputed from its current mass and the new shape, about its
 /// centre of mass, which does not move: its center_of_mass component, or the origin without
-/// one, whether or not the new shape's centroid lies there. Removing the shape keeps the inertia the body
-/// had. The body keeps its collision_filter (a body that had no shape gets the default one, every group and
-/// mask bit set, not its rigidbody_def's) and its AABB is refreshed. The body is woken, since it may have
-/// lost what it rested on.
+/// one, whether or not the new shape's centroid lies there. A static or kinematic body that was
+/// dynamic before gets the same for the mass it will take back (rigidbody_dynamic_mass), so
+/// that it becomes dynamic again with its new shape's inertia. Removing the shape keeps the
+/// inertia the body had. The body keeps its collision_filter (a body that had no shape gets the default one,
+/// every group and mask bit set, not its rigidbody_def's) and its AABB is refreshed. The body is woken, since
+/// it may have lost what it rested on.
 /// @param registry The registry the body lives in.
 /// @param entity The rigid body.
 /// @param shape The new shape, or `std::nullopt` to remove it.
@@ -90,7 +94,8 @@ void clear_rigidbody(registry &registry, entity entity);
 /// position and linvel are updated to describe the new centre of mass (linvel gains the
 /// rotation's velocity at the new centre); the origin stays where it is. A dynamic body with
 /// a shape gets its inertia recomputed from the shape and its mass about the new centre (an
-/// inertia given in rigidbody_def is replaced); an amorphous body keeps its inertia. In
+/// inertia given in rigidbody_def is replaced), and so does the mass a static or kinematic body
+/// will take back when it becomes dynamic again; an amorphous body keeps its inertia. In
 /// asynchronous mode the change is made on the main registry at once and again in the
 /// simulation worker at the start of its next step.
 /// @param registry The registry the body lives in.

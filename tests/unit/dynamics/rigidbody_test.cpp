@@ -506,6 +506,69 @@ TEST_F(rigidbody_test, a_new_shape_s_inertia_is_about_the_centre_of_mass_that_st
             EXPECT_NEAR(reg.get<inertia>(e)[i][j], before[i][j], 1e-6) << i << ", " << j;
 }
 
+// A body kept static or kinematic for a while comes back with its mass, and with the inertia of
+// the shape and centre of mass it has when it becomes dynamic again, not of those it had when it
+// stopped being dynamic.
+TEST_F(rigidbody_test, a_shape_or_centre_given_while_not_dynamic_is_the_one_it_comes_back_with) {
+    auto e = make_rigidbody(reg, valid_box());
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_kinematic);
+    rigidbody_set_shape(reg, e, shapes_variant_t{sphere_shape{1}});
+    EXPECT_EQ(reg.get<mass_inv>(e).s, 0) << "a kinematic body stays of infinite mass";
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_dynamic);
+    // A sphere of radius 1 and mass 2: I = 2/5 m r^2 = 0.8 about every axis.
+    EXPECT_EQ(reg.get<mass>(e).s, 2);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(reg.get<inertia>(e)[i][i], scalar(0.8), 1e-6) << i;
+
+    // The centre of mass moved 0.5 m along x while static: about it, I_yy = I_zz = 0.8 + 2 * 0.5^2.
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_static);
+    set_center_of_mass(reg, e, {scalar(0.5), 0, 0});
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_dynamic);
+    auto &I = reg.get<inertia>(e);
+    EXPECT_NEAR(I.row[0].x, scalar(0.8), 1e-6);
+    EXPECT_NEAR(I.row[1].y, scalar(1.3), 1e-6);
+    EXPECT_NEAR(I.row[2].z, scalar(1.3), 1e-6);
+    EXPECT_NEAR(reg.get<inertia_world_inv>(e).row[1].y, 1 / scalar(1.3), 1e-6);
+
+    // The same as a body made that way.
+    auto def = valid_box();
+    def.shape = sphere_shape{1};
+    def.center_of_mass = vector3{scalar(0.5), 0, 0};
+    auto made = make_rigidbody(reg, def);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(I[i][j], reg.get<inertia>(made)[i][j], 1e-6) << i << ", " << j;
+
+    // A mass changed while dynamic is the one kept; a shape removed while kinematic keeps the
+    // inertia the body had.
+    rigidbody_set_mass(reg, e, 4);
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_kinematic);
+    rigidbody_set_shape(reg, e, std::nullopt);
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_dynamic);
+    EXPECT_EQ(reg.get<mass>(e).s, 4);
+    EXPECT_NEAR(reg.get<inertia>(e).row[1].y, scalar(2.6), 1e-5);
+}
+
+// A body that was never dynamic gets 1 kg and its shape's inertia about the centre of mass it
+// keeps, its origin here, not about the shape's centroid.
+TEST_F(rigidbody_test, a_body_never_dynamic_takes_its_shape_s_inertia_about_its_centre_of_mass) {
+    // The square pyramid of the test above, 1 kg: about its base's centre I_xx = 0.048 / 2 + (0.1)^2.
+    auto def = valid_box();
+    def.kind = rigidbody_kind::rb_kinematic;
+    def.shape = polyhedron_shape{std::vector<vector3>{{-scalar(0.3), 0, -scalar(0.3)},
+                                                      {scalar(0.3), 0, -scalar(0.3)},
+                                                      {scalar(0.3), 0, scalar(0.3)},
+                                                      {-scalar(0.3), 0, scalar(0.3)},
+                                                      {0, scalar(0.4), 0}}};
+    auto e = make_rigidbody(reg, def);
+    rigidbody_set_kind(reg, e, rigidbody_kind::rb_dynamic);
+    EXPECT_FALSE(reg.all_of<center_of_mass>(e)) << "the centre of mass stays at the origin";
+    EXPECT_EQ(reg.get<mass>(e).s, 1);
+    EXPECT_NEAR(reg.get<inertia>(e).row[0].x, scalar(0.034), 1e-5);
+    EXPECT_NEAR(reg.get<inertia>(e).row[1].y, scalar(0.036), 1e-5);
+    EXPECT_NEAR(reg.get<inertia>(e).row[2].z, scalar(0.034), 1e-5);
+}
+
 TEST(rigidbody, a_shape_ref_reaches_the_body_s_shape_component) {
     registry reg;
     std::vector<shapes_variant_t> shapes{sphere_shape{scalar(0.5)}, box_shape{vector3{1, 2, 3}},
