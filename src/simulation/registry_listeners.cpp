@@ -24,6 +24,7 @@
 #include "edyn/simulation/interpolation.hpp"
 #include "edyn/simulation/island.hpp"
 #include "edyn/simulation/world_state.hpp"
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -227,14 +228,15 @@ void on_construct_material(registry &registry, entity e) { on_change_has_materia
 
 void on_destroy_material(registry &registry, entity e) { on_change_has_material(registry, e, false); }
 
-// Whether the shape of `e` passes validate_shape; the step refuses one that does not.
-bool has_valid_shape(const registry &registry, entity e) {
+// What validate_shape finds wrong with the shape of `e`, if it has one; the step refuses it.
+std::optional<std::string> shape_problem(const registry &registry, entity e) {
+    if (!registry.all_of<shape_index>(e)) return std::nullopt;
     try {
         visit_shape(registry, e, [](const auto &shape) { validate_shape(shape); });
-    } catch (const std::invalid_argument &) {
-        return false;
+    } catch (const std::invalid_argument &error) {
+        return error.what();
     }
-    return true;
+    return std::nullopt;
 }
 
 void on_update_shape(registry &registry, entity e) {
@@ -242,7 +244,7 @@ void on_update_shape(registry &registry, entity e) {
     note_written(registry, e);
     // A dynamic body's box follows its shape every step; a static or kinematic one's is computed
     // when it moves, so now, once the shape is one the step will take.
-    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e) && has_valid_shape(registry, e))
+    if (registry.all_of<rigidbody_tag>(e) && !registry.all_of<dynamic_tag>(e) && !shape_problem(registry, e))
         refresh_placement(registry, e);
 }
 
@@ -435,9 +437,8 @@ void check_written_bodies(registry &registry) {
             refuse_value("gravity", detail::concat(static_cast<const vector3 &>(*g)),
                          ("finite and at most " + detail::concat(max_gravity) + " m/s^2 long").c_str());
         // The shape's and material's own checks, as make_rigidbody makes them.
+        if (auto problem = shape_problem(registry, e)) refuse(*problem);
         try {
-            if (registry.all_of<shape_index>(e))
-                visit_shape(registry, e, [](const auto &shape) { validate_shape(shape); });
             if (auto *m = registry.try_get<material>(e)) validate_material("step", "material", *m);
         } catch (const std::invalid_argument &error) {
             std::string problem = error.what();
