@@ -32,6 +32,9 @@ void compound_shape::finish() {
     if (children.empty()) {
         throw_invalid_argument("compound_shape: finish: children is empty; call add_shape() first");
     }
+    // The children may have been changed in place since add_shape(): their bounds are taken again.
+    for (auto &c : children)
+        c.aabb = shape_aabb(c.shape, c.position, c.orientation);
     tree.nodes.clear();
     if (children.size() > max_children_without_tree) {
         std::vector<AABB> aabbs;

@@ -1,4 +1,5 @@
 #include "edyn/shapes/validate_shape.hpp"
+#include "edyn/shapes/shape_aabb.hpp"
 #include "invalid_argument.hpp"
 #include <cmath>
 #include <string>
@@ -103,6 +104,25 @@ void validate_shape(const compound_shape &shape) {
             throw_invalid_argument("compound_shape: children[", i,
                                    "].orientation must be a unit quaternion, got ", child.orientation);
         }
+        if (child.aabb != shape_aabb(child.shape, child.position, child.orientation)) {
+            throw_invalid_argument("compound_shape: children[", i,
+                                   "] changed since finish(), which takes its bounds; call finish() again");
+        }
+    }
+    // Every child a leaf of the tree, and no other, when there is one.
+    std::size_t leaves = 0;
+    auto beyond = false;
+    for (const auto &node : shape.tree.nodes) {
+        if (!node.leaf) continue;
+        ++leaves;
+        beyond = beyond || node.index >= shape.children.size();
+    }
+    auto tree_children =
+        shape.children.size() > compound_shape::max_children_without_tree ? shape.children.size() : 0;
+    if (leaves != tree_children || beyond) {
+        throw_invalid_argument(
+            "compound_shape: children were added or removed since finish(), which builds its tree; "
+            "call finish() again");
     }
 }
 

@@ -19,6 +19,7 @@
 #include "edyn/dynamics/velocity.hpp"
 #include "edyn/dynamics/visit_shape.hpp"
 #include "edyn/shapes/aabb.hpp"
+#include "edyn/shapes/compound_shape.hpp"
 #include "edyn/shapes/validate_shape.hpp"
 #include "edyn/simulation/contact_events.hpp"
 #include "edyn/simulation/interpolation.hpp"
@@ -239,7 +240,24 @@ std::optional<std::string> shape_problem(const registry &registry, entity e) {
     return std::nullopt;
 }
 
+// A compound changed in place takes its children's bounds and its tree again (finish()), so that
+// its change applies from the next step as any shape's does. One with an invalid child is left
+// as it is, for the step to refuse with that child's problem.
+void refresh_compound(compound_shape &compound) {
+    if (compound.children.empty()) return;
+    for (const auto &child : compound.children) {
+        try {
+            validate_shape(child.shape);
+        } catch (const std::invalid_argument &) {
+            return;
+        }
+        if (!isfinite(child.position) || !isfinite(child.orientation) || !is_unit(child.orientation)) return;
+    }
+    compound.finish();
+}
+
 void on_update_shape(registry &registry, entity e) {
+    if (auto *compound = registry.try_get<compound_shape>(e)) refresh_compound(*compound);
     ++registry.get_or_emplace<shape_epoch>(e).value;
     note_written(registry, e);
     // A dynamic body's box follows its shape every step; a static or kinematic one's is computed

@@ -225,6 +225,51 @@ TEST_F(change_shape, a_resting_sphere_given_a_smaller_radius_in_place_settles_lo
     EXPECT_NEAR(manifold.point[manifold.ids[0]].distance, 0, scalar(0.01));
 }
 
+// A compound changed in place through the registry is finished again by the simulation: a
+// child grown by patch holds a ball and stops rays where it now reaches, and a child removed
+// lets them through. Before, its old bounds hid the grown child, and the removed one stayed in
+// its tree, where a query read past the children.
+TEST_F(change_shape, a_compound_changed_in_place_collides_as_it_now_is) {
+    compound_shape shelf;
+    shelf.add_shape(box_shape{scalar(0.1), scalar(0.1), scalar(0.1)});
+    shelf.finish();
+    rigidbody_def def;
+    def.kind = rigidbody_kind::rb_static;
+    def.shape = shelf;
+    def.position = {0, 1, 0};
+    auto grown = make_rigidbody(reg, def);
+
+    // Twelve small boxes in a row 10 m away, the last under the point where a ball will fall.
+    compound_shape row;
+    for (int i = 0; i < 12; ++i)
+        row.add_shape(box_shape{scalar(0.2), scalar(0.1), scalar(0.2)}, {scalar(i) * scalar(0.5), 0, 0});
+    row.finish();
+    def.shape = row;
+    def.position = {10, 1, 0};
+    auto shrunk = make_rigidbody(reg, def);
+    run_for(0.1);
+
+    reg.patch<compound_shape>(grown, [](compound_shape &c) {
+        std::get<box_shape>(c.children[0].shape).half_extents = {1, scalar(0.1), 1};
+    });
+    reg.patch<compound_shape>(shrunk, [](compound_shape &c) { c.children.pop_back(); });
+    auto on_grown = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {scalar(0.8), 2, scalar(0.8)}));
+    auto past_shrunk = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {scalar(15.5), 2, 0}));
+    auto on_shrunk = make_rigidbody(reg, edyn::test::sphere_def(scalar(0.1), {scalar(15), 2, 0}));
+    run_for(2);
+    EXPECT_NEAR(pos(on_grown).y, scalar(1.2), scalar(0.01)) << "the ball did not land on the grown child";
+    EXPECT_NEAR(pos(on_shrunk).y, scalar(1.2), scalar(0.01))
+        << "the ball did not land on the row's last child";
+    EXPECT_LT(pos(past_shrunk).y, 0) << "the removed child still held the ball";
+
+    if (!edyn::test::simulates_here(reg)) return; // rays are cast on the worker (raycast_async)
+    auto hit = raycast(reg, {scalar(0.9), 3, scalar(-0.9)}, {scalar(0.9), -1, scalar(-0.9)});
+    EXPECT_EQ(hit.entity, grown);
+    EXPECT_NEAR(hit.fraction, scalar(0.475), scalar(1e-4))
+        << "the ray stops on the grown child's top, 1.1 m up";
+    EXPECT_EQ(raycast(reg, {scalar(15.5), scalar(1.5), 1}, {scalar(15.5), scalar(1.5), -1}).entity, null);
+}
+
 // Only the changed body's manifolds are recomputed: another pair resting nearby keeps reusing
 // its points.
 TEST_F(change_shape, other_resting_pairs_keep_reusing_their_contact_points) {

@@ -39,7 +39,7 @@ struct compound_shape {
         vector3 position;
         /// Orientation of the child in the compound's object space (unit quaternion).
         quaternion orientation;
-        /// Bounds of the child in the compound's object space.
+        /// Bounds of the child in the compound's object space, taken by add_shape() and finish().
         AABB aabb;
     };
 
@@ -65,8 +65,11 @@ struct compound_shape {
     void add_shape(compound_child_shape_t shape, const vector3 &position = vector3_zero,
                    const quaternion &orientation = quaternion_identity);
 
-    /// Completes the shape after the last add_shape(): builds the bounding volume tree when there
-    /// are more than max_children_without_tree children, and sets `finished`.
+    /// Completes the shape after the last add_shape(), or after its children were changed in
+    /// place (their shapes, positions or orientations changed, children removed): takes every
+    /// child's AABB again, builds the bounding volume tree when there are more than
+    /// max_children_without_tree children, and sets `finished`. A body's compound changed through
+    /// the registry (`patch`, `replace`) is finished again by the simulation.
     /// @throws std::invalid_argument When there are no children.
     void finish();
 

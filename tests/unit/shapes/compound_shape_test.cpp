@@ -198,3 +198,42 @@ TEST(compound_shape_test, validate_reports_bad_children) {
     expect_invalid_argument([&] { validate_shape(compound); }, {"children[0].position", "inf"});
     expect_invalid_argument([] { validate_shape(compound_shape{}); }, {"compound_shape", "empty"});
 }
+
+// Children changed in place: validate_shape refuses the compound until finish() takes their
+// bounds and its tree again, after which queries see the change.
+TEST(compound_shape_test, children_changed_in_place_need_finish_again) {
+    compound_shape compound;
+    compound.add_shape(box_shape{scalar(0.1), scalar(0.1), scalar(0.1)});
+    compound.finish();
+    std::get<box_shape>(compound.children[0].shape).half_extents = {1, scalar(0.1), 1};
+    expect_invalid_argument([&] { validate_shape(compound); }, {"compound_shape", "children[0]", "finish()"});
+    std::vector<std::size_t> seen;
+    auto far_corner = AABB{{scalar(0.8), -1, scalar(0.8)}, {scalar(0.9), 1, scalar(0.9)}};
+    compound.visit(far_corner, [&](std::size_t i) { seen.push_back(i); });
+    EXPECT_TRUE(seen.empty()) << "the stale bounds were expected to hide the grown child";
+    compound.finish();
+    EXPECT_NO_THROW(validate_shape(compound));
+    expect_vector_near(compound.children[0].aabb.max, {1, scalar(0.1), 1}, scalar(1e-6));
+    compound.visit(far_corner, [&](std::size_t i) { seen.push_back(i); });
+    EXPECT_EQ(seen, std::vector<std::size_t>{0});
+
+    // Twelve children, one removed: the tree still names it until finish() builds it again.
+    std::mt19937 rng(3);
+    auto grid = grid_compound(rng);
+    grid.children.resize(12);
+    grid.finish();
+    grid.children.pop_back();
+    expect_invalid_argument([&] { validate_shape(grid); }, {"compound_shape", "removed", "finish()"});
+    grid.finish();
+    EXPECT_NO_THROW(validate_shape(grid));
+    std::size_t most = 0;
+    grid.visit(AABB{vector3{-100, -100, -100}, vector3{100, 100, 100}},
+               [&](std::size_t i) { most = std::max(most, i); });
+    EXPECT_EQ(most, 10u);
+    // Down to eight: no tree is left.
+    grid.children.resize(8);
+    expect_invalid_argument([&] { validate_shape(grid); }, {"compound_shape", "finish()"});
+    grid.finish();
+    EXPECT_TRUE(grid.tree.empty());
+    EXPECT_NO_THROW(validate_shape(grid));
+}
