@@ -90,6 +90,10 @@ void gather_bodies(registry &registry, world_state &world, const settings &setti
         if (registry.all_of<dynamic_tag>(e)) {
             auto *g = registry.try_get<gravity>(e);
             body.acceleration = g ? static_cast<vector3>(*g) : settings.gravity;
+            // Once a step, before the constraints: its torque turns the angular velocity with
+            // the body, so that the angular momentum is what a free body keeps.
+            body.angvel = gyroscopic_step(body.angvel, registry.get<inertia>(e), registry.get<orientation>(e),
+                                          settings.fixed_dt);
         }
     };
     parallel_for(world.step_scheduler, std::size_t(1), world.bodies.size(), gathered_bodies_per_task, fill);

@@ -12,6 +12,26 @@ namespace edyn {
 /// @param h Length of the sub-step, in seconds.
 scalar max_angular_speed(scalar h) noexcept;
 
+/// A free body's angular velocity after `h` seconds of its gyroscopic torque, `-ω × Iω`.
+/// Euler's equation for a body turning with no torque, `I dω/dt + ω × Iω = 0` in its own
+/// frame, taken one implicit Euler step with one Newton iteration from `angvel`. The angular
+/// momentum then keeps its direction in the world while the body turns, as it must: a body
+/// spinning about no principal axis wobbles and precesses, one spinning near its intermediate
+/// axis tumbles, and a spinning wheel on an axle precesses under gravity's torque instead of
+/// falling. Implicit Euler loses a little energy and never adds any (a result with more kinetic
+/// energy than `angvel`'s, which the single Newton iteration could give when `h |ω|` is large,
+/// is scaled back to `angvel`'s energy). A body whose inertia is the same about every axis has
+/// no gyroscopic torque and gets `angvel` back unchanged, as does one spinning exactly about a
+/// principal axis; the result does not depend on the inertia's scale.
+/// @param angvel Angular velocity, world space, in rad/s.
+/// @param inertia The body's inertia about its centre of mass, object space (positive
+/// definite), in kg·m²; a matrix that is not, or a result that is not finite, gives `angvel`.
+/// @param orn The body's orientation.
+/// @param h The time step, in seconds.
+/// @return The new angular velocity, world space, in rad/s.
+vector3 gyroscopic_step(const vector3 &angvel, const matrix3x3 &inertia, const quaternion &orn,
+                        scalar h) noexcept;
+
 /// Lowers a body's speeds to the limits, keeping their directions: its linear speed to
 /// `max_linear_speed` and its angular speed to `max_angular`.
 /// @param body A solver body.
