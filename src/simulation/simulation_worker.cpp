@@ -128,18 +128,16 @@ void worker_context::advance(double time) {
     // contacts: steps before those send only their records (manifolds made and destroyed,
     // events, sleeping).
     for (std::uint64_t i = 0; i < steps; ++i)
-        step(i + 2 >= steps, i + 1 == steps);
-    message.has_alpha = true;
-    message.alpha = present_fraction(world, s);
+        step(i + 2 >= steps, i + 1 == steps, false);
+    if (steps == 0) {
+        message.has_alpha = true;
+        message.alpha = present_fraction(world, s);
+    }
 }
 
-void worker_context::step_once() {
-    step(true, true);
-    message.has_alpha = true;
-    message.alpha = 1;
-}
+void worker_context::step_once() { step(true, true, true); }
 
-void worker_context::step(bool motion, bool contacts) {
+void worker_context::step(bool motion, bool contacts, bool single) {
     // A step callback may change the settings or pause the world: the main side adopts that.
     auto controls = world_controls{get_settings(reg), is_paused(reg)};
     try {
@@ -162,7 +160,14 @@ void worker_context::step(bool motion, bool contacts) {
     message.simulation_time = world.simulation_time;
     message.step_count = world.step_count;
     if (motion) snapshot_motion();
-    if (contacts) snapshot_contacts();
+    if (contacts) {
+        snapshot_contacts();
+        // The batch's last step: where the present lies between its motion and the step before
+        // goes in the same message. Sent apart, the main side could take this motion with the
+        // last batch's fraction, near 1, and the present stepped back at the next update().
+        message.has_alpha = true;
+        message.alpha = single ? scalar(1) : present_fraction(world, get_settings(reg));
+    }
     finish_message();
 }
 

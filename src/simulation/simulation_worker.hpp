@@ -50,9 +50,10 @@ struct worker_context {
     void send_events(bool on);
 
 private:
-    // Runs a step; `motion` sends every awake body's motion, `contacts` every awake manifold
-    // and constraint.
-    void step(bool motion, bool contacts);
+    // Runs a step; `motion` sends every awake body's motion, `contacts` (the batch's last step)
+    // every awake manifold and constraint, and the present's fraction: 1 for a `single` step,
+    // else what the clock leaves after the step.
+    void step(bool motion, bool contacts, bool single);
     void snapshot_motion();
     void snapshot_contacts();
 };

@@ -2,6 +2,7 @@
 // component operation, entity-valued members, external components and entities, settings,
 // calls that read motion) and what comes back (motion, events, query replies), checked in the
 // worker's own registry through a step callback.
+#include <chrono>
 #include <cmath>
 #include <edyn/edyn.hpp>
 #include <functional>
@@ -797,6 +798,38 @@ TEST(async_present, is_what_the_sequential_mode_presents_at_the_same_time) {
             << "frame " << i << ": sequential y = " << presented[0][i].y
             << ", asynchronous y = " << presented[1][i].y;
     }
+}
+
+// Updates as fast as the program can call them, without waiting, while the worker's steps take
+// 1.5 ms (a step callback sleeps): a body moving at a steady 6 m/s is never presented behind
+// where it was. The worker sent each batch's fraction apart from its last step's motion, and an
+// update() that took the motion with the last batch's fraction, near 1, put the present a step
+// ahead, which the next update() took back (some 20 times a second here).
+TEST(async_present, never_steps_back_while_updates_race_the_worker) {
+    registry reg;
+    attach(reg, init_config{execution_mode::asynchronous});
+    set_gravity(reg, vector3_zero);
+    set_pre_step_callback(reg,
+                          [](registry &) { std::this_thread::sleep_for(std::chrono::microseconds(1500)); });
+    rigidbody_def def;
+    def.shape = sphere_shape{scalar(0.5)};
+    def.linvel = {6, 0, 0};
+    def.sleeping_disabled = true;
+    auto ball = make_rigidbody(reg, def);
+    auto start = std::chrono::steady_clock::now();
+    scalar last = 0, worst = 0;
+    int frames = 0;
+    while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1500)) {
+        update(reg, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        auto x = reg.get<present_position>(ball).x;
+        worst = std::max(worst, last - x);
+        last = x;
+        ++frames;
+    }
+    detach(reg);
+    EXPECT_GT(last, 0) << "the ball never moved: nothing was tested";
+    EXPECT_LE(worst, scalar(1e-5)) << "the present stepped back by up to " << worst << " m in " << frames
+                                   << " frames";
 }
 
 TEST(async_bad_input, calls_that_need_attach_name_themselves) {
