@@ -127,17 +127,25 @@ void worker_context::advance(double time) {
     // The main side interpolates between the last two steps' motion and shows the last one's
     // contacts: steps before those send only their records (manifolds made and destroyed,
     // events, sleeping).
-    for (std::uint64_t i = 0; i < steps; ++i)
-        step(i + 2 >= steps, i + 1 == steps, false);
+    for (std::uint64_t i = 0; i < steps; ++i) {
+        auto dt = s.fixed_dt;
+        run_one_step();
+        // A step callback may have paused the world or changed its step.
+        steps = i + 1 + recount_due_steps(world, s, i + 1, steps - i - 1, dt);
+        send_step(i + 2 >= steps, i + 1 == steps, false);
+    }
     if (steps == 0) {
         message.has_alpha = true;
         message.alpha = present_fraction(world, s);
     }
 }
 
-void worker_context::step_once() { step(true, true, true); }
+void worker_context::step_once() {
+    run_one_step();
+    send_step(true, true, true);
+}
 
-void worker_context::step(bool motion, bool contacts, bool single) {
+void worker_context::run_one_step() {
     // A step callback may change the settings or pause the world: the main side adopts that.
     auto controls = world_controls{get_settings(reg), is_paused(reg)};
     try {
@@ -159,6 +167,9 @@ void worker_context::step(bool motion, bool contacts, bool single) {
     message.stepped = true;
     message.simulation_time = world.simulation_time;
     message.step_count = world.step_count;
+}
+
+void worker_context::send_step(bool motion, bool contacts, bool single) {
     if (motion) snapshot_motion();
     if (contacts) {
         snapshot_contacts();
@@ -166,7 +177,8 @@ void worker_context::step(bool motion, bool contacts, bool single) {
         // goes in the same message. Sent apart, the main side could take this motion with the
         // last batch's fraction, near 1, and the present stepped back at the next update().
         message.has_alpha = true;
-        message.alpha = single ? scalar(1) : present_fraction(world, get_settings(reg));
+        message.alpha =
+            single ? scalar(1) : present_fraction(reg.ctx().get<world_state>(), get_settings(reg));
     }
     finish_message();
 }

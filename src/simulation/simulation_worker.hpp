@@ -50,10 +50,12 @@ struct worker_context {
     void send_events(bool on);
 
 private:
-    // Runs a step; `motion` sends every awake body's motion, `contacts` (the batch's last step)
-    // every awake manifold and constraint, and the present's fraction: 1 for a `single` step,
-    // else what the clock leaves after the step.
-    void step(bool motion, bool contacts, bool single);
+    // Runs a step, keeping what its callbacks changed of the settings and what it threw.
+    void run_one_step();
+    // Sends the step just run: `motion` sends every awake body's motion, `contacts` (the
+    // batch's last step) every awake manifold and constraint, and the present's fraction: 1 for
+    // a `single` step, else what the clock leaves after the step.
+    void send_step(bool motion, bool contacts, bool single);
     void snapshot_motion();
     void snapshot_contacts();
 };

@@ -180,6 +180,32 @@ void step_simulation(registry &registry) {
     interpolate_present_transforms(registry, 1);
 }
 
+namespace {
+
+// Takes from the accumulator the whole steps it holds, at most `most`, dropping the time of
+// those beyond.
+std::uint64_t take_whole_steps(world_state &w, const settings &s, std::uint64_t most) {
+    double dt = s.fixed_dt;
+    // Compared in floating point before converting: a long pause over a small dt is more steps
+    // than an integer holds.
+    auto due = std::floor(w.accumulator / dt);
+    std::uint64_t steps;
+    if (!(due <= double(most))) {
+        // Drop the time that cannot be caught up with.
+        auto fraction = std::isfinite(w.accumulator) ? std::fmod(w.accumulator, dt) : 0.0;
+        w.accumulator = fraction + dt * double(most);
+        steps = most;
+    } else {
+        steps = static_cast<std::uint64_t>(due);
+    }
+    // One subtraction per step, as the steps are run, so that the fraction left is the same.
+    for (std::uint64_t i = 0; i < steps; ++i)
+        w.accumulator -= dt;
+    return steps;
+}
+
+} // namespace
+
 std::uint64_t take_due_steps(world_state &w, const settings &s, double time) {
     if (!w.started) {
         w.started = true;
@@ -189,24 +215,17 @@ std::uint64_t take_due_steps(world_state &w, const settings &s, double time) {
     auto elapsed = std::max(time - w.last_time, 0.0);
     w.last_time = time;
     if (w.paused) return 0;
-    double dt = s.fixed_dt;
     w.accumulator += elapsed;
-    // Compared in floating point before converting: a long pause over a small dt is more steps
-    // than an integer holds.
-    auto due = std::floor(w.accumulator / dt);
-    std::uint64_t steps;
-    if (!(due <= double(s.max_steps_per_update))) {
-        // Drop the time that cannot be caught up with.
-        auto fraction = std::isfinite(w.accumulator) ? std::fmod(w.accumulator, dt) : 0.0;
-        w.accumulator = fraction + dt * s.max_steps_per_update;
-        steps = s.max_steps_per_update;
-    } else {
-        steps = static_cast<std::uint64_t>(due);
-    }
-    // One subtraction per step, as the steps are run, so that the fraction left is the same.
-    for (std::uint64_t i = 0; i < steps; ++i)
-        w.accumulator -= dt;
-    return steps;
+    return take_whole_steps(w, s, s.max_steps_per_update);
+}
+
+std::uint64_t recount_due_steps(world_state &w, const settings &s, std::uint64_t run, std::uint64_t left,
+                                scalar dt_before) {
+    if (w.paused) return 0;
+    if (s.fixed_dt == dt_before) return left;
+    for (std::uint64_t i = 0; i < left; ++i)
+        w.accumulator += dt_before;
+    return take_whole_steps(w, s, s.max_steps_per_update > run ? s.max_steps_per_update - run : 0);
 }
 
 scalar present_fraction(const world_state &w, const settings &s) {
@@ -226,7 +245,10 @@ void update(registry &registry, double time) {
     auto steps = take_due_steps(w, s, time);
     for (std::uint64_t i = 0; i < steps; ++i) {
         save_previous_transforms(registry);
+        auto dt = s.fixed_dt;
         run_step(registry);
+        // A step callback may have paused the world or changed its step.
+        steps = i + 1 + recount_due_steps(w, s, i + 1, steps - i - 1, dt);
     }
     interpolate_present_transforms(registry, present_fraction(w, s));
     run_pending_replies(registry);

@@ -565,9 +565,51 @@ void push_up(registry &reg) {
     reg.replace<linvel>(log.body, vector3{0, 1, 0});
 }
 
+// Pauses the world at the start of its fourth step.
+void pause_at_fourth_step(registry &reg) {
+    if (get_step_count(reg) == 3) set_paused(reg, true);
+}
+
+// Halves the fixed step at the start of the third.
+void halve_step_at_third(registry &reg) {
+    if (get_step_count(reg) == 2) set_fixed_dt(reg, get_fixed_dt(reg) / 2);
+}
+
 } // namespace
 
 using step_callbacks = world_fixture;
+
+// A callback's pause or new fixed step rules the rest of the update() that ran it: a paused
+// world runs no more of its steps, and the time left is stepped with the new step, so that the
+// simulation keeps up with the program's clock. Before, the steps counted at the start of the
+// update all ran: four after the pause, and three of the new half length where seven were due.
+TEST_F(step_callbacks, a_pause_or_a_new_step_from_a_callback_rules_the_rest_of_the_update) {
+    make_rigidbody(reg, edyn::test::sphere_def(scalar(0.5), {0, 10, 0}));
+    auto dt = double(get_fixed_dt(reg));
+    set_pre_step_callback(reg, &pause_at_fourth_step);
+    edyn::test::advance_to(reg, 0);
+    edyn::test::advance_to(reg, 8.5 * dt);
+    EXPECT_TRUE(is_paused(reg));
+    EXPECT_EQ(get_step_count(reg), 4u) << "steps ran after a callback paused the world";
+    // Resumed, the steps the pause cut off are not made up.
+    set_pre_step_callback(reg, nullptr);
+    set_paused(reg, false);
+    edyn::test::advance_to(reg, 9.5 * dt);
+    EXPECT_EQ(get_step_count(reg), 5u);
+
+    registry other;
+    attach(other, edyn::test::test_config());
+    make_rigidbody(other, edyn::test::sphere_def(scalar(0.5), {0, 10, 0}));
+    set_pre_step_callback(other, &halve_step_at_third);
+    edyn::test::advance_to(other, 0);
+    edyn::test::advance_to(other, 6.5 * dt);
+    // Three steps of dt (the third was already under way), then the 3.5 dt of time left as
+    // seven steps of dt / 2: the simulation reaches the clock.
+    EXPECT_EQ(get_step_count(other), 10u);
+    EXPECT_NEAR(get_simulation_time(other), 6.5 * dt, 1e-9) << "the simulation fell behind the clock";
+    EXPECT_EQ(get_fixed_dt(other), scalar(dt / 2));
+    detach(other);
+}
 
 TEST_F(step_callbacks, pre_and_post_run_once_per_step_in_order_with_the_registry) {
     if (get_settings(reg).execution_mode == execution_mode::asynchronous)

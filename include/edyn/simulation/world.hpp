@@ -101,8 +101,9 @@ void wake_up_entity(registry &registry, entity entity);
 
 /// Pauses or resumes the simulation.
 /// While paused update() runs no step and time passes without being made up later;
-/// step_simulation still runs one step. In asynchronous mode the worker learns it with the
-/// next update().
+/// step_simulation still runs one step. A step callback that pauses stops the update() that
+/// ran it after the step under way. In asynchronous mode the worker learns it with the next
+/// update().
 /// @param registry An attached registry.
 /// @param paused True to pause, false to resume.
 /// @throws std::invalid_argument When the registry is not attached.
