@@ -2,6 +2,7 @@
 #include "edyn/shapes/shape_aabb.hpp"
 #include "edyn/shapes/validate_shape.hpp"
 #include "invalid_argument.hpp"
+#include "validate_compound_child.hpp"
 
 namespace edyn {
 
@@ -10,16 +11,9 @@ using detail::throw_invalid_argument;
 void compound_shape::add_shape(compound_child_shape_t shape, const vector3 &position,
                                const quaternion &orientation) {
     try {
-        validate_shape(shape);
+        detail::validate_compound_child(shape, position, orientation);
     } catch (const std::invalid_argument &e) {
-        throw_invalid_argument("compound_shape: add_shape: shape: ", e.what());
-    }
-    if (!isfinite(position)) {
-        throw_invalid_argument("compound_shape: add_shape: position must be finite, got ", position);
-    }
-    if (!isfinite(orientation) || !is_unit(orientation)) {
-        throw_invalid_argument("compound_shape: add_shape: orientation must be a unit quaternion, got ",
-                               orientation, " of length ", length(orientation));
+        throw_invalid_argument("compound_shape: add_shape: ", e.what());
     }
     auto orn = normalize(orientation);
     auto aabb = shape_aabb(shape, position, orn);

@@ -1,6 +1,7 @@
 #include "edyn/shapes/validate_shape.hpp"
 #include "edyn/shapes/shape_aabb.hpp"
 #include "invalid_argument.hpp"
+#include "validate_compound_child.hpp"
 #include <cmath>
 #include <string>
 
@@ -82,6 +83,22 @@ void validate_shape(const compound_child_shape_t &shape) {
     std::visit([](const auto &s) { validate_shape(s); }, shape);
 }
 
+void detail::validate_compound_child(const compound_child_shape_t &shape, const vector3 &position,
+                                     const quaternion &orientation) {
+    try {
+        validate_shape(shape);
+    } catch (const std::invalid_argument &e) {
+        throw_invalid_argument("shape: ", e.what());
+    }
+    if (!isfinite(position)) {
+        throw_invalid_argument("position must be finite, got ", position);
+    }
+    if (!isfinite(orientation) || !is_unit(orientation)) {
+        throw_invalid_argument("orientation must be a unit quaternion, got ", orientation, " of length ",
+                               length(orientation));
+    }
+}
+
 void validate_shape(const compound_shape &shape) {
     if (shape.children.empty()) {
         throw_invalid_argument("compound_shape: children is empty; add shapes with add_shape()");
@@ -92,17 +109,9 @@ void validate_shape(const compound_shape &shape) {
     for (std::size_t i = 0; i < shape.children.size(); ++i) {
         const auto &child = shape.children[i];
         try {
-            validate_shape(child.shape);
+            detail::validate_compound_child(child.shape, child.position, child.orientation);
         } catch (const std::invalid_argument &e) {
-            throw_invalid_argument("compound_shape: children[", i, "].shape: ", e.what());
-        }
-        if (!isfinite(child.position)) {
-            throw_invalid_argument("compound_shape: children[", i, "].position must be finite, got ",
-                                   child.position);
-        }
-        if (!isfinite(child.orientation) || !is_unit(child.orientation)) {
-            throw_invalid_argument("compound_shape: children[", i,
-                                   "].orientation must be a unit quaternion, got ", child.orientation);
+            throw_invalid_argument("compound_shape: children[", i, "].", e.what());
         }
         if (child.aabb != shape_aabb(child.shape, child.position, child.orientation)) {
             throw_invalid_argument("compound_shape: children[", i,

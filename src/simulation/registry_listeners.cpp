@@ -1,5 +1,6 @@
 #include "edyn/simulation/registry_listeners.hpp"
 #include "../shapes/invalid_argument.hpp"
+#include "../shapes/validate_compound_child.hpp"
 #include "component_list.hpp"
 #include "edyn/collision/collision_filter.hpp"
 #include "edyn/collision/contact_manifold.hpp"
@@ -245,13 +246,11 @@ std::optional<std::string> shape_problem(const registry &registry, entity e) {
 // as it is, for the step to refuse with that child's problem.
 void refresh_compound(compound_shape &compound) {
     if (compound.children.empty()) return;
-    for (const auto &child : compound.children) {
-        try {
-            validate_shape(child.shape);
-        } catch (const std::invalid_argument &) {
-            return;
-        }
-        if (!isfinite(child.position) || !isfinite(child.orientation) || !is_unit(child.orientation)) return;
+    try {
+        for (const auto &child : compound.children)
+            detail::validate_compound_child(child.shape, child.position, child.orientation);
+    } catch (const std::invalid_argument &) {
+        return;
     }
     compound.finish();
 }
