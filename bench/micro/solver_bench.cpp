@@ -64,7 +64,7 @@ void solver_iteration(benchmark::State &state) {
     auto h = scalar(1) / scalar(60 * 4);
     edyn::stage_queue queue;
     for (auto _ : state) {
-        edyn::solve_contacts(set.contacts, set.bodies, h, settings, true, queue);
+        edyn::solve_contacts(set.contacts, set.bodies, h, 0, settings, true, queue);
         queue.run(nullptr);
         benchmark::DoNotOptimize(set.bodies.data());
         benchmark::ClobberMemory();
@@ -83,7 +83,7 @@ void solver_relax_iteration(benchmark::State &state) {
     auto h = scalar(1) / scalar(60 * 4);
     edyn::stage_queue queue;
     for (auto _ : state) {
-        edyn::solve_contacts(set.contacts, set.bodies, h, settings, false, queue);
+        edyn::solve_contacts(set.contacts, set.bodies, h, 0, settings, false, queue);
         queue.run(nullptr);
         benchmark::DoNotOptimize(set.bodies.data());
         benchmark::ClobberMemory();

@@ -34,6 +34,37 @@ void assign_geometry(contact_point &cp, const result_point &rp, const manifold_t
     cp.featureB = rp.featureB;
 }
 
+// The part of `v` along a surface of normal `n`.
+vector3 along_surface(const vector3 &v, const vector3 &n) { return v - n * dot(v, n); }
+
+// A live point continued by a result point takes its geometry. A held point (one static
+// friction holds, contact_anchor_min_lifetime) that touches one body at the same material point
+// (its pivot there moved less than contact_reuse_max_distance on that body) keeps its surfaces'
+// slip, up to contact_anchor_max_slip: its pivot on the other body moves along the surface to
+// where the surfaces stuck. Replaced outright, the pivots of a body that moves more than
+// contact_reuse_max_distance or turns more than contact_reuse_max_angle a step held it each
+// step only where it then stood: the friction anchor's spring, stretched anew every step to
+// carry a steady force, let a box creep off a turning platform. A point that now touches both
+// bodies elsewhere (a rolling ball) starts again where it touches.
+void continue_point(contact_point &cp, const result_point &rp, const manifold_transforms &tf) {
+    auto slip = cp.positionA - cp.positionB; // The old pivots, refreshed at `tf`.
+    const auto same_sqr = contact_reuse_max_distance * contact_reuse_max_distance;
+    auto same_on_A = distance_sqr(cp.pivotA, rp.pivotA) <= same_sqr;
+    auto same_on_B = distance_sqr(cp.pivotB, rp.pivotB) <= same_sqr;
+    assign_geometry(cp, rp, tf);
+    if (cp.lifetime < contact_anchor_min_lifetime || (!same_on_A && !same_on_B)) return;
+    slip = along_surface(slip, cp.normal);
+    if (length_sqr(slip) > contact_anchor_max_slip * contact_anchor_max_slip) return;
+    auto shift = slip - along_surface(cp.positionA - cp.positionB, cp.normal);
+    if (same_on_A) {
+        cp.positionB -= shift;
+        cp.pivotB = to_object_space(cp.positionB, tf.posB, tf.ornB);
+    } else {
+        cp.positionA += shift;
+        cp.pivotA = to_object_space(cp.positionA, tf.posA, tf.ornA);
+    }
+}
+
 // `ids` stays a permutation of all slots, so the first id past the live ones is a free slot.
 void insert_point(contact_manifold &manifold, const result_point &rp, const manifold_transforms &tf,
                   contact_point_changes &changes) {
@@ -240,7 +271,7 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
                                                                           : -1;
         if (pos >= 0) {
             auto slot = manifold.ids[static_cast<std::size_t>(pos)];
-            assign_geometry(manifold.point[slot], rp, tf);
+            continue_point(manifold.point[slot], rp, tf);
             matched[slot] = true;
         } else if (rp.distance <= manifold.separation_threshold) {
             pending[num_pending++] = static_cast<int>(r);

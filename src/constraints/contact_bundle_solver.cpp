@@ -194,22 +194,30 @@ inline void keep_unmasked(wide_mask active, const velocities &before, wide_body 
     }
 }
 
-// A lever turned to first order, as turned_lever() in contact_solver.cpp.
-inline wide3 turned_lever(const wide_quaternion &q, const wide3 &r) {
-    return r + cross(wide3{q.x, q.y, q.z}, r) * (q.w * wide_set(scalar(2)));
+// A lever turned exactly across the normal and to first order along it, as turned_lever() in
+// contact_solver.cpp.
+inline wide3 turned_lever(const wide_quaternion &q, const wide3 &r, const wide3 &normal) {
+    auto axis = wide3{q.x, q.y, q.z};
+    auto first = cross(axis, r);
+    auto second = cross(axis, first) * wide_set(scalar(2));
+    return r + first * (q.w * wide_set(scalar(2))) + (second - normal * dot(normal, second));
 }
 
 // The bodies' relative motion at the slot's points since the step began, as point_motion() in
 // contact_solver.cpp.
 template<fixed_side F>
 inline wide3 point_motion(const contact_bundle_slot &slot, const wide_body &a, const wide_body &b) {
+    auto normal = wide3_load(slot.normal);
     if constexpr (F == fixed_side::b) {
-        return a.delta_position + (turned_lever(a.delta_rotation, wide3_load(slot.rA)) - wide3_load(slot.rB));
+        return a.delta_position +
+               (turned_lever(a.delta_rotation, wide3_load(slot.rA), normal) - wide3_load(slot.rB));
     } else if constexpr (F == fixed_side::a) {
-        return (wide3_load(slot.rA) - turned_lever(b.delta_rotation, wide3_load(slot.rB))) - b.delta_position;
+        return (wide3_load(slot.rA) - turned_lever(b.delta_rotation, wide3_load(slot.rB), normal)) -
+               b.delta_position;
     } else {
-        return (a.delta_position - b.delta_position) + (turned_lever(a.delta_rotation, wide3_load(slot.rA)) -
-                                                        turned_lever(b.delta_rotation, wide3_load(slot.rB)));
+        return (a.delta_position - b.delta_position) +
+               (turned_lever(a.delta_rotation, wide3_load(slot.rA), normal) -
+                turned_lever(b.delta_rotation, wide3_load(slot.rB), normal));
     }
 }
 
@@ -281,6 +289,7 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
     auto min_bias = wide_set(-pass.max_push_out_velocity);
     auto max_bias = wide_set(pass.max_push_out_velocity);
     auto anchor_bias_rate = wide_set(pass.anchor.bias_rate);
+    auto elapsed = wide_set(pass.elapsed);
     auto anchor_mass_scale = wide_set(pass.anchor.mass_scale);
     auto anchor_impulse_scale = wide_set(pass.anchor.impulse_scale);
     wide3 motion[contact_solver_constraint::max_points];
@@ -325,6 +334,8 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         auto partial = s >= bundle.full_slots;
         auto before = velocities_of(a, b);
         auto mean_mass = (wide_load(slot.tangent_mass[0]) + wide_load(slot.tangent_mass[1])) * half;
+        // The points' relative velocity in the middle of the sub-step, as in solve_friction().
+        auto path_acceleration = wide3_load(slot.path_acceleration);
         wide_row row[2];
         wide3 tangent[2];
         wide old_impulse[2], new_impulse[2], shared[2];
@@ -332,7 +343,8 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
             row[t] = load_row(slot.tangent_row[t]);
             tangent[t] = wide3_load(slot.tangent[t]);
             old_impulse[t] = wide_load(slot.tangent_impulse[t]);
-            auto vt = row_velocity<F>(row[t], tangent[t], a, b);
+            auto vt =
+                row_velocity<F>(row[t], tangent[t], a, b) + elapsed * dot(tangent[t], path_acceleration);
             auto mass_scale = one, impulse_scale = zero;
             if (pass.use_bias) {
                 // Friction anchors, as solve_friction() in contact_solver.cpp.

@@ -70,7 +70,8 @@ struct bundle_pass {
     softness rigid;  // The rigid contacts' softness for the sub-step.
     softness anchor; // The friction anchors' softness for the sub-step.
     scalar max_push_out_velocity;
-    bool use_bias; // The biased pass, or the relax pass.
+    bool use_bias;  // The biased pass, or the relax pass.
+    scalar elapsed; // From the start of the step to the middle of the sub-step (s).
 };
 
 // One pass of normal and friction rows over the bundle's points.

@@ -401,3 +401,80 @@ TEST_F(friction, a_sliding_sphere_rolls_at_five_sevenths_of_its_speed_at_any_mas
         EXPECT_NEAR(pos(e).y, r, scalar(0.01)) << "mass " << spheres[k].mass;
     }
 }
+
+// A kinematic platform turning at w about the vertical carries a box at radius r for as long as
+// friction can give it the centripetal force: w^2 r <= mu g. Held, the box keeps its radius and
+// its place on the platform; beyond that it slides outward.
+TEST_F(friction, a_box_on_a_turning_platform_keeps_its_radius_while_friction_holds_it) {
+    const scalar w = scalar(1.5);
+    rigidbody_def platform_def;
+    platform_def.kind = rigidbody_kind::rb_kinematic;
+    platform_def.shape = cylinder_shape{3, scalar(0.1), coordinate_axis::y};
+    platform_def.material->friction = 1;
+    platform_def.angvel = {0, w, 0};
+    auto platform = make_rigidbody(reg, platform_def);
+
+    // Held: w^2 r up to 5.6 m/s^2 against mu g = 9.8. Beyond: w^2 r = 5.6 against mu g = 2.0.
+    const scalar radii[]{scalar(0.5), scalar(1.5), scalar(2.5)};
+    std::vector<entity> held;
+    for (int k = 0; k < 3; ++k) {
+        auto angle = scalar(2.1) * scalar(k);
+        auto def = edyn::test::box_def(vector3{scalar(0.1), scalar(0.1), scalar(0.1)},
+                                       {radii[k] * std::cos(angle), scalar(0.2), radii[k] * std::sin(angle)});
+        def.material->friction = 1;
+        def.linvel = cross(vector3{0, w, 0}, def.position);
+        def.angvel = {0, w, 0};
+        def.sleeping_disabled = true;
+        held.push_back(make_rigidbody(reg, def));
+    }
+    auto def = edyn::test::box_def(vector3{scalar(0.1), scalar(0.1), scalar(0.1)}, {0, scalar(0.2), 2.5});
+    def.material->friction = scalar(0.04); // Mixed with the platform's 1: sqrt(0.04) = 0.2.
+    def.linvel = cross(vector3{0, w, 0}, def.position);
+    def.angvel = {0, w, 0};
+    def.sleeping_disabled = true;
+    auto slipping = make_rigidbody(reg, def);
+
+    // Where each box sits on the platform, in the platform's frame.
+    auto on_platform = [&](entity e) {
+        return rotate(conjugate(reg.get<orientation>(platform)), pos(e) - pos(platform));
+    };
+    std::vector<vector3> start;
+    for (auto e : held)
+        start.push_back(on_platform(e));
+    run_for(20);
+    for (int k = 0; k < 3; ++k) {
+        auto p = pos(held[k]);
+        auto radius = std::sqrt(p.x * p.x + p.z * p.z);
+        EXPECT_NEAR(radius, radii[k], scalar(0.01)) << "box at " << radii[k] << " m";
+        EXPECT_LT(length(on_platform(held[k]) - start[k]), scalar(0.02)) << "box at " << radii[k] << " m";
+        EXPECT_NEAR(p.y, scalar(0.2), scalar(0.01)) << "box at " << radii[k] << " m";
+    }
+    auto p = pos(slipping);
+    EXPECT_GT(std::sqrt(p.x * p.x + p.z * p.z), 3) << "the box friction cannot hold stayed on the platform";
+}
+
+// Static friction carries a box on the bed of a kinematic truck that accelerates at a < mu g: the
+// box must not creep backwards on the bed, however far the truck goes.
+TEST_F(friction, a_box_on_an_accelerating_truck_stays_where_it_was_put) {
+    rigidbody_def truck_def;
+    truck_def.kind = rigidbody_kind::rb_kinematic;
+    truck_def.shape = box_shape{20, scalar(0.1), 2};
+    truck_def.material->friction = 1;
+    auto truck = make_rigidbody(reg, truck_def);
+    auto def = edyn::test::box_def(vector3{scalar(0.3), scalar(0.3), scalar(0.3)}, {0, scalar(0.4), 0});
+    def.material->friction = 1;
+    def.sleeping_disabled = true;
+    auto box = make_rigidbody(reg, def);
+    run_for(1);
+    auto on_bed = pos(box).x - pos(truck).x;
+    // 4 m/s^2 for 5 s, against mu g = 9.8.
+    const scalar acceleration = 4;
+    auto dt = get_fixed_dt(reg);
+    for (int i = 1; i <= 300; ++i) {
+        reg.replace<linvel>(truck, vector3{acceleration * dt * scalar(i), 0, 0});
+        edyn::test::step(reg);
+    }
+    EXPECT_NEAR(vel(truck).x, 20, scalar(1e-3));
+    EXPECT_NEAR(pos(box).x - pos(truck).x, on_bed, scalar(0.002)) << "the box crept on the bed";
+    EXPECT_NEAR(vel(box).x, 20, scalar(0.1));
+}

@@ -20,6 +20,23 @@ inline constexpr scalar contact_breaking_threshold = scalar(0.02);
 /// Tangential distance between the two pivots of a point, in world space, beyond which the point
 /// is dropped (m): the surfaces slid so far that the point no longer describes the contact.
 inline constexpr scalar contact_drift_threshold = scalar(0.02);
+/// Steps a contact point must have lasted (contact_point::lifetime) before static friction holds
+/// it where its surfaces stuck across steps (contact_solver_settings::friction_anchor_hertz);
+/// half a second at 60 Hz. Younger points are held only against the sliding of the current step.
+/// The first moments of a contact, an impact or a tumble, are then decided as in a world rebuilt
+/// from the bodies' positions and velocities alone, as a network client's extrapolation is
+/// (a few steps long), while bodies that have come to rest stay where they are.
+inline constexpr std::uint32_t contact_anchor_min_lifetime = 30;
+/// Slip of a held contact point's surfaces beyond which a new collide() holds the point again
+/// where its surfaces now touch, not where they stuck (m).
+///
+/// A point old enough to be held (contact_anchor_min_lifetime) that touches one of its bodies at
+/// the same material point keeps its pivots' distance along the surfaces when collide() finds
+/// it again, up to this slip, as it does while its pair's points are reused: static friction
+/// then holds the surfaces where they stuck also on a body that moves or turns, a box on a
+/// turning platform or on an accelerating truck. A point that slid farther starts again where
+/// it touches, before contact_drift_threshold would end it.
+inline constexpr scalar contact_anchor_max_slip = scalar(0.005);
 /// Distance within which a new point without matching features is the same as an existing one
 /// (m): its pivot on either body lies within this distance of the existing pivot on that body.
 inline constexpr scalar contact_caching_threshold = scalar(0.04);

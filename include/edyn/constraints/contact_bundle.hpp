@@ -71,6 +71,8 @@ struct contact_bundle_slot {
     scalar adjusted_separation[contact_bundle_lanes];
     /// See contact_solver_point::adjusted_anchor_gap (m).
     scalar adjusted_anchor_gap[3][contact_bundle_lanes];
+    /// See contact_solver_point::path_acceleration (m/s^2).
+    scalar path_acceleration[3][contact_bundle_lanes];
     scalar normal_mass[contact_bundle_lanes];     ///< Effective mass along the normal (kg).
     scalar tangent_mass[2][contact_bundle_lanes]; ///< Effective mass along each tangent (kg).
     scalar normal_impulse[contact_bundle_lanes];  ///< Normal impulse of the sub-step (N s).

@@ -1,6 +1,7 @@
 #ifndef EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 #define EDYN_CONSTRAINTS_CONTACT_SOLVER_HPP
 
+#include "edyn/collision/contact_manifold.hpp"
 #include "edyn/constraints/contact_bundle.hpp"
 #include "edyn/dynamics/solver_body.hpp"
 #include "edyn/parallel/stage_queue.hpp"
@@ -35,7 +36,8 @@ struct contact_row {
 /// bodies' accumulated motion.
 /// The caller sets `rA`, `rB`, `normal`, `adjusted_separation`, `adjusted_anchor_gap` and last
 /// step's impulses;
-/// prepare_contacts() computes the rest: the tangents, effective masses and rows. For a point of
+/// prepare_contacts() computes the rest: the path acceleration, the tangents, effective masses
+/// and rows. For a point of
 /// a bundled constraint that does not bounce it computes them in the bundle, several points at
 /// once, and leaves the point's own unset.
 struct contact_solver_point {
@@ -54,6 +56,11 @@ struct contact_solver_point {
     /// a tangent, with the bodies' motion since then, it gives how far the surfaces slid from
     /// where they stuck, which the biased pass's friction rows undo.
     vector3 adjusted_anchor_gap{vector3_zero};
+    /// How fast the two bodies' points at the contact turn away from each other as the bodies
+    /// rotate, when the step began: w_A x (w_A x rA) - w_B x (w_B x rB) (m/s^2). The rows take
+    /// the lever arms of the step's start; with this the friction rows hold the points together
+    /// in the middle of each sub-step, on their curved paths, not on the lines they started along.
+    vector3 path_acceleration{vector3_zero};
     scalar normal_mass{0};           ///< Effective mass along the normal (kg).
     scalar tangent_mass[2]{0, 0};    ///< Effective mass along each tangent (kg).
     scalar normal_impulse{0};        ///< Normal impulse of the sub-step (N s), not negative.
@@ -192,14 +199,6 @@ struct contact_solver_set {
     contact_solver_point *add(const contact_solver_constraint &c, std::uint32_t num_points);
 };
 
-/// Steps a contact point must have lasted (contact_point::lifetime) before static friction holds
-/// it where its surfaces stuck across steps (contact_solver_settings::friction_anchor_hertz);
-/// half a second at 60 Hz. Younger points are held only against the sliding of the current step.
-/// The first moments of a contact, an impact or a tumble, are then decided as in a world rebuilt
-/// from the bodies' positions and velocities alone, as a network client's extrapolation is
-/// (a few steps long), while bodies that have come to rest stay where they are.
-inline constexpr std::uint32_t contact_anchor_min_lifetime = 30;
-
 /// Tuning of the soft-step contact solver, shared by all contacts of a step. These are the
 /// global contact stiffness and damping, the defaults for every contact: a contact whose mixed
 /// material has a finite stiffness (material_base::stiffness) is instead a spring of that
@@ -281,10 +280,12 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
 /// @param contacts The step's contacts; their impulses accumulate.
 /// @param bodies The step's solver bodies.
 /// @param h The sub-step (s).
+/// @param substep Which sub-step of the step this is, from 0: friction holds the points in its
+/// middle (contact_solver_point::path_acceleration).
 /// @param settings The contact settings.
 /// @param use_bias True for the biased pass, false for the relax pass.
 /// @param queue Where the pass is queued.
-void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h,
+void solve_contacts(contact_solver_set &contacts, std::span<solver_body> bodies, scalar h, unsigned substep,
                     const contact_solver_settings &settings, bool use_bias, stage_queue &queue);
 
 /// Queues adding each impulse of the sub-step just solved to the step's totals, once at the end

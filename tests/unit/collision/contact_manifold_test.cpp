@@ -434,3 +434,33 @@ TEST_F(manifold_fixture, updates_leave_the_pivots_in_world_space) {
     EXPECT_NEAR(edyn::distance(cp.positionA, {0.25f, -0.015f, 0}), 0, contact_manifold_tol);
     EXPECT_NEAR(cp.distance, scalar(-0.015), contact_manifold_tol);
 }
+
+// A held point (old enough for static friction to hold it) found again by collide() keeps how
+// far its surfaces slid since they stuck while it touches one body at the same material point;
+// a young one, one that slid farther than contact_anchor_max_slip, or one touching both bodies
+// elsewhere now starts again where it touches.
+TEST_F(manifold_fixture, a_held_point_found_again_keeps_its_surfaces_slip) {
+    auto slip_after = [&](std::uint32_t lifetime, scalar slide, scalar roll) {
+        manifold = {};
+        tf.posA = {0, 1, 0};
+        edyn::update_contact_manifold(manifold, tf, make_result({make_point({0, 0, 0}, scalar(-0.005))}));
+        manifold.point[manifold.ids[0]].lifetime = lifetime;
+        // A slides by `slide` along x; the new result's pivot on A lies `roll` from the old one.
+        tf.posA.x += slide;
+        auto again = make_point({slide + roll, 0, 0}, scalar(-0.005));
+        edyn::update_contact_manifold(manifold, tf, make_result({again}));
+        EXPECT_EQ(manifold.num_points, 1u);
+        auto &cp = manifold.point[manifold.ids[0]];
+        EXPECT_EQ(cp.positionA, edyn::to_world_space(cp.pivotA, tf.posA, tf.ornA));
+        EXPECT_EQ(cp.positionB, edyn::to_world_space(cp.pivotB, tf.posB, tf.ornB));
+        EXPECT_NEAR(cp.distance, -0.005, contact_manifold_tol);
+        return cp.positionA - cp.positionB;
+    };
+    const auto held = edyn::contact_anchor_min_lifetime;
+    auto kept = slip_after(held, scalar(0.003), 0);
+    EXPECT_NEAR(kept.x, 0.003, contact_manifold_tol);
+    EXPECT_NEAR(kept.y, -0.005, contact_manifold_tol);
+    EXPECT_NEAR(slip_after(held - 2, scalar(0.003), 0).x, 0, contact_manifold_tol) << "young";
+    EXPECT_NEAR(slip_after(held, edyn::contact_anchor_max_slip * 2, 0).x, 0, contact_manifold_tol) << "slid";
+    EXPECT_NEAR(slip_after(held, scalar(0.003), scalar(0.01)).x, 0, contact_manifold_tol) << "rolled";
+}

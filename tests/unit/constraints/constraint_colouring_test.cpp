@@ -185,8 +185,8 @@ void solve(random_contacts &set, task_scheduler *scheduler) {
     stage_queue queue;
     for (int i = 0; i < 2; ++i) {
         warm_start_contacts(set.contacts, set.bodies, queue);
-        solve_contacts(set.contacts, set.bodies, h, settings, true, queue);
-        solve_contacts(set.contacts, set.bodies, h, settings, false, queue);
+        solve_contacts(set.contacts, set.bodies, h, 0, settings, true, queue);
+        solve_contacts(set.contacts, set.bodies, h, 0, settings, false, queue);
         accumulate_contact_impulses(set.contacts, queue);
     }
     queue.run(scheduler);
