@@ -63,6 +63,18 @@ vector3 cvjoint_twist_axis(const vector3 &axisA, const vector3 &axisB) noexcept 
     return (axisA + axisB) / c;
 }
 
+namespace {
+
+// The normal of the plane the joint bends in: the twist axis, made unit. Bent by exactly half a
+// turn the twist axis vanishes (a + b = 0) and every plane through the shafts is a bend plane;
+// body A's axis stands in for it.
+vector3 bend_plane_normal(const vector3 &twist_axis, const vector3 &axisA) noexcept {
+    auto len_sqr = length_sqr(twist_axis);
+    return len_sqr > epsilon * epsilon ? twist_axis / std::sqrt(len_sqr) : axisA;
+}
+
+} // namespace
+
 cvjoint_constraint_solver make_constraint_solver(const registry &registry, const cvjoint_constraint &c,
                                                  constraint_body_indices indices) {
     cvjoint_constraint_solver s;
@@ -94,7 +106,9 @@ cvjoint_constraint_solver make_constraint_solver(const registry &registry, const
     s.bend_friction_torque = c.bend_friction_torque;
     // The bend plane has turned since the impulse was stored: keep only what still bends.
     s.bend_friction_impulse =
-        c.bend_friction_torque > 0 ? project_plane(c.bend_friction_impulse, normalize(axis)) : vector3_zero;
+        c.bend_friction_torque > 0
+            ? project_plane(c.bend_friction_impulse, bend_plane_normal(axis, s.frameA.column(0)))
+            : vector3_zero;
     return s;
 }
 
@@ -140,7 +154,7 @@ void solve_twist_hits(cvjoint_constraint_solver &s, const limit_hits &hits, solv
 void solve_bend_friction(cvjoint_constraint_solver &s, const vector3 &twist_axis, solver_body &a,
                          solver_body &b, const constraint_solve_context &ctx) noexcept {
     if (!s.bend_mass_valid) return;
-    auto u = normalize(twist_axis);
+    auto u = bend_plane_normal(twist_axis, s.frameA.column(0));
     auto max_impulse = s.bend_friction_torque * ctx.h;
     auto bend_rate = project_plane(a.angvel - b.angvel, u);
     auto new_impulse = project_plane(s.bend_friction_impulse - s.bend_mass * bend_rate, u);

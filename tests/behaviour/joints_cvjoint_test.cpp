@@ -250,6 +250,28 @@ TEST_F(cvjoint, bend_friction_decelerates_at_torque_over_inertia_and_leaves_the_
     EXPECT_LT(length(angular(bending)), scalar(1e-3)) << "still bending at " << length(angular(bending));
 }
 
+// Bent by exactly half a turn (its axes opposite) the joint's twist axis vanishes; bend friction
+// still slows a bend across body A's axis, and nothing becomes NaN.
+TEST_F(cvjoint, bend_friction_holds_a_joint_bent_by_half_a_turn) {
+    set_gravity(reg, vector3_zero);
+    auto anchor = edyn::test::make_anchor(reg, vector3_zero);
+    const scalar torque = scalar(0.2);
+    auto def = ball_def(vector3_zero);
+    def.angvel = {0, 1, 0};
+    auto ball = make_rigidbody(reg, def);
+    make_constraint<cvjoint_constraint>(reg, anchor, ball, [&](cvjoint_constraint &c) {
+        c.set_axes({-1, 0, 0}, {1, 0, 0});
+        c.twist_min = -std::numeric_limits<scalar>::infinity();
+        c.twist_max = std::numeric_limits<scalar>::infinity();
+        c.bend_friction_torque = torque;
+    });
+    run_for(0.5);
+    auto expected = 1 - torque / ball_inertia * scalar(0.5);
+    EXPECT_NEAR(angular(ball).y, expected, 0.02)
+        << "bend rate " << angular(ball).y << " rad/s, expected " << expected;
+    EXPECT_TRUE(isfinite(pos(ball)) && isfinite(vel(ball)) && isfinite(angular(ball)));
+}
+
 TEST_F(cvjoint, twist_limit_bounces_with_restitution) {
     set_gravity(reg, vector3_zero);
     auto anchor = edyn::test::make_anchor(reg, vector3_zero);
