@@ -34,6 +34,7 @@ struct cone_row {
     jacobian j;
     scalar C;
     bool valid;
+    scalar radius; // The point's distance from the apex (m).
 };
 
 cone_row current_row(const cone_constraint_solver &s, const joint_pose &pose, const solver_body &a) noexcept {
@@ -44,7 +45,7 @@ cone_row current_row(const cone_constraint_solver &s, const joint_pose &pose, co
     auto rho = std::sqrt(y * y + z * z);
     auto len = length(r);
     // At the apex or on the axis the wall is as far as the cone is wide: nothing to do.
-    if (!(len > scalar(1e-6)) || !(rho > scalar(1e-6) * len)) return {{}, 0, false};
+    if (!(len > scalar(1e-6)) || !(rho > scalar(1e-6) * len)) return {{}, 0, false, 0};
     // The wall's half-angle alpha in the point's direction about the axis is the polar radius of
     // the ellipse of semi-axes tan0, tan1: tan alpha = k rho / m with k = tan0 tan1 and
     // m = |(tan1 y, tan0 z)|. The point's own angle from the axis is theta = atan2(rho, x), and
@@ -58,7 +59,7 @@ cone_row current_row(const cone_constraint_solver &s, const joint_pose &pose, co
     // (sin theta = rho / |r| and cos theta = x / |r|.)
     auto u = (e1 * y + e2 * z) / rho;
     auto n = (e0 * rho - u * x) / (len * len);
-    return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), C, true};
+    return {linear_jacobian(-n, pose.rA - pose.d, pose.rB), C, true, len};
 }
 
 // How far from the apex, on the cone's body, a joint's pivot may lie for the joint to hold the
@@ -147,6 +148,7 @@ void refresh_geometry(cone_constraint_solver &s, std::span<const solver_body> bo
     s.wall = row.j;
     s.wall_angle = row.C;
     s.wall_valid = row.valid;
+    s.wall_radius = row.radius;
 }
 
 void warm_start(cone_constraint_solver &s, std::span<solver_body> bodies) noexcept {
@@ -199,7 +201,10 @@ void solve(cone_constraint_solver &s, std::span<solver_body> bodies,
             return;
         }
     }
-    solve_limit_row(wall, angle, s.impulse, a, b, ctx);
+    // A point far outside is drawn back across the wall no faster than a joint's pivots are
+    // drawn together (constraint_solver_settings::max_correction_speed): the spring alone
+    // flung a point 45 degrees out at 33 m/s, and one behind the apex at the world's speed cap.
+    solve_limit_row(wall, angle, s.impulse, a, b, ctx, ctx.max_correction_speed / s.wall_radius);
 }
 
 void store_impulses(const cone_constraint_solver &s, cone_constraint &c) noexcept {

@@ -32,7 +32,7 @@ void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a,
 
 template<constraint_row Row>
 void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
-                     const constraint_solve_context &ctx) noexcept {
+                     const constraint_solve_context &ctx, scalar max_correction) noexcept {
     // An open limit holding no impulse, which the motion does not close within the sub-step,
     // has nothing to do (the common case, far from the limit): its effective mass is not needed.
     if (C > 0 && impulse == 0 && row_velocity(j, a, b) + C * ctx.inv_h >= 0) return;
@@ -43,7 +43,7 @@ void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, so
         // Speculative: the gap may close within this sub-step, no more.
         bias = C * ctx.inv_h;
     } else if (ctx.use_bias) {
-        bias = ctx.joint.bias_rate * C;
+        bias = std::max(ctx.joint.bias_rate * C, -max_correction);
         mass_scale = ctx.joint.mass_scale;
         impulse_scale = ctx.joint.impulse_scale;
     }
@@ -89,7 +89,7 @@ void solve_spring_row(const Row &j, scalar C, scalar k, scalar c, scalar &impuls
     template void solve_equality_row(const Row &, scalar, scalar &, solver_body &, solver_body &,            \
                                      const constraint_solve_context &) noexcept;                             \
     template void solve_limit_row(const Row &, scalar, scalar &, solver_body &, solver_body &,               \
-                                  const constraint_solve_context &) noexcept;                                \
+                                  const constraint_solve_context &, scalar) noexcept;                        \
     template void solve_friction_row(const Row &, scalar, scalar &, solver_body &, solver_body &) noexcept;  \
     template void solve_spring_row(const Row &, scalar, scalar, scalar, scalar &, solver_body &,             \
                                    solver_body &, const constraint_solve_context &, bool) noexcept;

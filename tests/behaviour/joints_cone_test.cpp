@@ -74,6 +74,46 @@ TEST_F(cone_joint, pendulum_pushed_hard_stays_inside_a_thirty_degree_cone) {
     EXPECT_LT(distance(top, apex), scalar(0.005));
 }
 
+// A rod started 80 degrees from the axis of a 20-degree cone, as a limb left outside its limit
+// or a cone narrowed at run time, is drawn back no faster than a joint's pivots are drawn
+// together (constraint_solver_settings::max_correction_speed, 3 m/s at its end), not flung back;
+// and a ball behind the apex of a cone of its own is not flung at all.
+TEST_F(cone_joint, a_rod_far_outside_the_cone_is_drawn_back_at_the_correction_speed) {
+    const auto span = to_radians(20);
+    anchor = edyn::test::make_anchor(reg, apex);
+    auto tilt = quaternion_axis_angle(vector3_z, to_radians(80));
+    auto def = edyn::test::box_def({scalar(0.05), rod_half_length, scalar(0.05)},
+                                   apex + rotate(tilt, vector3{0, -rod_half_length, 0}));
+    def.orientation = tilt;
+    rod = make_rigidbody(reg, def);
+    make_constraint<point_constraint>(reg, anchor, rod, [](point_constraint &c) {
+        c.pivot[1] = {0, rod_half_length, 0};
+    });
+    make_constraint<cone_constraint>(reg, anchor, rod, [&](cone_constraint &c) {
+        c.pivot[1] = {0, -rod_half_length, 0};
+        c.frame = matrix3x3_columns(-vector3_y, vector3_x, vector3_z);
+        c.span_angle[0] = c.span_angle[1] = span;
+    });
+    auto ball_def = edyn::test::sphere_def(scalar(0.1), {-1, 0, 5});
+    ball_def.gravity = vector3_zero;
+    ball_def.linvel = {0, 1, 0};
+    auto ball_anchor = edyn::test::make_anchor(reg, {0, 0, 5});
+    auto ball = make_rigidbody(reg, ball_def);
+    make_constraint<cone_constraint>(reg, ball_anchor, ball);
+    scalar fastest_swing = 0, fastest_ball = 0;
+    auto steps = int(std::lround(2 / get_fixed_dt(reg)));
+    for (int i = 0; i < steps; ++i) {
+        edyn::test::step(reg);
+        fastest_swing = std::max(fastest_swing, length(angular(rod)));
+        fastest_ball = std::max(fastest_ball, length(vel(ball)));
+    }
+    // The rod's end, 1 m out, at 3 m/s, with what the relax pass leaves of the push.
+    EXPECT_LT(fastest_swing, 5) << "the cone flung the rod back at " << fastest_swing << " rad/s";
+    EXPECT_LT(measure(span, span).excess, scalar(0.01)) << "tilt " << measure(span, span).tilt;
+    EXPECT_LT(fastest_ball, 10) << "the cone flung the ball at " << fastest_ball << " m/s";
+    EXPECT_TRUE(isfinite(pos(ball)));
+}
+
 TEST_F(cone_joint, elliptical_cone_respects_each_span) {
     const auto span0 = to_radians(20), span1 = to_radians(45);
     // Pushed along each span's direction, the rod stops at that span; pushed between them, at

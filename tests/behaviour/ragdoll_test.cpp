@@ -117,14 +117,16 @@ TEST_F(ragdolls, falling_from_standing_keeps_every_joint_within_its_limits) {
         << "a hinge passed its limit by " << to_degrees(falling.hinge) << " deg";
     EXPECT_LT(falling.twist, to_radians(8))
         << "a twist passed its limit by " << to_degrees(falling.twist) << " deg";
-    // The worst is the head's cone (25 by 20 degrees), left by 21.3 degrees 0.93 s in, as the
+    // The worst is the head's cone (25 by 20 degrees), left by 26.2 degrees 0.93 s in, as the
     // head lands at 5.6 m/s and the body drives the neck on: far more than the other limits
-    // give, and the figure to bring down. The allowance is that figure plus 2 degrees, its
-    // spread under rounding-sized changes to the fall (0.2 degrees for a 0.01 degree change
-    // of the lean, 2 degrees for 0.05), so that any growth shows.
-    const scalar cone_overshoot_measured = to_radians(scalar(21.3)), cone_overshoot_margin = to_radians(2);
+    // give, and the figure to bring down. (21.3 degrees before the cone's correction was held
+    // to max_correction_speed, which keeps a point found far outside from being flung back.)
+    // The allowance is that figure plus 2 degrees, its spread under rounding-sized changes to
+    // the fall (0.2 degrees for a 0.01 degree change of the lean, 2 degrees for 0.05), so that
+    // any growth shows.
+    const scalar cone_overshoot_measured = to_radians(scalar(26.2)), cone_overshoot_margin = to_radians(2);
     EXPECT_LT(falling.cone, cone_overshoot_measured + cone_overshoot_margin)
-        << "a cone was left by " << to_degrees(falling.cone) << " deg; measured 21.3 deg when this was set";
+        << "a cone was left by " << to_degrees(falling.cone) << " deg; measured 26.2 deg when this was set";
     // Lying still, the limits hold it.
     for (auto [name, excess] : {std::pair{"hinge", resting.hinge}, std::pair{"twist", resting.twist},
                                 std::pair{"cone", resting.cone}}) {

@@ -83,9 +83,13 @@ struct cone_constraint_solver {
     /// Angle from the point's direction to the wall there (radians, positive inside).
     /// @var wall_valid
     /// False while the point is at the apex or on the axis, where there is no row.
+    /// @var wall_radius
+    /// The point's distance from the apex there (m): the wall's angular rate times it is the
+    /// point's speed across the wall.
     jacobian wall{};
     scalar wall_angle{0};
     bool wall_valid{false};
+    scalar wall_radius{0};
     /// @var impulse
     /// Wall impulse of the sub-step (N m s), not negative.
     /// @var bump_stop_impulse

@@ -265,9 +265,11 @@ void solve_equality_row(const Row &j, scalar C, scalar &impulse, solver_body &a,
 /// @param a Body A's solver state.
 /// @param b Body B's solver state.
 /// @param ctx The pass: sub-step, softness and whether to correct position errors.
+/// @param max_correction The fastest the soft correction of a negative C may drive the row (in
+/// the row's units, m/s or rad/s); unbounded by default.
 template<constraint_row Row>
 void solve_limit_row(const Row &j, scalar C, scalar &impulse, solver_body &a, solver_body &b,
-                     const constraint_solve_context &ctx) noexcept;
+                     const constraint_solve_context &ctx, scalar max_correction = large_scalar) noexcept;
 
 /// Row driving its velocity to zero with an impulse bounded by max_impulse per sub-step.
 /// Does nothing when the row's effective mass is zero.
