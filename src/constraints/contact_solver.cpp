@@ -540,9 +540,11 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
                 hits = current_separation<fixed_side::none>(p, a, b) + approach * h <= 0;
             } else {
                 // At the end of the step: a point the contact braked short of the surface
-                // (closing the gap in one more sub-step) bounces now, at most that sub-step
-                // early, rather than in the next step from a speed that only this step knew.
-                hits = closing < 0 && p.normal_impulse > 0;
+                // (closing the gap in one more sub-step) or stopped on it bounces now, at most a
+                // sub-step early, rather than in the next step from a speed that only this step
+                // knew. (Stopped exactly on it, when its gap was a whole number of steps'
+                // travel, it was left with no bounce at all.)
+                hits = closing <= 0 && p.normal_impulse > 0;
             }
         }
         target[i] = hits ? -c.restitution * approach : scalar(0);

@@ -2,6 +2,7 @@
 #include "behaviour_support.hpp"
 #include <edyn/dynamics/integration.hpp>
 #include <edyn_scenes/scenes.hpp>
+#include <vector>
 
 using namespace edyn;
 using edyn::test::world_fixture;
@@ -179,6 +180,37 @@ TEST_F(contact_motion, without_the_restitution_solver_an_approaching_ball_still_
     }
     EXPECT_NEAR(rest, scalar(0.25), scalar(2e-3));
     EXPECT_LT(highest - rest, scalar(1e-3)) << "the resting ball hopped";
+}
+
+// A body that reaches the surface exactly at the end of a step (a gap that is a whole number of
+// steps' travel) bounces as any other: the step's contact stops it on the surface with no
+// closing speed left, and the bounce is taken from the approach the step saw.
+TEST_F(contact_motion, a_body_reaching_the_surface_exactly_at_a_step_boundary_bounces) {
+    set_gravity(reg, vector3_zero);
+    rigidbody_def floor;
+    floor.kind = rigidbody_kind::rb_static;
+    floor.shape = box_shape{50, scalar(0.1), 2};
+    floor.position = {0, scalar(-0.1), 0};
+    make_rigidbody(reg, floor);
+    const scalar speed = 3, e = scalar(0.5), radius = scalar(0.2);
+    auto travel = speed * get_fixed_dt(reg); // 5 cm a step
+    std::vector<std::pair<entity, int>> bodies;
+    for (int steps : {2, 4, 6}) {
+        for (int shape = 0; shape < 2; ++shape) {
+            rigidbody_def def;
+            if (shape == 0)
+                def.shape = sphere_shape{radius};
+            else
+                def.shape = box_shape{radius, radius, radius};
+            def.position = {scalar(4 * (2 * steps + shape) - 40), radius + travel * scalar(steps), 0};
+            def.linvel = {0, -speed, 0};
+            def.material->restitution = e;
+            bodies.emplace_back(make_rigidbody(reg, def), steps);
+        }
+    }
+    run_for(0.5);
+    for (auto [body, steps] : bodies)
+        EXPECT_NEAR(vel(body).y, e * speed, scalar(0.01)) << "gap of " << steps << " steps' travel";
 }
 
 // The step that brakes a falling ball short of the ground answers its bounce itself: nothing
