@@ -45,14 +45,17 @@ vector3 along_surface(const vector3 &v, const vector3 &n) { return v - n * dot(v
 // contact_reuse_max_distance or turns more than contact_reuse_max_angle a step held it each
 // step only where it then stood: the friction anchor's spring, stretched anew every step to
 // carry a steady force, let a box creep off a turning platform. A point that now touches both
-// bodies elsewhere (a rolling ball) starts again where it touches.
-void continue_point(contact_point &cp, const result_point &rp, const manifold_transforms &tf) {
+// bodies elsewhere (a rolling ball) starts again where it touches, and so does every point of
+// a pair that touches at one point: a sphere's pivot stays at the foot of its lever, where the
+// normal impulse must act.
+void continue_point(contact_point &cp, const result_point &rp, const manifold_transforms &tf,
+                    bool one_point) {
     auto slip = cp.positionA - cp.positionB; // The old pivots, refreshed at `tf`.
     const auto same_sqr = contact_reuse_max_distance * contact_reuse_max_distance;
     auto same_on_A = distance_sqr(cp.pivotA, rp.pivotA) <= same_sqr;
     auto same_on_B = distance_sqr(cp.pivotB, rp.pivotB) <= same_sqr;
     assign_geometry(cp, rp, tf);
-    if (cp.lifetime < contact_anchor_min_lifetime || (!same_on_A && !same_on_B)) return;
+    if (one_point || cp.lifetime < contact_anchor_min_lifetime || (!same_on_A && !same_on_B)) return;
     slip = along_surface(slip, cp.normal);
     if (length_sqr(slip) > contact_anchor_max_slip * contact_anchor_max_slip) return;
     auto shift = slip - along_surface(cp.positionA - cp.positionB, cp.normal);
@@ -271,7 +274,7 @@ contact_point_changes update_contact_manifold(contact_manifold &manifold, const 
                                                                           : -1;
         if (pos >= 0) {
             auto slot = manifold.ids[static_cast<std::size_t>(pos)];
-            continue_point(manifold.point[slot], rp, tf);
+            continue_point(manifold.point[slot], rp, tf, one_point);
             matched[slot] = true;
         } else if (rp.distance <= manifold.separation_threshold) {
             pending[num_pending++] = static_cast<int>(r);

@@ -198,9 +198,9 @@ inline void keep_unmasked(wide_mask active, const velocities &before, wide_body 
 // contact_solver.cpp.
 inline wide3 turned_lever(const wide_quaternion &q, const wide3 &r, const wide3 &normal) {
     auto axis = wide3{q.x, q.y, q.z};
-    auto first = cross(axis, r);
-    auto second = cross(axis, first) * wide_set(scalar(2));
-    return r + first * (q.w * wide_set(scalar(2))) + (second - normal * dot(normal, second));
+    auto across = r - normal * dot(normal, r);
+    auto second = cross(axis, cross(axis, across)) * wide_set(scalar(2));
+    return r + cross(axis, r) * (q.w * wide_set(scalar(2))) + (second - normal * dot(normal, second));
 }
 
 // The bodies' relative motion at the slot's points since the step began, as point_motion() in

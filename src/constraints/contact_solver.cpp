@@ -196,8 +196,13 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
         auto own_rows = !detail::rows_made_in_bundle(contacts, k);
         for (auto i = c.first_point; i < c.first_point + c.num_points; ++i) {
             auto &p = contacts.points[i];
+            // Of the levers' parts across the normal only: the foot of a rolling body's lever
+            // stays below its centre, and its part along the normal would give a ball rolling
+            // with side spin a slip it does not have.
+            auto across_A = p.rA - p.normal * dot(p.rA, p.normal);
+            auto across_B = p.rB - p.normal * dot(p.rB, p.normal);
             p.path_acceleration =
-                cross(a.angvel, cross(a.angvel, p.rA)) - cross(b.angvel, cross(b.angvel, p.rB));
+                cross(a.angvel, cross(a.angvel, across_A)) - cross(b.angvel, cross(b.angvel, across_B));
             if (own_rows) {
                 plane_space(p.normal, p.tangent[0], p.tangent[1]);
                 p.normal_row = make_row(a, b, p.normal, p.rA, p.rB);
@@ -267,11 +272,13 @@ namespace {
 // Across the normal the turn is exact: the first-order one lengthens a lever by |r| angle^2 / 2,
 // and friction, which holds the surfaces where they touched, carried a box on a turning
 // platform outward by that much every step (half a metre in 20 s at 1.5 rad/s).
+// (The lever's part along the normal, the whole lever of a rolling ball, takes no second-order
+// term either: turned exactly, a ball rolling with side spin seemed to slip sideways.)
 inline vector3 turned_lever(const quaternion &q, const vector3 &r, const vector3 &normal) {
     auto axis = vector3{q.x, q.y, q.z};
-    auto first = cross(axis, r);
-    auto second = cross(axis, first) * scalar(2);
-    return r + first * (2 * q.w) + (second - normal * dot(normal, second));
+    auto across = r - normal * dot(normal, r);
+    auto second = cross(axis, cross(axis, across)) * scalar(2);
+    return r + cross(axis, r) * (2 * q.w) + (second - normal * dot(normal, second));
 }
 
 // Where the point on A is now, seen from the point on B, less where it was when the step began:
@@ -543,8 +550,9 @@ bool solve_restitution_individually(const contact_solver_constraint &c,
                 // (closing the gap in one more sub-step) or stopped on it bounces now, at most a
                 // sub-step early, rather than in the next step from a speed that only this step
                 // knew. (Stopped exactly on it, when its gap was a whole number of steps'
-                // travel, it was left with no bounce at all.)
-                hits = closing <= 0 && p.normal_impulse > 0;
+                // travel, it was left with no bounce at all; a ten-thousandth of the approach
+                // left over by rounding counts as stopped.)
+                hits = closing <= -approach * scalar(1e-4) && p.normal_impulse > 0;
             }
         }
         target[i] = hits ? -c.restitution * approach : scalar(0);

@@ -478,3 +478,17 @@ TEST_F(friction, a_box_on_an_accelerating_truck_stays_where_it_was_put) {
     EXPECT_NEAR(pos(box).x - pos(truck).x, on_bed, scalar(0.002)) << "the box crept on the bed";
     EXPECT_NEAR(vel(box).x, 20, scalar(0.1));
 }
+
+// A ball rolling without slipping with a spin about the vertical (side spin) rolls on in a
+// straight line: on flat ground the spin about the normal moves nothing sideways.
+TEST_F(friction, a_ball_rolling_with_side_spin_rolls_straight) {
+    scenes::make_ground(reg, 1, 0);
+    const scalar radius = scalar(0.5), speed = 2, spin = 10;
+    auto ball = make_rolling_sphere(radius, speed, 0);
+    reg.patch<angvel>(ball, [&](angvel &w) { w.y = spin; });
+    run_for(2);
+    EXPECT_NEAR(pos(ball).z, 0, scalar(0.01)) << "the ball drifted sideways";
+    EXPECT_NEAR(pos(ball).x, 2 * speed, scalar(0.02));
+    EXPECT_NEAR(vel(ball).x, speed, scalar(0.01));
+    EXPECT_NEAR(angular(ball).y, spin, scalar(0.01));
+}

@@ -17,7 +17,9 @@ namespace edyn {
 /// is matched, which is what warm starting feeds on.
 struct alignas(64) contact_point {
     /// Contact point on body A, in A's object space relative to its origin (not its centre of
-    /// mass), in metres; zero by default.
+    /// mass), in metres; zero by default. A held point's pivot may lie up to
+    /// contact_anchor_max_slip along the surface from where collide() found the bodies touching:
+    /// where the surfaces stuck (see update_contact_manifold).
     vector3 pivotA{vector3_zero};
     /// Contact point on body B, in B's object space relative to its origin (m); zero by default.
     vector3 pivotB{vector3_zero};

@@ -60,7 +60,9 @@ contact_point_changes refresh_contact_manifold(contact_manifold &manifold, const
 ///   change its feature label while staying in place); equal features farther away. The nearest
 ///   point wins within a preference. Each live point matches at most once. A match takes the new
 ///   geometry (pivots, normal, distance, features) and keeps impulses, materials and lifetime,
-///   so that warm starting works.
+///   so that warm starting works; a held point of a pair that does not touch at one point, still
+///   touching one body at the same material point, keeps its surfaces' slip instead, its pivot
+///   on the other body moved along the surface (contact_anchor_max_slip).
 /// - Result points farther than the separation threshold are ignored; a matched point that is
 ///   now beyond it is removed.
 /// - With `shapes_changed`, live points the result does not match are removed: their pivots lie

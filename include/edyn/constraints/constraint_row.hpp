@@ -24,8 +24,8 @@ struct constraint_solve_context {
     /// Pivots are kept together by position projection after each sub-step, so their velocity
     /// rows are rigid and carry no bias: a soft pivot would sag under the load of a chain.
     bool rigid_pivots{false};
-    /// The fastest the soft correction closes a joint's pivot gap, where it has one (m/s):
-    /// constraint_solver_settings::max_correction_speed.
+    /// The fastest the soft correction closes a joint's pivot gap, where it has one, or draws a
+    /// cone's point back across its wall (m/s): constraint_solver_settings::max_correction_speed.
     scalar max_correction_speed{0};
     /// A limit reached slower than this does not bounce, so that resting limits stay quiet
     /// (m/s or rad/s, as the limit's coordinate).

@@ -61,7 +61,8 @@ struct constraint_solver_settings {
     /// carry it (joints left out of the projection, or all of them with `position_projection`
     /// at 0). A spring of `joint_hertz` closing a gap of metres would fling the bodies together
     /// at hundreds of m/s and leave them spinning; held to this speed, a joint made with its
-    /// bodies 3 m apart draws them together in about a second. Default 3, as contacts'
+    /// bodies 3 m apart draws them together in about a second. A cone's point found outside the
+    /// cone is drawn back across its wall no faster either. Default 3, as contacts'
     /// max_push_out_velocity.
     scalar max_correction_speed{3};
 

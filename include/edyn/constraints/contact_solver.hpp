@@ -57,9 +57,11 @@ struct contact_solver_point {
     /// where they stuck, which the biased pass's friction rows undo.
     vector3 adjusted_anchor_gap{vector3_zero};
     /// How fast the two bodies' points at the contact turn away from each other as the bodies
-    /// rotate, when the step began: w_A x (w_A x rA) - w_B x (w_B x rB) (m/s^2). The rows take
-    /// the lever arms of the step's start; with this the friction rows hold the points together
-    /// in the middle of each sub-step, on their curved paths, not on the lines they started along.
+    /// rotate, when the step began: w_A x (w_A x rA') - w_B x (w_B x rB') for the levers' parts
+    /// across the normal rA' and rB' (m/s^2; a rolling body's foot stays below its centre). The
+    /// rows take the lever arms of the step's start; with this the friction rows hold the points
+    /// together in the middle of each sub-step, on their curved paths, not on the lines they
+    /// started along. Set by prepare_contacts() for every point, bundled or not.
     vector3 path_acceleration{vector3_zero};
     scalar normal_mass{0};           ///< Effective mass along the normal (kg).
     scalar tangent_mass[2]{0, 0};    ///< Effective mass along each tangent (kg).
@@ -213,9 +215,10 @@ struct contact_solver_settings {
     scalar contact_hertz{90};
     /// Stiffness with which static friction holds a point where it stuck, as a spring frequency
     /// in Hz, damped with contact_damping_ratio and capped like contact_hertz. In the biased
-    /// pass the friction rows pull the surfaces back by how far they slid since the pair's points
-    /// were last found (contact_solver_point::adjusted_anchor_gap; since the step began for
-    /// points younger than contact_anchor_min_lifetime), so that a body at rest does not creep
+    /// pass the friction rows pull the surfaces back by how far they slid since the point stuck
+    /// (contact_solver_point::adjusted_anchor_gap; kept across collide() up to
+    /// contact_anchor_max_slip; since the step began for points younger than
+    /// contact_anchor_min_lifetime), so that a body at rest does not creep
     /// by what the velocity rows leave over each sub-step; friction's limit still applies. Lower than
     /// contact_hertz because a body resting on many points feels the sum of their springs: at 90 Hz the top
     /// box of a pyramid jitters, at 45 Hz it rests. 0 turns the hold off. Default 45.
