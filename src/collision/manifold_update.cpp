@@ -34,9 +34,6 @@ void assign_geometry(contact_point &cp, const result_point &rp, const manifold_t
     cp.featureB = rp.featureB;
 }
 
-// The part of `v` along a surface of normal `n`.
-vector3 along_surface(const vector3 &v, const vector3 &n) { return v - n * dot(v, n); }
-
 // A live point continued by a result point takes its geometry. A held point (one static
 // friction holds, contact_anchor_min_lifetime) that touches one body at the same material point
 // (its pivot there moved less than contact_reuse_max_distance on that body) keeps its surfaces'
@@ -56,9 +53,9 @@ void continue_point(contact_point &cp, const result_point &rp, const manifold_tr
     auto same_on_B = distance_sqr(cp.pivotB, rp.pivotB) <= same_sqr;
     assign_geometry(cp, rp, tf);
     if (one_point || cp.lifetime < contact_anchor_min_lifetime || (!same_on_A && !same_on_B)) return;
-    slip = along_surface(slip, cp.normal);
+    slip = project_plane(slip, cp.normal);
     if (length_sqr(slip) > contact_anchor_max_slip * contact_anchor_max_slip) return;
-    auto shift = slip - along_surface(cp.positionA - cp.positionB, cp.normal);
+    auto shift = slip - project_plane(cp.positionA - cp.positionB, cp.normal);
     if (same_on_A) {
         cp.positionB -= shift;
         cp.pivotB = to_object_space(cp.positionB, tf.posB, tf.ornB);

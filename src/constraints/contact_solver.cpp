@@ -199,8 +199,8 @@ void prepare_contacts(contact_solver_set &contacts, std::span<const solver_body>
             // Of the levers' parts across the normal only: the foot of a rolling body's lever
             // stays below its centre, and its part along the normal would give a ball rolling
             // with side spin a slip it does not have.
-            auto across_A = p.rA - p.normal * dot(p.rA, p.normal);
-            auto across_B = p.rB - p.normal * dot(p.rB, p.normal);
+            auto across_A = project_plane(p.rA, p.normal);
+            auto across_B = project_plane(p.rB, p.normal);
             p.path_acceleration =
                 cross(a.angvel, cross(a.angvel, across_A)) - cross(b.angvel, cross(b.angvel, across_B));
             if (own_rows) {
@@ -276,9 +276,9 @@ namespace {
 // term either: turned exactly, a ball rolling with side spin seemed to slip sideways.)
 inline vector3 turned_lever(const quaternion &q, const vector3 &r, const vector3 &normal) {
     auto axis = vector3{q.x, q.y, q.z};
-    auto across = r - normal * dot(normal, r);
+    auto across = project_plane(r, normal);
     auto second = cross(axis, cross(axis, across)) * scalar(2);
-    return r + cross(axis, r) * (2 * q.w) + (second - normal * dot(normal, second));
+    return r + cross(axis, r) * (2 * q.w) + project_plane(second, normal);
 }
 
 // Where the point on A is now, seen from the point on B, less where it was when the step began:
