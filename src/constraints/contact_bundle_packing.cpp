@@ -153,15 +153,19 @@ void make_slot_rows(contact_bundle_slot &slot, wide_mask active, const wide_iner
 void fill_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<const solver_body> bodies) {
     auto &bundle = contacts.bundles[index];
     bundle.moves_a = bundle.moves_b = 0;
+    bundle.holds = false;
     for (std::uint32_t i = 0; i < bundle_lanes; ++i) {
         // A lane without points is empty: the static body on both sides.
         bundle.body[0][i] = bundle.body[1][i] = static_solver_body;
         bundle.friction[i] = 0;
+        bundle.held[i] = 0;
         if (bundle.num_points[i] > 0) {
             auto &c = contacts.constraints[bundle.constraint[i]];
             bundle.body[0][i] = c.body[0];
             bundle.body[1][i] = c.body[1];
             bundle.friction[i] = c.friction;
+            if (bundle.fixed_side == fixed_side::none) bundle.held[i] = static_cast<std::uint32_t>(c.held);
+            bundle.holds = bundle.holds || bundle.held[i] != 0;
         }
         if (moves(bodies[bundle.body[0][i]])) bundle.moves_a |= 1u << i;
         if (moves(bodies[bundle.body[1][i]])) bundle.moves_b |= 1u << i;

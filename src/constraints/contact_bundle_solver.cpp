@@ -172,6 +172,12 @@ EDYN_WIDE_INLINE void apply_row(const wide_row &row, const wide3 &d, wide impuls
     }
 }
 
+// held_row_mass() in contact_solver.cpp, lane by lane, from the not held body's k.
+EDYN_WIDE_INLINE wide held_row_mass(wide k) {
+    auto zero = wide_set(0);
+    return select(zero < k, wide_set(1) / k, zero);
+}
+
 // The velocities a partly filled slot must leave alone in its empty lanes (the static side's
 // are never written back).
 struct velocities {
@@ -293,6 +299,33 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
     auto anchor_mass_scale = wide_set(pass.anchor.mass_scale);
     auto anchor_impulse_scale = wide_set(pass.anchor.impulse_scale);
     wide3 motion[contact_solver_constraint::max_points];
+    for (std::uint32_t s = 0; s < bundle.num_slots; ++s)
+        motion[s] = point_motion<F>(contacts.bundle_slots[bundle.first_slot + s], a, b);
+
+    // The lanes whose body A or B the relax pass holds still, as relax_hold() in
+    // contact_solver.cpp: every point of the lane parts faster than contact_hold_parting_speed.
+    wide_mask hold_a{}, hold_b{};
+    auto holding = false;
+    if constexpr (F == fixed_side::none) {
+        holding = !pass.use_bias && bundle.holds;
+        if (holding) {
+            auto held = wide_from_counts(bundle.held);
+            auto parting_speed = wide_set(contact_hold_parting_speed);
+            auto all_part = zero < one;
+            for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
+                auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+                auto normal = wide3_load(slot.normal);
+                auto sep = dot(normal, motion[s]) + wide_load(slot.adjusted_separation);
+                auto parting = row_velocity<F>(load_row(slot.normal_row), normal, a, b) +
+                               select(zero < sep, sep * inv_h, zero);
+                // A lane without a point in this slot does not stop its others from holding.
+                parting = select(slot_mask(bundle, s), parting, parting_speed + one);
+                all_part = all_part & (parting_speed < parting);
+            }
+            hold_a = all_part & (half < held) & (held < wide_set(scalar(1.5)));
+            hold_b = all_part & (wide_set(scalar(1.5)) < held);
+        }
+    }
 
     // Normal rows of every point, then friction, as the one-at-a-time pass does.
     for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
@@ -300,7 +333,6 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         auto partial = s >= bundle.full_slots;
         auto before = velocities_of(a, b);
         auto normal = wide3_load(slot.normal);
-        motion[s] = point_motion<F>(slot, a, b);
         auto sep = dot(normal, motion[s]) + wide_load(slot.adjusted_separation);
         // Speculative where still apart; else the soft push-out in the biased pass, nothing in
         // the relax pass.
@@ -315,9 +347,21 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         auto row = load_row(slot.normal_row);
         auto old_impulse = wide_load(slot.normal_impulse);
         auto vn = row_velocity<F>(row, normal, a, b);
-        auto impulse = -wide_load(slot.normal_mass) * mass_scale * (vn + bias) - impulse_scale * old_impulse;
+        auto mass = wide_load(slot.normal_mass);
+        if (holding) {
+            mass =
+                select(hold_a, held_row_mass(b.inv_mass + dot(row.angularB, row.inv_angularB)),
+                       select(hold_b, held_row_mass(a.inv_mass + dot(row.angularA, row.inv_angularA)), mass));
+        }
+        auto impulse = -mass * mass_scale * (vn + bias) - impulse_scale * old_impulse;
         auto new_impulse = std_max(old_impulse + impulse, zero);
         apply_row<F>(row, normal, new_impulse - old_impulse, a, b);
+        if (holding) {
+            a.linvel = select(hold_a, before.linvelA, a.linvel);
+            a.angvel = select(hold_a, before.angvelA, a.angvel);
+            b.linvel = select(hold_b, before.linvelB, b.linvel);
+            b.angvel = select(hold_b, before.angvelB, b.angvel);
+        }
         if (partial) {
             auto active = slot_mask(bundle, s);
             keep_unmasked<F>(active, before, a, b);

@@ -33,6 +33,14 @@ scalar row_mass(const solver_body &a, const solver_body &b, const contact_row &r
     return k > 0 ? scalar(1) / k : scalar(0);
 }
 
+// Effective mass of the row for the body that is not held (kg): what the row's impulse moves
+// when the other body is held still; 0 when that body cannot move along it.
+scalar held_row_mass(const contact_row &row, const solver_body &a, const solver_body &b, fixed_side held) {
+    auto k = held == fixed_side::a ? b.inv_mass + dot(row.angularB, row.inv_angularB)
+                                   : a.inv_mass + dot(row.angularA, row.inv_angularA);
+    return k > 0 ? scalar(1) / k : scalar(0);
+}
+
 // Relative velocity of the row's points along d.
 template<fixed_side F>
 inline scalar row_velocity(const contact_row &row, const vector3 &d, const solver_body &a,
@@ -398,6 +406,27 @@ softness material_softness(const contact_solver_constraint &c, const contact_sol
 
 namespace {
 
+// The side the relax pass holds still at the constraint's normal rows (see
+// contact_solver_constraint::held): its held side when every point parts faster than
+// contact_hold_parting_speed as the pass reaches it, none otherwise. A speculative point parts
+// by its velocity plus the gap it may close in the sub-step.
+template<fixed_side F>
+fixed_side relax_hold(const contact_solver_constraint &c, std::span<const contact_solver_point> points,
+                      const solver_body &a, const solver_body &b, const detail::bundle_pass &pass) {
+    if constexpr (F != fixed_side::none) {
+        return fixed_side::none;
+    } else {
+        if (pass.use_bias || c.held == fixed_side::none) return fixed_side::none;
+        for (auto &p : points) {
+            auto s = current_separation<F>(p, a, b);
+            auto parting =
+                row_velocity<F>(p.normal_row, p.normal, a, b) + (s > 0 ? s * pass.inv_h : scalar(0));
+            if (!(contact_hold_parting_speed < parting)) return fixed_side::none;
+        }
+        return c.held;
+    }
+}
+
 // One pass of one constraint's rows: normal rows, friction, then spinning and rolling friction.
 template<fixed_side F>
 void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> points, solver_body &a,
@@ -406,6 +435,7 @@ void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> 
     auto is_spring = c.stiffness < large_scalar;
     scalar total_normal = 0;
     vector3 motion[contact_solver_constraint::max_points];
+    auto hold = relax_hold<F>(c, points, a, b, pass);
 
     for (std::size_t i = 0; i < points.size(); ++i) {
         auto &p = points[i];
@@ -430,9 +460,16 @@ void solve_single(contact_solver_constraint &c, std::span<contact_solver_point> 
         }
 
         auto vn = row_velocity<F>(p.normal_row, p.normal, a, b);
-        auto impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+        auto mass = hold == fixed_side::none ? p.normal_mass : held_row_mass(p.normal_row, a, b, hold);
+        auto impulse = -mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
         auto new_impulse = std::max(p.normal_impulse + impulse, scalar(0));
-        apply_row<F>(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
+        if (hold == fixed_side::a) {
+            apply_row<fixed_side::a>(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
+        } else if (hold == fixed_side::b) {
+            apply_row<fixed_side::b>(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
+        } else {
+            apply_row<F>(p.normal_row, p.normal, new_impulse - p.normal_impulse, a, b);
+        }
         p.normal_impulse = new_impulse;
         total_normal += new_impulse;
     }

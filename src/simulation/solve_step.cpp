@@ -144,6 +144,7 @@ void gather_contact(const storage<contact_manifold> &manifold_pool, const materi
     c.damping = mixed.damping;
     c.normal = manifold.point[manifold.ids[0]].normal;
     c.source = source;
+    c.held = place.held;
     if (bodyA.point_materials || bodyB.point_materials) {
         // The points' own values (the narrowphase interpolated them), averaged over the manifold
         // whose friction and restitution the solver shares between its points.
@@ -270,7 +271,9 @@ void place_contacts(world_state &world) {
     for (auto k : world.ordering.sorted()) {
         auto &edge = world.edge_contacts[world.solved_edges[k]];
         world.contact_colours.push_back(world.colouring.assign(edge.body[0], edge.body[1], edge.num_points));
-        world.contact_places.push_back({0, 0, edge.num_points, edge.slot});
+        auto da = world.ordering.depth_of(edge.body[0]), db = world.ordering.depth_of(edge.body[1]);
+        auto held = da < db ? fixed_side::a : db < da ? fixed_side::b : fixed_side::none;
+        world.contact_places.push_back({0, 0, edge.num_points, edge.slot, held});
     }
 
     auto &contacts = world.contacts;

@@ -53,6 +53,11 @@ struct contact_bundle {
     /// a lane is empty. Slots from here on are masked lane by lane.
     std::uint32_t full_slots{0};
     scalar friction[contact_bundle_lanes]{}; ///< Each lane's friction coefficient.
+    /// Each lane's held side (contact_solver_constraint::held) as a count: 0 none, 1 body A,
+    /// 2 body B. Empty lanes and bundles with a static side hold none.
+    std::uint32_t held[contact_bundle_lanes]{};
+    /// Whether any lane holds a side: the relax pass then works out which lanes part.
+    bool holds{false};
     /// The static side of every lane's contact (a bundle holds contacts of one kind; its empty
     /// lanes have the static body on both sides).
     edyn::fixed_side fixed_side{edyn::fixed_side::none};

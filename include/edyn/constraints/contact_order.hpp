@@ -41,6 +41,12 @@ public:
     /// @return One index per contact added.
     std::span<const std::uint32_t> sorted();
 
+    /// Depth of a body found by the last sorted(): 0 for one that does not move, the largest
+    /// std::uint32_t for one that reaches none.
+    /// @param body A body index in the bodies given to reset().
+    /// @return Its depth.
+    std::uint32_t depth_of(solver_body_index body) const { return depth[body]; }
+
 private:
     /// Depth of a body that does not move, and the depth of those that reach none.
     static constexpr std::uint32_t resting_depth = 0;

@@ -127,6 +127,12 @@ struct contact_solver_constraint {
     scalar total_roll_impulse[2]{0, 0};
     /// Where the impulses go back when the step ends (index into the caller's manifold list).
     std::uint32_t source{0};
+    /// The side whose body the relax passes may hold still at this contact's normal rows: the
+    /// body fewer contacts away from the bodies that do not move (contact_order's depth; the
+    /// lower one in a stack), none when both are as far. When every point of the contact parts
+    /// faster than contact_hold_parting_speed in a relax pass, the normal rows move only the
+    /// other body (see contact_hold_parting_speed).
+    edyn::fixed_side held{edyn::fixed_side::none};
 };
 
 /// Every contact of a step: the constraints, and their points in two parallel arrays (hot and
@@ -200,6 +206,20 @@ struct contact_solver_set {
     /// @return The first of the new points, to be filled in.
     contact_solver_point *add(const contact_solver_constraint &c, std::uint32_t num_points);
 };
+
+/// Speed above which a contact's points part in a relax pass (m/s) for that pass to hold the
+/// contact's lower body still (contact_solver_constraint::held). The relax passes take back the
+/// velocity the biased pass gave to push overlap out, contact after contact from the ground up.
+/// Between two moving bodies, taking it back from both gave the lower body the upper one's push
+/// the other way after the contact below it was done with it for the pass: a ball dropped 1 m
+/// onto a 1 kg box on the ground lifted the box by 57 mm (5 kg ball) or 177 mm (20 kg), and a
+/// 5 kg box dropped onto a tower of five 1 kg boxes lifted its top by 151 mm. Held still, the
+/// lower body keeps what its own support gave it, and none of them rises. The contacts of
+/// resting bodies part by a few mm/s, which tall stacks need taken back from both sides so as
+/// not to lean: below this speed, both move. The price is momentum where the lower body could
+/// give way: it keeps the push the upper one loses (docs/guide/01-the-step.md gives a seesaw's
+/// figures).
+inline constexpr scalar contact_hold_parting_speed = scalar(0.05);
 
 /// Tuning of the soft-step contact solver, shared by all contacts of a step. These are the
 /// global contact stiffness and damping, the defaults for every contact: a contact whose mixed
@@ -276,8 +296,9 @@ void warm_start_contacts(contact_solver_set &contacts, std::span<solver_body> bo
 
 /// Queues one Gauss-Seidel pass. With `use_bias`, overlap is pushed out softly at the sub-step rate h;
 /// without it (relax pass) only the velocity constraints are enforced, removing the push-out
-/// velocity so that it does not turn into bounce. The springs of contacts with a material
-/// stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
+/// velocity so that it does not turn into bounce; a contact that parts faster than
+/// contact_hold_parting_speed moves only its body further from the ground there. The springs of contacts with
+/// a material stiffness are forces of the model: they act in the biased pass only, and bounce as springs do.
 /// Each constraint solves its points' normal rows, then their friction, then its spinning and
 /// rolling friction. Points still apart may close their gap within the sub-step, no further.
 /// @param contacts The step's contacts; their impulses accumulate.

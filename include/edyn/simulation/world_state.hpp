@@ -81,10 +81,11 @@ struct world_state {
     std::vector<std::uint32_t> contact_colours;
     /// Where a contact's constraint and points go in `contacts`.
     struct contact_place {
-        std::uint32_t constraint{0};  ///< Index of its constraint in contacts.constraints.
-        std::uint32_t first_point{0}; ///< Index of its first point in contacts.points.
-        std::uint32_t num_points{0};  ///< Its number of points.
-        std::uint32_t slot{0};        ///< Where the manifold lies in its pool (`storage::value_at`).
+        std::uint32_t constraint{0};       ///< Index of its constraint in contacts.constraints.
+        std::uint32_t first_point{0};      ///< Index of its first point in contacts.points.
+        std::uint32_t num_points{0};       ///< Its number of points.
+        std::uint32_t slot{0};             ///< Where the manifold lies in its pool (`storage::value_at`).
+        fixed_side held{fixed_side::none}; ///< See contact_solver_constraint::held.
     };
     /// The place of each contact solved this step, in solving order (a constraint's `source`
     /// indexes this), with its manifold's place in the pool.
