@@ -280,7 +280,9 @@ void warm_start_bundle(contact_solver_set &contacts, contact_bundle &bundle, std
     scatter_sides<F>(bodies.data(), bundle, a, b);
 }
 
-template<fixed_side F>
+// Hold: a relax pass over a bundle some of whose lanes hold a side (contact_bundle::holds),
+// compiled apart so that the other passes keep their registers.
+template<fixed_side F, bool Hold>
 void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::span<solver_body> bodies,
                   const bundle_pass &pass) {
     wide_body a{}, b{};
@@ -299,32 +301,35 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
     auto anchor_mass_scale = wide_set(pass.anchor.mass_scale);
     auto anchor_impulse_scale = wide_set(pass.anchor.impulse_scale);
     wide3 motion[contact_solver_constraint::max_points];
-    for (std::uint32_t s = 0; s < bundle.num_slots; ++s)
-        motion[s] = point_motion<F>(contacts.bundle_slots[bundle.first_slot + s], a, b);
 
     // The lanes whose body A or B the relax pass holds still, as relax_hold() in
     // contact_solver.cpp: every point of the lane parts faster than contact_hold_parting_speed.
+    // The slots whose motion is worked out before the normal rows.
+    std::uint32_t motion_ready = 0;
     wide_mask hold_a{}, hold_b{};
-    auto holding = false;
-    if constexpr (F == fixed_side::none) {
-        holding = !pass.use_bias && bundle.holds;
-        if (holding) {
-            auto held = wide_from_counts(bundle.held);
-            auto parting_speed = wide_set(contact_hold_parting_speed);
-            auto all_part = zero < one;
-            for (std::uint32_t s = 0; s < bundle.num_slots; ++s) {
-                auto &slot = contacts.bundle_slots[bundle.first_slot + s];
-                auto normal = wide3_load(slot.normal);
-                auto sep = dot(normal, motion[s]) + wide_load(slot.adjusted_separation);
-                auto parting = row_velocity<F>(load_row(slot.normal_row), normal, a, b) +
-                               select(zero < sep, sep * inv_h, zero);
-                // A lane without a point in this slot does not stop its others from holding.
-                parting = select(slot_mask(bundle, s), parting, parting_speed + one);
-                all_part = all_part & (parting_speed < parting);
-            }
-            hold_a = all_part & (half < held) & (held < wide_set(scalar(1.5)));
-            hold_b = all_part & (wide_set(scalar(1.5)) < held);
+    auto any_hold = false;
+    if constexpr (Hold) {
+        static_assert(F == fixed_side::none);
+        auto parting_speed = wide_set(contact_hold_parting_speed);
+        // Lanes with points; resting contacts part too slowly at their first point already, and
+        // the look ends there.
+        auto all_part = slot_mask(bundle, 0);
+        while (motion_ready < bundle.num_slots && any(all_part)) {
+            auto s = motion_ready++;
+            auto &slot = contacts.bundle_slots[bundle.first_slot + s];
+            auto normal = wide3_load(slot.normal);
+            motion[s] = point_motion<F>(slot, a, b);
+            auto sep = dot(normal, motion[s]) + wide_load(slot.adjusted_separation);
+            auto parting = row_velocity<F>(load_row(slot.normal_row), normal, a, b) +
+                           select(zero < sep, sep * inv_h, zero);
+            // A lane without a point in this slot does not stop its others from holding.
+            parting = select(slot_mask(bundle, s), parting, parting_speed + one);
+            all_part = all_part & (parting_speed < parting);
         }
+        auto held = wide_from_counts(bundle.held);
+        hold_a = all_part & (half < held) & (held < wide_set(scalar(1.5)));
+        hold_b = all_part & (wide_set(scalar(1.5)) < held);
+        any_hold = any(hold_a | hold_b);
     }
 
     // Normal rows of every point, then friction, as the one-at-a-time pass does.
@@ -333,6 +338,7 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         auto partial = s >= bundle.full_slots;
         auto before = velocities_of(a, b);
         auto normal = wide3_load(slot.normal);
+        if (s >= motion_ready) motion[s] = point_motion<F>(slot, a, b);
         auto sep = dot(normal, motion[s]) + wide_load(slot.adjusted_separation);
         // Speculative where still apart; else the soft push-out in the biased pass, nothing in
         // the relax pass.
@@ -348,15 +354,16 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
         auto old_impulse = wide_load(slot.normal_impulse);
         auto vn = row_velocity<F>(row, normal, a, b);
         auto mass = wide_load(slot.normal_mass);
-        if (holding) {
-            mass =
-                select(hold_a, held_row_mass(b.inv_mass + dot(row.angularB, row.inv_angularB)),
-                       select(hold_b, held_row_mass(a.inv_mass + dot(row.angularA, row.inv_angularA)), mass));
+        if (any_hold) {
+            // The effective mass of the body not held, where a lane holds one.
+            auto k = select(hold_a, b.inv_mass + dot(row.angularB, row.inv_angularB),
+                            a.inv_mass + dot(row.angularA, row.inv_angularA));
+            mass = select(hold_a | hold_b, held_row_mass(k), mass);
         }
         auto impulse = -mass * mass_scale * (vn + bias) - impulse_scale * old_impulse;
         auto new_impulse = std_max(old_impulse + impulse, zero);
         apply_row<F>(row, normal, new_impulse - old_impulse, a, b);
-        if (holding) {
+        if (any_hold) {
             a.linvel = select(hold_a, before.linvelA, a.linvel);
             a.angvel = select(hold_a, before.angvelA, a.angvel);
             b.linvel = select(hold_b, before.linvelB, b.linvel);
@@ -447,7 +454,15 @@ void warm_start_bundle(contact_solver_set &contacts, std::uint32_t index, std::s
 void solve_bundle(contact_solver_set &contacts, std::uint32_t index, std::span<solver_body> bodies,
                   const bundle_pass &pass) {
     auto &bundle = contacts.bundles[index];
-    with_fixed_side(bundle, [&](auto side) { solve_bundle<side()>(contacts, bundle, bodies, pass); });
+    with_fixed_side(bundle, [&](auto side) {
+        if constexpr (side() == fixed_side::none) {
+            if (!pass.use_bias && bundle.holds) {
+                solve_bundle<fixed_side::none, true>(contacts, bundle, bodies, pass);
+                return;
+            }
+        }
+        solve_bundle<side(), false>(contacts, bundle, bodies, pass);
+    });
 }
 
 void accumulate_bundle_impulses(contact_solver_set &contacts, std::uint32_t index) {
