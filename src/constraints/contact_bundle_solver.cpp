@@ -302,10 +302,10 @@ void solve_bundle(contact_solver_set &contacts, contact_bundle &bundle, std::spa
     auto anchor_impulse_scale = wide_set(pass.anchor.impulse_scale);
     wide3 motion[contact_solver_constraint::max_points];
 
-    // The lanes whose body A or B the relax pass holds still, as relax_hold() in
-    // contact_solver.cpp: every point of the lane parts faster than contact_hold_parting_speed.
     // The slots whose motion is worked out before the normal rows.
     std::uint32_t motion_ready = 0;
+    // The lanes whose body A or B the relax pass holds still, as relax_hold() in
+    // contact_solver.cpp: every point of the lane parts faster than contact_hold_parting_speed.
     wide_mask hold_a{}, hold_b{};
     auto any_hold = false;
     if constexpr (Hold) {
